@@ -1,0 +1,47 @@
+/* One sample of one light as seen from a shading point. */
+#ifndef CLRT_RENDER_LIGHTS_H
+#define CLRT_RENDER_LIGHTS_H
+
+#include "common.h"
+#include "random.h"
+
+typedef struct LightSample {
+  float3 position;  /* the sampled point (unused for directional lights) */
+  float3 to_light;  /* unit direction from the shading point towards the light */
+  float distance;   /* INFINITY for directional lights */
+  float3 intensity; /* colour reaching the point, before N.L; zero outside a spot's cone */
+} LightSample;
+
+/* Sample j of `light` from point p; `path` is the shading point's random stream. Area lights
+ * split their intensity evenly over their stratified samples. */
+inline LightSample sample_light(__global const Light* light, uint j, float3 p, uint path) {
+  LightSample s;
+  s.intensity = xyz(light->color);
+  if (light->kind == CLRT_LIGHT_DIRECTIONAL) {
+    s.to_light = -xyz(light->direction);
+    s.distance = INFINITY;
+    s.position = p + s.to_light;
+    return s;
+  }
+  s.position = xyz(light->position);
+  if (light->kind == CLRT_LIGHT_AREA) {
+    const float2 uv = stratified(j, light->grid_u, light->grid_v,
+                                 jitter2(path, light->first_sample + j));
+    s.position += uv.x * xyz(light->edge_u) + uv.y * xyz(light->edge_v);
+    s.intensity /= (float)light->samples;
+  }
+  const float3 delta = s.position - p;
+  s.distance = length(delta);
+  s.to_light = delta / s.distance;
+  if (light->kind == CLRT_LIGHT_SPOT) {
+    /* D runs from the light to P: lit when S.D >= cos(angle), scaled by (S.D)^exp. With a
+     * cone wider than 90 degrees S.D may be negative: the factor is then 1 for exp 0 (as
+     * pow(x, 0) = 1) and 0 otherwise, where pow() of a negative base is undefined. */
+    const float sd = dot(xyz(light->direction), -s.to_light);
+    const float falloff = light->spot_exponent == 0.0f ? 1.0f : pow(fmax(sd, 0.0f), light->spot_exponent);
+    s.intensity = sd >= light->cos_cutoff ? s.intensity * falloff : (float3)(0.0f);
+  }
+  return s;
+}
+
+#endif

@@ -1,0 +1,34 @@
+/* Reflection and refraction rays leaving a hit. */
+#ifndef CLRT_RENDER_SECONDARY_H
+#define CLRT_RENDER_SECONDARY_H
+
+#include "common.h"
+#include "random.h"
+
+/* d mirrored about n (the contract's R = -E + 2N(E.N) with E = -d). */
+inline float3 reflect_dir(float3 d, float3 n) { return d - 2.0f * dot(d, n) * n; }
+
+/* Snell refraction of unit d through unit n (facing against d) with eta = n1 / n2. Returns
+ * false on total internal reflection. */
+inline bool refract_dir(float3 d, float3 n, float eta, float3* t) {
+  const float cos_i = -dot(d, n);
+  const float k = 1.0f - eta * eta * (1.0f - cos_i * cos_i);
+  if (k < 0.0f) return false;
+  *t = normalize(eta * d + (eta * cos_i - sqrt(k)) * n);
+  return true;
+}
+
+inline Ray child_ray(const Ray* parent, float3 origin, float3 dir, float share, uint branch,
+                     uint kind) {
+  Ray r;
+  r.origin = as_f4(origin);
+  r.dir = as_f4(dir);
+  r.weight = as_f4(xyz(parent->weight) * share);
+  r.sample = parent->sample;
+  r.depth = parent->depth + 1u;
+  r.path = child_path(parent->path, branch);
+  r.kind = kind;
+  return r;
+}
+
+#endif

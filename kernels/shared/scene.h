@@ -1,0 +1,114 @@
+/* The scene as the device sees it: camera, materials, lights, instances and triangle meshes. */
+#ifndef CLRT_SHARED_SCENE_H
+#define CLRT_SHARED_SCENE_H
+#include "common.h"
+
+CLRT_SHARED_BEGIN
+
+typedef struct Camera {
+  f4 eye;       /* xyz; w unused */
+  f4 corner;    /* direction (not unit) through the top-left corner of pixel (0, 0); w unused */
+  f4 pixel_dx;  /* change of that direction per pixel to the right; w unused */
+  f4 pixel_dy;  /* change per pixel downwards; w unused */
+  u32 width, height;
+  u32 samples;          /* camera samples per pixel */
+  u32 grid_u, grid_v;   /* stratification grid: grid_u * grid_v == samples */
+  u32 seed;
+  u32 pad[2];
+} Camera;
+CLRT_CHECK_SIZE(Camera, 96);
+
+typedef struct Material {
+  f4 color; /* rgb surface colour; w unused */
+  float ka, kd, ks, shininess;
+  float kr, kt, ior, pad;
+} Material;
+CLRT_CHECK_SIZE(Material, 48);
+
+#define CLRT_LIGHT_POINT 0u
+#define CLRT_LIGHT_DIRECTIONAL 1u
+#define CLRT_LIGHT_SPOT 2u
+#define CLRT_LIGHT_AREA 3u
+
+/* Non-ambient lights only: ambient lights are summed into RenderParams.ambient. */
+typedef struct Light {
+  f4 color;     /* rgb intensity of the whole light; w unused */
+  f4 position;  /* point and spot: position; area: corner; w unused */
+  f4 direction; /* directional: unit direction of travel; spot: unit axis S; w unused */
+  f4 edge_u;    /* area: first edge; w unused */
+  f4 edge_v;    /* area: second edge; w unused */
+  u32 kind;     /* CLRT_LIGHT_* */
+  u32 samples;  /* shadow samples per shading point: 1, or the area light's sample count */
+  u32 grid_u, grid_v;  /* area stratification: grid_u * grid_v == samples */
+  u32 first_sample;    /* index of this light's first sample among all samples of a shading point */
+  float cos_cutoff;    /* spot: cos(angle) */
+  float spot_exponent; /* spot */
+  u32 pad;
+} Light;
+CLRT_CHECK_SIZE(Light, 112);
+
+#define CLRT_SHAPE_SPHERE 0u
+#define CLRT_SHAPE_PLANE 1u
+#define CLRT_SHAPE_CUBE 2u
+#define CLRT_SHAPE_CYLINDER 3u
+#define CLRT_SHAPE_CONE 4u
+#define CLRT_SHAPE_MESH 5u
+
+/* Instance.material of the mesh that holds the scene's loose `triangle`s: each triangle then
+ * takes its material from Mesh-relative triangle_materials. */
+#define CLRT_MATERIAL_PER_TRIANGLE 0xffffffffu
+
+/* A canonical shape or a mesh placed by a transform M. The renderer intersects the canonical
+ * object with the ray mapped by M^-1 and maps normals by (M^-1)^T. */
+typedef struct Instance {
+  f4 world_to_object[3]; /* rows 0..2 of M^-1 (row 3 is 0 0 0 1) */
+  f4 normal_to_world[3]; /* rows 0..2 of the upper 3x3 of (M^-1)^T; w = 0 */
+  u32 shape;             /* CLRT_SHAPE_* */
+  u32 material;          /* material index, or CLRT_MATERIAL_PER_TRIANGLE */
+  u32 mesh;              /* CLRT_SHAPE_MESH: index into the mesh table */
+  u32 pad0;
+  float cone_r0, cone_r1; /* CLRT_SHAPE_CONE: radius at y = -1 and at y = +1 */
+  float pad1, pad2;
+} Instance;
+CLRT_CHECK_SIZE(Instance, 128);
+
+/* A bottom-level model in its own object space; shared by all the instances that use it. */
+typedef struct Mesh {
+  u32 first_triangle; /* into the triangle (and triangle normal / material) tables */
+  u32 triangle_count;
+  u32 root_node;      /* root of its bottom-level BVH in the node table */
+  u32 has_normals;    /* nonzero: triangle_normals holds interpolable vertex normals */
+} Mesh;
+CLRT_CHECK_SIZE(Mesh, 16);
+
+/* Vertices in the mesh's object space, counter-clockwise seen from the front. */
+typedef struct Triangle {
+  f4 v0, v1, v2; /* xyz; w unused */
+} Triangle;
+CLRT_CHECK_SIZE(Triangle, 48);
+
+typedef struct TriangleNormals {
+  f4 n0, n1, n2; /* unit vertex normals in object space; w unused */
+} TriangleNormals;
+CLRT_CHECK_SIZE(TriangleNormals, 48);
+
+#define CLRT_MODE_TRACE 0u
+#define CLRT_MODE_CAST 1u
+
+/* Per-render constants every stage reads. */
+typedef struct RenderParams {
+  f4 background;      /* rgb; w unused */
+  f4 ambient;         /* rgb sum of the ambient lights; w unused */
+  u32 light_count;    /* entries in the light table */
+  u32 shadow_samples; /* sum of Light.samples: shadow-ray slots per shading point */
+  u32 max_depth;
+  u32 mode;           /* CLRT_MODE_* */
+  float epsilon;
+  u32 seed;
+  u32 pad[2];
+} RenderParams;
+CLRT_CHECK_SIZE(RenderParams, 64);
+
+CLRT_SHARED_END
+
+#endif

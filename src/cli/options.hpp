@@ -1,0 +1,41 @@
+// The clrt command line.
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "render/render_options.hpp"
+
+namespace clrt {
+
+enum class StatsFormat { None, Text, Json };
+
+struct CliOptions {
+  std::string scene;
+  std::string outfile;  // empty: the scene's name with .png, in the current directory
+  std::optional<int> width, height, samples, max_depth;
+  std::optional<RenderMode> mode;
+  std::uint32_t seed = 0;
+  std::uint32_t wavefront = RenderOptions{}.wavefront;
+  std::string device = "cpu";
+  bool list_devices = false;
+  StatsFormat stats = StatsFormat::None;
+  bool quiet = false;
+};
+
+// What parsing decided: run with the options, or exit now with a code (after --help,
+// --version or a usage error, whose message has been printed).
+struct ParseResult {
+  CliOptions options;
+  std::optional<int> exit_code;
+};
+
+ParseResult parse_command_line(int argc, char** argv);
+
+// The scene's settings overridden by whatever the command line gave.
+RenderOptions resolve_render_options(const CliOptions& cli, const Scene& scene);
+
+// The output path: --outfile, or SCENE's stem + ".png".
+std::string output_path(const CliOptions& cli);
+
+}  // namespace clrt

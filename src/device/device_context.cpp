@@ -1,0 +1,55 @@
+#include "device/device_context.hpp"
+
+#include <sstream>
+
+namespace clrt {
+
+const char* const kProgramOptions = "-cl-std=CL1.2";
+
+namespace {
+
+std::string mib(std::size_t bytes) {
+  std::ostringstream out;
+  out.precision(1);
+  out << std::fixed << static_cast<double>(bytes) / (1024.0 * 1024.0) << " MiB";
+  return out.str();
+}
+
+}  // namespace
+
+DeviceContext::DeviceContext(const DeviceEntry& entry)
+    : entry_(entry),
+      context_(entry.device),
+      queue_(context_, entry.device, compute::command_queue::enable_profiling) {}
+
+compute::program DeviceContext::build(const std::string& source, const std::string& options) const {
+  compute::program program = compute::program::create_with_source(source, context_);
+  const std::string all_options = std::string(kProgramOptions) + (options.empty() ? "" : " " + options);
+  const cl_int status = clBuildProgram(program.get(), 1, &entry_.device.get(), all_options.c_str(),
+                                       nullptr, nullptr);
+  if (status != CL_SUCCESS) {
+    throw DeviceError("kernel build failed on " + name() + " (" +
+                      compute::opencl_error::to_string(status) + "); build log:\n" +
+                      program.build_log());
+  }
+  return program;
+}
+
+compute::buffer DeviceContext::allocate(std::size_t bytes, const std::string& what) const {
+  const std::size_t max_alloc = entry_.device.get_info<cl_ulong>(CL_DEVICE_MAX_MEM_ALLOC_SIZE);
+  const auto refuse = [&](const std::string& why) {
+    return DeviceError("cannot allocate the " + what + " buffer (" + mib(bytes) + ") on " + name() +
+                       ": " + why);
+  };
+  if (bytes > max_alloc)
+    throw refuse("larger than the device's largest allocation (" + mib(max_alloc) +
+                 "); lower --wavefront");
+  try {
+    // A zero-size buffer is invalid in OpenCL; keep one element so that empty tables still bind.
+    return compute::buffer(context_, bytes == 0 ? 16 : bytes, CL_MEM_READ_WRITE);
+  } catch (const compute::opencl_error& e) {
+    throw refuse(e.error_string());
+  }
+}
+
+}  // namespace clrt

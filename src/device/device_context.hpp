@@ -1,0 +1,39 @@
+// One OpenCL device with its context and an in-order, profiling-enabled command queue, and the
+// checked ways to build programs and allocate buffers on it.
+#pragma once
+
+#include <cstddef>
+#include <string>
+
+#include "device/device_select.hpp"
+#include "device/opencl.hpp"
+
+namespace clrt {
+
+class DeviceContext {
+ public:
+  explicit DeviceContext(const DeviceEntry& entry);
+
+  const DeviceEntry& entry() const { return entry_; }
+  const compute::device& device() const { return entry_.device; }
+  compute::context& context() { return context_; }
+  compute::command_queue& queue() { return queue_; }
+  std::string name() const { return entry_.device.name(); }
+
+  // Builds `source` (already assembled, see kernel_source.hpp). A failure throws DeviceError
+  // with the device's whole build log.
+  compute::program build(const std::string& source, const std::string& options = "") const;
+
+  // A device buffer of `bytes`; `what` names it in the error when the device refuses.
+  compute::buffer allocate(std::size_t bytes, const std::string& what) const;
+
+ private:
+  DeviceEntry entry_;
+  compute::context context_;
+  compute::command_queue queue_;
+};
+
+// The options every clrt program is built with; fixed so that PoCL's kernel cache stays warm.
+extern const char* const kProgramOptions;
+
+}  // namespace clrt

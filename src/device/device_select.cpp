@@ -1,0 +1,109 @@
+#include "device/device_select.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <sstream>
+
+namespace clrt {
+namespace {
+
+std::string lower(std::string s) {
+  std::transform(s.begin(), s.end(), s.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return s;
+}
+
+std::string type_name(const compute::device& d) {
+  const cl_device_type type = d.type();
+  if (type & CL_DEVICE_TYPE_GPU) return "GPU";
+  if (type & CL_DEVICE_TYPE_CPU) return "CPU";
+  if (type & CL_DEVICE_TYPE_ACCELERATOR) return "accelerator";
+  return "other";
+}
+
+bool parse_index_pair(const std::string& spec, int& platform, int& device) {
+  const auto colon = spec.find(':');
+  if (colon == std::string::npos || colon == 0 || colon + 1 == spec.size()) return false;
+  const std::string a = spec.substr(0, colon), b = spec.substr(colon + 1);
+  const auto digits = [](const std::string& s) {
+    return std::all_of(s.begin(), s.end(), [](unsigned char c) { return std::isdigit(c); });
+  };
+  if (!digits(a) || !digits(b) || a.size() > 6 || b.size() > 6) return false;
+  platform = std::stoi(a);
+  device = std::stoi(b);
+  return true;
+}
+
+std::vector<DeviceEntry> matching(const std::vector<DeviceEntry>& all, const std::string& spec) {
+  std::vector<DeviceEntry> out;
+  const std::string key = lower(spec);
+  int platform = 0, device = 0;
+  const bool indexed = parse_index_pair(spec, platform, device);
+  for (const DeviceEntry& e : all) {
+    const cl_device_type type = e.device.type();
+    const bool match =
+        key == "all" || (key == "cpu" && (type & CL_DEVICE_TYPE_CPU)) ||
+        (key == "gpu" && (type & CL_DEVICE_TYPE_GPU)) ||
+        (indexed && e.platform_index == platform && e.device_index == device) ||
+        (!indexed && key != "cpu" && key != "gpu" && lower(e.device.name()).find(key) != std::string::npos);
+    if (match) out.push_back(e);
+  }
+  if ((key == "cpu" || key == "gpu") && out.size() > 1) out.resize(1);
+  return out;
+}
+
+}  // namespace
+
+std::vector<DeviceEntry> enumerate_devices() {
+  std::vector<compute::platform> platforms;
+  try {
+    platforms = compute::system::platforms();
+  } catch (const compute::opencl_error&) {
+    platforms.clear();  // the ICD loader reports "no platform" as an error code
+  }
+  if (platforms.empty())
+    throw DeviceError(
+        "no OpenCL platform found: install an OpenCL driver (e.g. Debian's pocl-opencl-icd) "
+        "and check /etc/OpenCL/vendors");
+  std::vector<DeviceEntry> out;
+  for (std::size_t p = 0; p < platforms.size(); ++p) {
+    std::vector<compute::device> devices;
+    try {
+      devices = platforms[p].devices();
+    } catch (const compute::opencl_error&) {
+      continue;  // a platform with no device answers CL_DEVICE_NOT_FOUND
+    }
+    for (std::size_t d = 0; d < devices.size(); ++d)
+      out.push_back({static_cast<int>(p), static_cast<int>(d), devices[d]});
+  }
+  return out;
+}
+
+std::vector<DeviceEntry> select_devices(const std::string& spec) {
+  const std::vector<DeviceEntry> all = enumerate_devices();
+  std::vector<DeviceEntry> chosen = matching(all, spec);
+  if (chosen.empty()) {
+    std::string message = "no OpenCL device matches --device " + spec + "; the devices are:\n";
+    message += all.empty() ? "  (none)\n" : device_table(all);
+    throw DeviceError(message);
+  }
+  return chosen;
+}
+
+std::string describe_device(const DeviceEntry& e) {
+  const compute::device& d = e.device;
+  std::ostringstream out;
+  out << e.platform_index << ':' << e.device_index << "  " << d.name() << " (" << type_name(d)
+      << ", " << d.compute_units() << " compute units, " << (d.global_memory_size() >> 20)
+      << " MiB, " << d.get_info<std::string>(CL_DEVICE_OPENCL_C_VERSION) << ") on "
+      << d.platform().name();
+  return out.str();
+}
+
+std::string device_table(const std::vector<DeviceEntry>& devices) {
+  std::string out;
+  for (const DeviceEntry& e : devices) out += "  " + describe_device(e) + "\n";
+  return out;
+}
+
+}  // namespace clrt

@@ -1,0 +1,35 @@
+// The scene's geometry flattened into the tables the device reads (see kernels/shared/scene.h
+// and kernels/shared/bvh.h): instances with planes first, meshes, triangles, and the BVH nodes.
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+#include "scene/scene.hpp"
+#include "shared/bvh.h"
+#include "shared/scene.h"
+
+namespace clrt {
+
+struct GeometryData {
+  std::vector<dev::Instance> instances;  // planes are [0, plane_count): they stay outside the BVH
+  dev::u32 plane_count = 0;
+  std::vector<dev::Mesh> meshes;  // the scene's mesh files, then one mesh of the loose triangles
+  std::vector<dev::Triangle> triangles;
+  std::vector<dev::TriangleNormals> triangle_normals;  // one per triangle
+  std::vector<dev::u32> triangle_materials;            // one per triangle
+  std::vector<dev::BvhNode> nodes;                     // the top level's root is node 0
+  double build_seconds = 0;                            // BVH build time, for --stats
+
+  // Host-only maps back to the scene (the BVH build reorders instances and triangles):
+  std::vector<int> instance_source;        // per instance: index in Scene::instances, -1 for the
+                                           // loose-triangle mesh's instance
+  std::vector<dev::u32> triangle_source;   // per triangle: its index within its MeshData (in
+                                           // Scene::triangles for the loose-triangle mesh)
+
+  std::size_t device_bytes() const;
+};
+
+GeometryData build_geometry(const Scene& scene);
+
+}  // namespace clrt

@@ -1,0 +1,18 @@
+// Scene instances as the device's Instance records.
+#pragma once
+
+#include "math/mat4.hpp"
+#include "scene/scene.hpp"
+#include "shared/scene.h"
+
+namespace clrt {
+
+// The record of a canonical shape or mesh instance; `mesh` is the device mesh index (used only
+// for ShapeKind::Mesh).
+dev::Instance device_instance(const InstanceSpec& spec, dev::u32 mesh);
+
+// The identity-placed instance of the mesh that holds the scene's loose triangles, whose
+// materials come per triangle.
+dev::Instance loose_triangle_instance(dev::u32 mesh);
+
+}  // namespace clrt

@@ -1,0 +1,82 @@
+#include "image/atomic_file.hpp"
+
+#include <atomic>
+#include <cerrno>
+#include <cstring>
+#include <fcntl.h>
+#include <unistd.h>
+
+#include "image/image.hpp"
+
+namespace clrt::image_detail {
+namespace {
+
+// A name no other writer uses: the process id keeps processes apart, the counter threads and
+// successive writes; O_EXCL catches whatever is left (e.g. a stale temporary from a crash).
+std::string next_temp_candidate(const std::string& path) {
+  static std::atomic<unsigned> counter{0};
+  return path + "." + std::to_string(::getpid()) + "-" + std::to_string(counter++) + ".tmp";
+}
+
+}  // namespace
+
+AtomicFile::AtomicFile(std::string path) : path_(std::move(path)) {
+  constexpr int kAttempts = 100;
+  for (int attempt = 0; attempt < kAttempts; ++attempt) {
+    temp_path_ = next_temp_candidate(path_);
+    // Mode 0666 lets the umask decide, as for any newly created file (mkstemp would force 0600).
+    fd_ = ::open(temp_path_.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+    if (fd_ >= 0) {
+      temp_exists_ = true;
+      return;
+    }
+    if (errno != EEXIST) break;
+  }
+  fail("cannot create temporary");
+}
+
+AtomicFile::~AtomicFile() { discard(); }
+
+void AtomicFile::write(const void* data, std::size_t size) {
+  const auto* bytes = static_cast<const char*>(data);
+  while (size > 0) {
+    const ssize_t written = ::write(fd_, bytes, size);
+    if (written < 0) {
+      if (errno == EINTR) continue;
+      fail("cannot write temporary");
+    }
+    bytes += written;
+    size -= static_cast<std::size_t>(written);
+  }
+}
+
+void AtomicFile::commit() {
+  if (::fsync(fd_) != 0) fail("cannot flush temporary");
+  const int fd = fd_;
+  fd_ = -1;
+  // A failed close can mean lost data (e.g. on NFS), so it fails the write.
+  if (::close(fd) != 0) fail("cannot close temporary");
+  if (::rename(temp_path_.c_str(), path_.c_str()) != 0) fail("cannot rename temporary");
+  temp_exists_ = false;
+}
+
+void AtomicFile::fail(const char* step) {
+  const int error = errno;  // before discard() or any allocation can change it
+  discard();
+  throw ImageError("cannot write " + path_ + ": " + step + " " + temp_path_ + ": " + std::strerror(error));
+}
+
+void AtomicFile::discard() noexcept {
+  if (fd_ >= 0) ::close(fd_);
+  fd_ = -1;
+  if (temp_exists_) ::unlink(temp_path_.c_str());
+  temp_exists_ = false;
+}
+
+void write_file_atomically(const std::string& path, const std::vector<std::uint8_t>& bytes) {
+  AtomicFile file(path);
+  file.write(bytes.data(), bytes.size());
+  file.commit();
+}
+
+}  // namespace clrt::image_detail

@@ -1,0 +1,38 @@
+// A file that appears at its path complete or not at all.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace clrt::image_detail {
+
+// Writes go to a temporary beside the target (same directory, hence same file system, so the
+// final rename is atomic). commit() flushes it to disk and renames it over the target; any
+// failure, or destruction before commit(), removes the temporary and leaves the target as it
+// was. Errors are ImageError naming the target path and the system's reason.
+class AtomicFile {
+ public:
+  explicit AtomicFile(std::string path);
+  ~AtomicFile();
+  AtomicFile(const AtomicFile&) = delete;
+  AtomicFile& operator=(const AtomicFile&) = delete;
+
+  void write(const void* data, std::size_t size);
+  void commit();
+
+ private:
+  // Reads errno, so call it straight after the failing system call.
+  [[noreturn]] void fail(const char* step);
+  void discard() noexcept;
+
+  std::string path_, temp_path_;
+  int fd_ = -1;
+  bool temp_exists_ = false;
+};
+
+// The whole of `bytes` as the file at `path`, through an AtomicFile.
+void write_file_atomically(const std::string& path, const std::vector<std::uint8_t>& bytes);
+
+}  // namespace clrt::image_detail

@@ -1,0 +1,131 @@
+#include "render/frame_setup.hpp"
+
+#include <cmath>
+
+namespace clrt {
+namespace {
+
+dev::f4 f4_of(const Vec3& v) {
+  return {static_cast<float>(v.x), static_cast<float>(v.y), static_cast<float>(v.z), 0.0f};
+}
+
+}  // namespace
+
+RenderOptions RenderOptions::from_scene(const Scene& scene) {
+  RenderOptions o;
+  o.width = scene.width;
+  o.height = scene.height;
+  o.samples = scene.samples;
+  o.max_depth = scene.max_depth;
+  return o;
+}
+
+Grid stratification_grid(unsigned n) {
+  unsigned v = 1;
+  for (unsigned d = 1; static_cast<unsigned long long>(d) * d <= n; ++d)
+    if (n % d == 0) v = d;
+  return {n / v, v};
+}
+
+// dir(x, y) = f F + (x - w/2) R + (h/2 - y) U for continuous pixel coordinates (x, y), with
+// the focal length f = w / (2 tan(fov / 2)) in pixels (fov across the width).
+dev::Camera make_camera(const Scene& scene, const RenderOptions& options) {
+  const CameraSpec& c = scene.camera;
+  const Vec3 forward = normalize(c.lookat - c.eye);
+  const Vec3 right = normalize(cross(forward, c.up));
+  const Vec3 up = cross(right, forward);
+  const double w = options.width, h = options.height;
+  const double focal = w / (2.0 * std::tan(c.fov_degrees * M_PI / 360.0));
+  dev::Camera cam{};
+  cam.eye = f4_of(c.eye);
+  cam.corner = f4_of(forward * focal - right * (w / 2) + up * (h / 2));
+  cam.pixel_dx = f4_of(right);
+  cam.pixel_dy = f4_of(-up);
+  cam.width = static_cast<dev::u32>(options.width);
+  cam.height = static_cast<dev::u32>(options.height);
+  cam.samples = static_cast<dev::u32>(options.samples);
+  const Grid grid = stratification_grid(cam.samples);
+  cam.grid_u = grid.u;
+  cam.grid_v = grid.v;
+  cam.seed = options.seed;
+  return cam;
+}
+
+std::vector<dev::Material> make_materials(const Scene& scene) {
+  std::vector<dev::Material> out;
+  for (const MaterialSpec& m : scene.materials) {
+    dev::Material d{};
+    d.color = f4_of(m.color);
+    d.ka = static_cast<float>(m.ka);
+    d.kd = static_cast<float>(m.kd);
+    d.ks = static_cast<float>(m.ks);
+    d.shininess = static_cast<float>(m.shininess);
+    d.kr = static_cast<float>(m.kr);
+    d.kt = static_cast<float>(m.kt);
+    d.ior = static_cast<float>(m.ior);
+    out.push_back(d);
+  }
+  return out;
+}
+
+std::vector<dev::Light> make_lights(const Scene& scene) {
+  std::vector<dev::Light> out;
+  dev::u32 first_sample = 0;
+  for (const LightSpec& l : scene.lights) {
+    if (l.kind == LightKind::Ambient) continue;
+    dev::Light d{};
+    d.color = f4_of(l.color);
+    d.position = f4_of(l.position);
+    d.samples = 1;
+    d.grid_u = d.grid_v = 1;
+    switch (l.kind) {
+      case LightKind::Directional:
+        d.kind = CLRT_LIGHT_DIRECTIONAL;
+        d.direction = f4_of(normalize(l.direction));
+        break;
+      case LightKind::Spot:
+        d.kind = CLRT_LIGHT_SPOT;
+        d.direction = f4_of(normalize(l.direction));
+        d.cos_cutoff = static_cast<float>(std::cos(l.angle_degrees * M_PI / 180.0));
+        d.spot_exponent = static_cast<float>(l.exponent);
+        break;
+      case LightKind::Area: {
+        d.kind = CLRT_LIGHT_AREA;
+        d.edge_u = f4_of(l.edge_u);
+        d.edge_v = f4_of(l.edge_v);
+        d.samples = static_cast<dev::u32>(l.samples);
+        const Grid grid = stratification_grid(d.samples);
+        d.grid_u = grid.u;
+        d.grid_v = grid.v;
+        break;
+      }
+      default:
+        d.kind = CLRT_LIGHT_POINT;
+        break;
+    }
+    d.first_sample = first_sample;
+    first_sample += d.samples;
+    out.push_back(d);
+  }
+  return out;
+}
+
+dev::RenderParams make_params(const Scene& scene, const RenderOptions& options) {
+  dev::RenderParams p{};
+  p.background = f4_of(scene.background);
+  Vec3 ambient;
+  for (const LightSpec& l : scene.lights)
+    if (l.kind == LightKind::Ambient) ambient = ambient + l.color;
+  p.ambient = f4_of(ambient);
+  for (const dev::Light& l : make_lights(scene)) {
+    ++p.light_count;
+    p.shadow_samples += l.samples;
+  }
+  p.max_depth = static_cast<dev::u32>(options.max_depth);
+  p.mode = options.mode == RenderMode::Cast ? CLRT_MODE_CAST : CLRT_MODE_TRACE;
+  p.epsilon = kEpsilon;
+  p.seed = options.seed;
+  return p;
+}
+
+}  // namespace clrt

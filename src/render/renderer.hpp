@@ -1,0 +1,25 @@
+// A whole render: the geometry built once, a program and a wavefront renderer per device, and
+// the image's pixel ranges shared out among the devices.
+#pragma once
+
+#include <vector>
+
+#include "device/device_select.hpp"
+#include "image/image.hpp"
+#include "render/render_options.hpp"
+#include "render/render_stats.hpp"
+#include "scene/scene.hpp"
+
+namespace clrt {
+
+struct RenderSetup {
+  RenderOptions options;
+  std::vector<DeviceEntry> devices;  // at least one
+  bool profile = false;              // per-kernel device times and rays by kind (--stats)
+  bool progress = false;             // a progress bar when stderr is a terminal
+};
+
+// Renders `scene`; fills the timing and ray fields of `stats` (not load or write).
+FloatImage render(const Scene& scene, const RenderSetup& setup, RenderStats& stats);
+
+}  // namespace clrt

@@ -1,0 +1,67 @@
+// eye, lookat, up, fov, background, resolution, maxdepth, samples.
+#include "scene/command_table.hpp"
+
+namespace clrt {
+namespace {
+
+void eye(LoaderState& s, const CommandArgs& a) {
+  a.require_count({3});
+  s.scene.camera.eye = a.vec3(0);
+  s.eye_set_at = a.command_location();
+}
+
+void lookat(LoaderState& s, const CommandArgs& a) {
+  a.require_count({3});
+  s.scene.camera.lookat = a.vec3(0);
+  s.lookat_set_at = a.command_location();
+}
+
+void up(LoaderState& s, const CommandArgs& a) {
+  a.require_count({3});
+  s.scene.camera.up = a.nonzero_vec3(0, "the up vector");
+  s.up_set_at = a.command_location();
+}
+
+void fov(LoaderState& s, const CommandArgs& a) {
+  a.require_count({1});
+  const double degrees = a.number(0);
+  if (degrees <= 0 || degrees >= 180)
+    throw a.error_at(0, "fov must be > 0 and < 180 degrees, found " + a.word(0).text);
+  s.scene.camera.fov_degrees = degrees;
+}
+
+void background(LoaderState& s, const CommandArgs& a) {
+  a.require_count({3});
+  s.scene.background = a.vec3(0);
+}
+
+void resolution(LoaderState& s, const CommandArgs& a) {
+  a.require_count({2});
+  s.scene.width = a.whole_number(0, 1, "the image width");
+  s.scene.height = a.whole_number(1, 1, "the image height");
+}
+
+void maxdepth(LoaderState& s, const CommandArgs& a) {
+  a.require_count({1});
+  s.scene.max_depth = a.whole_number(0, 0, "maxdepth");
+}
+
+void samples(LoaderState& s, const CommandArgs& a) {
+  a.require_count({1});
+  s.scene.samples = a.whole_number(0, 1, "the number of samples");
+}
+
+}  // namespace
+
+void add_camera_commands(CommandTable& table) {
+  table["eye"] = eye;
+  table["lookat"] = lookat;
+  table["up"] = up;
+  table["fov"] = fov;
+  table["background"] = background;
+  table["resolution"] = resolution;
+  table["maxdepth"] = maxdepth;
+  table["samples"] = samples;
+}
+
+}  // namespace clrt

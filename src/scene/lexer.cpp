@@ -1,0 +1,64 @@
+#include "scene/lexer.hpp"
+
+#include <cstddef>
+
+#include "scene/source_location.hpp"
+
+namespace clrt {
+namespace {
+
+bool is_separator(char c) { return c == ' ' || c == '\t' || c == '\r'; }
+
+// Reads one word starting at `pos` (not a separator, not `#`); advances `pos` past it.
+Word read_word(const std::string& line, std::size_t& pos, int line_number, const std::string& file) {
+  Word word;
+  word.column = static_cast<int>(pos) + 1;
+  if (line[pos] == '"') {
+    const std::size_t close = line.find('"', pos + 1);
+    if (close == std::string::npos)
+      throw SceneError({file, line_number, word.column}, "unterminated quoted word");
+    word.text = line.substr(pos + 1, close - pos - 1);
+    word.quoted = true;
+    pos = close + 1;
+  } else {
+    const std::size_t start = pos;
+    while (pos < line.size() && !is_separator(line[pos]) && line[pos] != '#') ++pos;
+    word.text = line.substr(start, pos - start);
+  }
+  word.end_column = static_cast<int>(pos) + 1;
+  return word;
+}
+
+std::vector<Word> split_words(const std::string& line, int line_number, const std::string& file) {
+  std::vector<Word> words;
+  std::size_t pos = 0;
+  while (pos < line.size()) {
+    if (is_separator(line[pos])) {
+      ++pos;
+    } else if (line[pos] == '#') {
+      break;
+    } else {
+      words.push_back(read_word(line, pos, line_number, file));
+    }
+  }
+  return words;
+}
+
+}  // namespace
+
+std::vector<Line> split_into_lines(const std::string& text, const std::string& file) {
+  std::vector<Line> lines;
+  int number = 0;
+  std::size_t start = 0;
+  while (start < text.size()) {
+    std::size_t end = text.find('\n', start);
+    if (end == std::string::npos) end = text.size();
+    ++number;
+    std::vector<Word> words = split_words(text.substr(start, end - start), number, file);
+    if (!words.empty()) lines.push_back({number, std::move(words)});
+    start = end + 1;
+  }
+  return lines;
+}
+
+}  // namespace clrt

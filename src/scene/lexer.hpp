@@ -1,0 +1,27 @@
+// Splits .ray text into lines of words, remembering where each word was written.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace clrt {
+
+struct Word {
+  std::string text;    // without the quotes of a quoted word
+  int column = 1;      // 1-based byte column of the first character (the opening quote if quoted)
+  int end_column = 1;  // one past the last character, so "missing word" errors can point there
+  bool quoted = false;
+};
+
+struct Line {
+  int number = 1;  // 1-based
+  std::vector<Word> words;  // never empty: blank and comment-only lines are dropped
+};
+
+// Words are separated by runs of spaces, tabs and carriage returns (so CRLF files read the same);
+// `#` starts a comment that runs to the end of the line. A word that starts with `"` runs to the
+// next `"` and may hold spaces and `#` (used for mesh paths). Throws SceneError on an
+// unterminated quote, located in `file`.
+std::vector<Line> split_into_lines(const std::string& text, const std::string& file);
+
+}  // namespace clrt

@@ -1,0 +1,24 @@
+// What the loader keeps while it reads a .ray file top to bottom.
+#pragma once
+
+#include <map>
+#include <optional>
+#include <string>
+
+#include "math/mat4.hpp"
+#include "scene/scene.hpp"
+#include "scene/source_location.hpp"
+
+namespace clrt {
+
+struct LoaderState {
+  Scene scene;
+  std::string scene_folder;  // mesh paths are relative to it
+  Mat4 transform;            // the current transform M
+  int material = 0;          // the current material: index into scene.materials
+  std::map<std::string, int> mesh_by_path;  // resolved path -> index into scene.meshes
+  // The last command that set each camera vector, for errors found only after the whole file.
+  std::optional<SourceLocation> eye_set_at, lookat_set_at, up_set_at;
+};
+
+}  // namespace clrt

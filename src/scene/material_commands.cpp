@@ -1,0 +1,38 @@
+// material / surface: appends a material and makes it the current one.
+#include "scene/command_table.hpp"
+
+namespace clrt {
+namespace {
+
+// 9 numbers: r g b ka kd ks n kr kt; 10: ... ior; 11: r g b a ka kd ks n kr kt ior (a ignored).
+void material(LoaderState& s, const CommandArgs& a) {
+  a.require_count({9, 10, 11});
+  const std::size_t k = a.count() == 11 ? 4 : 3;  // index of ka
+  // The ignored alpha must be a number too, and errors are reported left to right.
+  for (std::size_t i = 0; i < a.count(); ++i) a.number(i);
+  MaterialSpec m;
+  m.color = a.vec3(0);
+  m.ka = a.number(k);
+  m.kd = a.number(k + 1);
+  m.ks = a.number(k + 2);
+  m.shininess = a.number(k + 3);
+  if (m.shininess < 0)
+    throw a.error_at(k + 3, "the Phong exponent must be >= 0, found " + a.word(k + 3).text);
+  m.kr = a.number_in(k + 4, 0, 1, "kr");
+  m.kt = a.number_in(k + 5, 0, 1, "kt");
+  if (a.count() > 9) {
+    const double ior = a.number(k + 6);
+    m.ior = ior <= 0 ? 1 : ior;
+  }
+  s.scene.materials.push_back(m);
+  s.material = static_cast<int>(s.scene.materials.size()) - 1;
+}
+
+}  // namespace
+
+void add_material_commands(CommandTable& table) {
+  table["material"] = material;
+  table["surface"] = material;
+}
+
+}  // namespace clrt

@@ -1,0 +1,118 @@
+// sphere, plane, cube, cylinder, cone, triangle, mesh: objects placed by the current transform.
+#include <cmath>
+#include <filesystem>
+
+#include "scene/command_table.hpp"
+#include "scene/mesh_loader.hpp"
+
+namespace clrt {
+namespace {
+
+bool all_finite(const Mat4& m) {
+  for (const auto& row : m.m)
+    for (double v : row)
+      if (!std::isfinite(v)) return false;
+  return true;
+}
+
+// Appends an instance of a canonical shape placed by `to_world`.
+InstanceSpec& add_instance(LoaderState& s, const CommandArgs& a, ShapeKind shape,
+                           const Mat4& to_world) {
+  InstanceSpec instance;
+  instance.shape = shape;
+  instance.material = s.material;
+  instance.transform = to_world;
+  instance.inverse = to_world.inverse();
+  instance.normal_matrix = instance.inverse.transposed();
+  instance.where = a.command_location();
+  // Extreme scale factors can overflow the product or make it numerically singular.
+  if (!all_finite(instance.transform) || !all_finite(instance.inverse))
+    throw SceneError(instance.where, "the current transform cannot be inverted");
+  s.scene.instances.push_back(instance);
+  return s.scene.instances.back();
+}
+
+void add_simple_shape(LoaderState& s, const CommandArgs& a, ShapeKind shape) {
+  a.require_count({0});
+  add_instance(s, a, shape, s.transform);
+}
+
+void sphere(LoaderState& s, const CommandArgs& a) {
+  a.require_count({0, 4});
+  Mat4 to_world = s.transform;
+  if (a.count() == 4) {
+    const Vec3 centre = a.vec3(0);
+    const double radius = a.number(3);
+    if (radius <= 0) throw a.error_at(3, "the sphere radius must be > 0, found " + a.word(3).text);
+    to_world = to_world * Mat4::translate(centre) * Mat4::scale({radius, radius, radius});
+  }
+  add_instance(s, a, ShapeKind::Sphere, to_world);
+}
+
+void plane(LoaderState& s, const CommandArgs& a) { add_simple_shape(s, a, ShapeKind::Plane); }
+void cube(LoaderState& s, const CommandArgs& a) { add_simple_shape(s, a, ShapeKind::Cube); }
+void cylinder(LoaderState& s, const CommandArgs& a) { add_simple_shape(s, a, ShapeKind::Cylinder); }
+
+void cone(LoaderState& s, const CommandArgs& a) {
+  a.require_count({0, 2});
+  double radii[2] = {1, 0};
+  if (a.count() == 2) {
+    for (std::size_t i = 0; i < 2; ++i) {
+      radii[i] = a.number(i);
+      if (radii[i] < 0) throw a.error_at(i, "a cone radius must be >= 0, found " + a.word(i).text);
+    }
+    if (radii[0] == 0 && radii[1] == 0) throw a.error_at(0, "the cone radii must not both be 0");
+  }
+  InstanceSpec& instance = add_instance(s, a, ShapeKind::Cone, s.transform);
+  instance.cone_r0 = radii[0];
+  instance.cone_r1 = radii[1];
+}
+
+void triangle(LoaderState& s, const CommandArgs& a) {
+  a.require_count({9});
+  TriangleSpec t;
+  t.v0 = s.transform.transform_point(a.vec3(0));
+  t.v1 = s.transform.transform_point(a.vec3(3));
+  t.v2 = s.transform.transform_point(a.vec3(6));
+  t.material = s.material;
+  s.scene.triangles.push_back(t);
+}
+
+// The same resolved path is read once; every `mesh` naming it shares that MeshData.
+int mesh_index(LoaderState& s, const CommandArgs& a) {
+  const std::string path =
+      (std::filesystem::path(s.scene_folder) / a.word(0).text).lexically_normal().generic_string();
+  const auto known = s.mesh_by_path.find(path);
+  if (known != s.mesh_by_path.end()) return known->second;
+  try {
+    s.scene.meshes.push_back(load_obj_mesh(path));
+  } catch (const MeshError& e) {
+    throw SceneError(a.command_location(), std::string("bad mesh file ") + e.what());
+  }
+  const int index = static_cast<int>(s.scene.meshes.size()) - 1;
+  s.mesh_by_path[path] = index;
+  return index;
+}
+
+void mesh(LoaderState& s, const CommandArgs& a) {
+  if (a.count() > 1)
+    throw a.error_at(1, "wrong number of arguments: mesh takes 1 path, found " +
+                            std::to_string(a.count()) + " (put a path with spaces in double quotes)");
+  a.require_count({1});
+  const int index = mesh_index(s, a);
+  add_instance(s, a, ShapeKind::Mesh, s.transform).mesh = index;
+}
+
+}  // namespace
+
+void add_object_commands(CommandTable& table) {
+  table["sphere"] = sphere;
+  table["plane"] = plane;
+  table["cube"] = cube;
+  table["cylinder"] = cylinder;
+  table["cone"] = cone;
+  table["triangle"] = triangle;
+  table["mesh"] = mesh;
+}
+
+}  // namespace clrt

@@ -1,0 +1,86 @@
+// The scene model: everything a .ray file describes, validated and ready to upload.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "math/mat4.hpp"
+#include "math/vec3.hpp"
+#include "scene/source_location.hpp"
+
+namespace clrt {
+
+struct CameraSpec {
+  Vec3 eye{0, 0, 5};
+  Vec3 lookat{0, 0, 0};
+  Vec3 up{0, 1, 0};
+  double fov_degrees = 60;  // horizontal, across the image width
+};
+
+struct MaterialSpec {
+  Vec3 color{1, 1, 1};
+  double ka = 0.2, kd = 0.8, ks = 0, shininess = 1;
+  double kr = 0, kt = 0;
+  double ior = 1;  // a value <= 0 in the file is stored as 1
+};
+
+enum class LightKind { Ambient, Point, Directional, Spot, Area };
+
+struct LightSpec {
+  LightKind kind = LightKind::Point;
+  Vec3 color;
+  Vec3 position;       // point, spot; area: corner
+  Vec3 direction;      // directional: direction of travel; spot: axis (as written, not normalised)
+  Vec3 edge_u, edge_v; // area
+  double angle_degrees = 180;  // spot: cut-off half-angle
+  double exponent = 0;         // spot
+  int samples = 1;             // area: default 16
+};
+
+enum class ShapeKind { Sphere, Plane, Cube, Cylinder, Cone, Mesh };
+
+struct InstanceSpec {
+  ShapeKind shape = ShapeKind::Sphere;
+  int material = 0;  // index into Scene::materials
+  int mesh = -1;     // ShapeKind::Mesh: index into Scene::meshes
+  double cone_r0 = 1, cone_r1 = 0;
+  Mat4 transform;      // M: object to world
+  Mat4 inverse;        // M^-1
+  Mat4 normal_matrix;  // (M^-1)^T
+  SourceLocation where;
+};
+
+// A triangle mesh in its own object space, loaded once however many instances use it.
+struct MeshData {
+  std::string path;                  // as resolved against the scene's folder
+  std::vector<Vec3> positions;
+  std::vector<Vec3> normals;         // empty, or the file's vertex normals, indexed by corner_normals
+  std::vector<std::uint32_t> corners;  // 3 per triangle, into `positions`, counter-clockwise
+  std::vector<std::uint32_t> corner_normals;  // 3 per triangle into `normals` when normals exist
+};
+
+// A `triangle` command: vertices already transformed to world space by the current M.
+struct TriangleSpec {
+  Vec3 v0, v1, v2;
+  int material = 0;
+};
+
+struct Scene {
+  std::string path;
+  CameraSpec camera;
+  Vec3 background{0, 0, 0};
+  int width = 500, height = 300;
+  int max_depth = 5;
+  int samples = 1;
+  std::vector<MaterialSpec> materials;  // [0] is the default material
+  std::vector<LightSpec> lights;
+  std::vector<InstanceSpec> instances;
+  std::vector<MeshData> meshes;
+  std::vector<TriangleSpec> triangles;
+};
+
+// Reads a .ray file (and the meshes it names). Throws SceneError on any problem in the file.
+Scene load_scene(const std::string& path);
+
+}  // namespace clrt

@@ -1,0 +1,52 @@
+// reset, translate, scale, rotate, rotatex/y/z: each new transform X makes current = X * current.
+#include <string>
+
+#include "scene/command_table.hpp"
+
+namespace clrt {
+namespace {
+
+void reset(LoaderState& s, const CommandArgs& a) {
+  a.require_count({0});
+  s.transform = Mat4::identity();
+}
+
+void translate(LoaderState& s, const CommandArgs& a) {
+  a.require_count({3});
+  s.transform = Mat4::translate(a.vec3(0)) * s.transform;
+}
+
+void scale(LoaderState& s, const CommandArgs& a) {
+  a.require_count({3});
+  const Vec3 factors = a.vec3(0);
+  for (int i = 0; i < 3; ++i)
+    if (factors[i] == 0) throw a.error_at(static_cast<std::size_t>(i), "a scale factor must not be 0");
+  s.transform = Mat4::scale(factors) * s.transform;
+}
+
+void rotate(LoaderState& s, const CommandArgs& a) {
+  a.require_count({4});
+  const double degrees = a.number(0);
+  s.transform = Mat4::rotate(degrees, a.nonzero_vec3(1, "the rotation axis")) * s.transform;
+}
+
+template <int Axis>
+void rotate_about_principal_axis(LoaderState& s, const CommandArgs& a) {
+  a.require_count({1});
+  const Vec3 axis{Axis == 0 ? 1.0 : 0.0, Axis == 1 ? 1.0 : 0.0, Axis == 2 ? 1.0 : 0.0};
+  s.transform = Mat4::rotate(a.number(0), axis) * s.transform;
+}
+
+}  // namespace
+
+void add_transform_commands(CommandTable& table) {
+  table["reset"] = reset;
+  table["translate"] = translate;
+  table["scale"] = scale;
+  table["rotate"] = rotate;
+  table["rotatex"] = rotate_about_principal_axis<0>;
+  table["rotatey"] = rotate_about_principal_axis<1>;
+  table["rotatez"] = rotate_about_principal_axis<2>;
+}
+
+}  // namespace clrt

@@ -1,0 +1,63 @@
+// The device must see every shared structure with the host's size and field offsets.
+#include <catch2/catch.hpp>
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "cl_fixture.hpp"
+#include "shared/bvh.h"
+#include "shared/ray.h"
+#include "shared/scene.h"
+
+using namespace clrt;
+
+namespace {
+
+// Each entry is the sizeof or offsetof expression, evaluated by both compilers.
+#define LAYOUT_FIELDS(X)                                                                     \
+  X(sizeof(Ray)) X(offsetof(Ray, dir)) X(offsetof(Ray, weight)) X(offsetof(Ray, sample))     \
+  X(offsetof(Ray, kind)) X(sizeof(Hit)) X(offsetof(Hit, shading_normal))                     \
+  X(offsetof(Hit, instance)) X(offsetof(Hit, material)) X(sizeof(ShadowRay))                 \
+  X(offsetof(ShadowRay, contribution)) X(offsetof(ShadowRay, owner)) X(sizeof(Camera))       \
+  X(offsetof(Camera, pixel_dy)) X(offsetof(Camera, width)) X(offsetof(Camera, seed))         \
+  X(sizeof(Material)) X(offsetof(Material, ka)) X(offsetof(Material, ior)) X(sizeof(Light))  \
+  X(offsetof(Light, edge_v)) X(offsetof(Light, kind)) X(offsetof(Light, first_sample))       \
+  X(offsetof(Light, spot_exponent)) X(sizeof(Instance)) X(offsetof(Instance, normal_to_world)) \
+  X(offsetof(Instance, shape)) X(offsetof(Instance, cone_r0)) X(sizeof(Mesh))                \
+  X(offsetof(Mesh, has_normals)) X(sizeof(Triangle)) X(offsetof(Triangle, v2))               \
+  X(sizeof(TriangleNormals)) X(sizeof(RenderParams)) X(offsetof(RenderParams, ambient))      \
+  X(offsetof(RenderParams, light_count)) X(offsetof(RenderParams, epsilon))                  \
+  X(offsetof(RenderParams, seed)) X(sizeof(BvhNode)) X(offsetof(BvhNode, max_z))             \
+  X(offsetof(BvhNode, child)) X(offsetof(BvhNode, count))
+
+#define AS_STRING(expr) #expr,
+#define AS_HOST_VALUE(expr) static_cast<unsigned>(expr),
+#define AS_DEVICE_STORE(expr) "out[n++] = (uint)(" #expr ");\n" +
+
+using namespace clrt::dev;
+const std::vector<std::string> kNames = {LAYOUT_FIELDS(AS_STRING)};
+const std::vector<unsigned> kHost = {LAYOUT_FIELDS(AS_HOST_VALUE)};
+
+std::string layout_kernel() {
+  return std::string(
+             "#ifndef offsetof\n#define offsetof(t, m) __builtin_offsetof(t, m)\n#endif\n"
+             "#include \"shared/ray.h\"\n#include \"shared/scene.h\"\n#include \"shared/bvh.h\"\n"
+             "__kernel void layout(__global uint* out) {\n  int n = 0;\n") +
+         LAYOUT_FIELDS(AS_DEVICE_STORE) "}\n";
+}
+
+}  // namespace
+
+TEST_CASE("shared structures have the same layout on the device and the host", "[layout]") {
+  compute::kernel kernel(test::test_program(layout_kernel()), "layout");
+  compute::buffer out = test::device().allocate(kHost.size() * sizeof(unsigned), "layout");
+  kernel.set_arg(0, out);
+  const std::size_t one = 1;
+  test::device().queue().enqueue_nd_range_kernel(kernel, 1, nullptr, &one, &one);
+  const std::vector<unsigned> device = test::download<unsigned>(out, kHost.size());
+  for (std::size_t i = 0; i < kHost.size(); ++i) {
+    INFO(kNames[i]);
+    CHECK(device[i] == kHost[i]);
+  }
+}

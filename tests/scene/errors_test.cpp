@@ -1,0 +1,67 @@
+#include <catch2/catch.hpp>
+
+#include "scene_test_support.hpp"
+
+using clrt::test::load_error;
+using clrt::test::load_error_of_file;
+using clrt::test::require_error;
+using clrt::test::TempFolder;
+
+TEST_CASE("the error text is FILE:LINE:COLUMN: error: MESSAGE", "[scene][errors]") {
+  TempFolder folder;
+  const std::string path = folder.write("bad.ray", "sphere\n  frobnicate 1 2\n");
+  const clrt::SceneError e = load_error_of_file(path);
+  CHECK(std::string(e.what()) == path + ":2:3: error: unknown command 'frobnicate'");
+  CHECK(e.where().file == path);
+}
+
+TEST_CASE("an unknown command is reported at the command word", "[scene][errors]") {
+  require_error("# comment\n\n\tspheres\n", 3, 2, "unknown command 'spheres'");
+  require_error("eye 0 0 5\n1 2 3\n", 2, 1, "unknown command '1'");
+}
+
+TEST_CASE("a word that is not a number is reported at that word", "[scene][errors]") {
+  require_error("translate 1 two 3\n", 1, 13, "expected a number, found 'two'");
+  require_error("fov 45deg\n", 1, 5, "expected a number");
+  require_error("fov 4,5\n", 1, 5, "expected a number");
+  require_error("fov 0x10\n", 1, 5, "expected a number");
+  require_error("fov \"45\"\n", 1, 5, "expected a number");
+}
+
+TEST_CASE("NaN, infinities and overflowing literals are rejected at their word", "[scene][errors]") {
+  require_error("translate 0 nan 0\n", 1, 13, "not a finite number");
+  require_error("background 0 0 -Inf\n", 1, 16, "not a finite number");
+  require_error("scale 1 1 infinity\n", 1, 11, "not a finite number");
+  require_error("eye 1e999 0 0\n", 1, 5, "out of the range");
+}
+
+TEST_CASE("too many arguments: the error points at the first extra word", "[scene][errors]") {
+  require_error("reset now\n", 1, 7, "wrong number of arguments");
+  require_error("translate 1 2 3   4 5\n", 1, 19, "translate takes 3 arguments, found 5");
+  require_error("plane 1\n", 1, 7, "plane takes 0 arguments, found 1");
+}
+
+TEST_CASE("too few arguments: the error points just past the last word", "[scene][errors]") {
+  require_error("translate 1 2   # missing z\n", 1, 14, "translate takes 3 arguments, found 2");
+  require_error("scale\t2 2\r\n", 1, 10, "wrong number of arguments");
+}
+
+TEST_CASE("a scene file that cannot be read is reported at 1:1", "[scene][errors]") {
+  TempFolder folder;
+  const std::string missing = folder.path("no-such-scene.ray");
+  const clrt::SceneError e = load_error_of_file(missing);
+  CHECK(e.where().file == missing);
+  CHECK(e.where().line == 1);
+  CHECK(e.where().column == 1);
+  CHECK_THAT(e.message(), Catch::Contains("cannot read"));
+
+  const clrt::SceneError folder_error = load_error_of_file(folder.path(""));
+  CHECK(folder_error.where().line == 1);
+  CHECK(folder_error.where().column == 1);
+  CHECK_THAT(folder_error.message(), Catch::Contains("folder"));
+}
+
+TEST_CASE("the first error in the file is the one reported", "[scene][errors]") {
+  const clrt::SceneError e = load_error("sphere\nfov 200\nbogus\n");
+  CHECK(e.where().line == 2);
+}

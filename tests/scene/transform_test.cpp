@@ -1,0 +1,119 @@
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+#include "scene_test_support.hpp"
+
+using clrt::Mat4;
+using clrt::Vec3;
+using clrt::test::load_text;
+using clrt::test::require_error;
+
+namespace {
+
+// Checks the 3x4 affine part of `m` against `expected`, row by row.
+void check_affine(const Mat4& m, const double (&expected)[3][4]) {
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 4; ++j) {
+      INFO("row " << i << " column " << j);
+      CHECK(m.m[i][j] == Approx(expected[i][j]).margin(1e-12));
+    }
+  CHECK(m.m[3][0] == 0);
+  CHECK(m.m[3][1] == 0);
+  CHECK(m.m[3][2] == 0);
+  CHECK(m.m[3][3] == 1);
+}
+
+Mat4 transform_of(const std::string& commands) {
+  const clrt::Scene s = load_text(commands + "\nsphere\n");
+  return s.instances.at(0).transform;
+}
+
+const double kDeg30 = M_PI / 6;
+
+}  // namespace
+
+TEST_CASE("each transform is applied after the earlier ones (the lecture's example)", "[scene][transform]") {
+  // scale .5 then translate -2 -.5 0: centre (-2, -0.5, 0), radius 0.5.
+  check_affine(transform_of("scale .5 .5 .5\ntranslate -2 -.5 0"),
+               {{0.5, 0, 0, -2}, {0, 0.5, 0, -0.5}, {0, 0, 0.5, 0}});
+  // The other order scales the translation too.
+  check_affine(transform_of("translate -2 -.5 0\nscale .5 .5 .5"),
+               {{0.5, 0, 0, -1}, {0, 0.5, 0, -0.25}, {0, 0, 0.5, 0}});
+}
+
+TEST_CASE("translate then rotate moves the object around the world origin", "[scene][transform]") {
+  const Vec3 a = transform_of("rotatez 90\ntranslate 1 0 0").transform_point({0, 0, 0});
+  CHECK(a.x == Approx(1));
+  CHECK(a.y == Approx(0).margin(1e-12));
+  const Vec3 b = transform_of("translate 1 0 0\nrotatez 90").transform_point({0, 0, 0});
+  CHECK(b.x == Approx(0).margin(1e-12));
+  CHECK(b.y == Approx(1));
+}
+
+TEST_CASE("reset returns to the identity; objects keep the transform they were made with",
+          "[scene][transform]") {
+  const clrt::Scene s = load_text("translate 1 2 3\nsphere\nreset\nsphere\nscale 2 2 2\nplane\n");
+  REQUIRE(s.instances.size() == 3);
+  check_affine(s.instances[0].transform, {{1, 0, 0, 1}, {0, 1, 0, 2}, {0, 0, 1, 3}});
+  check_affine(s.instances[1].transform, {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}});
+  check_affine(s.instances[2].transform, {{2, 0, 0, 0}, {0, 2, 0, 0}, {0, 0, 2, 0}});
+}
+
+TEST_CASE("rotatex, rotatey and rotatez match the lecture's matrices", "[scene][transform]") {
+  const double c = std::cos(kDeg30), s = std::sin(kDeg30);
+  check_affine(transform_of("rotatex 30"), {{1, 0, 0, 0}, {0, c, -s, 0}, {0, s, c, 0}});
+  check_affine(transform_of("ROTATEY 30"), {{c, 0, s, 0}, {0, 1, 0, 0}, {-s, 0, c, 0}});
+  check_affine(transform_of("rotatez 30"), {{c, -s, 0, 0}, {s, c, 0, 0}, {0, 0, 1, 0}});
+}
+
+TEST_CASE("rotate about an arbitrary axis", "[scene][transform]") {
+  // 120 degrees about (1,1,1) cycles the axes: x -> y, y -> z, z -> x.
+  check_affine(transform_of("rotate 120 1 1 1"), {{0, 0, 1, 0}, {1, 0, 0, 0}, {0, 1, 0, 0}});
+  // The axis need not be unit length, and -90 about -z is +90 about +z.
+  check_affine(transform_of("rotate -90 0 0 -2"), {{0, -1, 0, 0}, {1, 0, 0, 0}, {0, 0, 1, 0}});
+  // 180 degrees about (1,1,0)/sqrt2 swaps x and y and negates z.
+  check_affine(transform_of("rotate 180 3 3 0"), {{0, 1, 0, 0}, {1, 0, 0, 0}, {0, 0, -1, 0}});
+}
+
+TEST_CASE("instances carry M, its inverse and the normal matrix (M^-1)^T", "[scene][transform]") {
+  const clrt::Scene s = load_text("scale 1 2 4\nrotate 35 1 -2 0.5\ntranslate 3 -1 2\ncube\n");
+  const clrt::InstanceSpec& inst = s.instances.at(0);
+  const Mat4 product = inst.inverse * inst.transform;
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j) {
+      CHECK(product.m[i][j] == Approx(i == j ? 1 : 0).margin(1e-12));
+      CHECK(inst.normal_matrix.m[i][j] == inst.inverse.m[j][i]);
+    }
+  // The scale is undone: the inverse maps the world point M(1,1,1) back.
+  const Vec3 back = inst.inverse.transform_point(inst.transform.transform_point({1, 1, 1}));
+  CHECK(back.x == Approx(1));
+  CHECK(back.y == Approx(1));
+  CHECK(back.z == Approx(1));
+}
+
+TEST_CASE("a zero scale factor is an error at that factor", "[scene][transform][errors]") {
+  require_error("scale 1 0 1\n", 1, 9, "scale factor must not be 0");
+  require_error("scale 0.0 1 1\n", 1, 7, "scale factor must not be 0");
+  require_error("scale 1 1 -0\n", 1, 11, "scale factor must not be 0");
+  // Negative factors mirror and are allowed.
+  check_affine(transform_of("scale -1 1 1"), {{-1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}});
+}
+
+TEST_CASE("a zero-length rotation axis is an error at the axis", "[scene][transform][errors]") {
+  require_error("rotate 45 0 0 0\n", 1, 11, "rotation axis must not be a zero-length vector");
+}
+
+TEST_CASE("transform argument counts", "[scene][transform][errors]") {
+  require_error("rotate 45 0 1\n", 1, 14, "rotate takes 4 arguments, found 3");
+  require_error("rotatex\n", 1, 8, "rotatex takes 1 argument, found 0");
+  require_error("rotatey 1 2\n", 1, 11, "found 2");
+  require_error("rotatez 1 2 3\n", 1, 11, "found 3");
+  require_error("translate\n", 1, 10, "found 0");
+}
+
+TEST_CASE("a transform too extreme to invert is an error at the object", "[scene][transform][errors]") {
+  require_error("scale 1e-200 1e-200 1e-200\nscale 1e-200 1e-200 1e-200\n  sphere\n", 3, 3,
+                "cannot be inverted");
+  require_error("scale 1e200 1 1\nscale 1e200 1 1\ncube\n", 3, 1, "cannot be inverted");
+}
