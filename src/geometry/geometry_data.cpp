@@ -1,5 +1,6 @@
 #include "geometry/geometry_data.hpp"
 
+#include "geometry/bvh_scene.hpp"
 #include "geometry/instance_table.hpp"
 #include "geometry/mesh_table.hpp"
 
@@ -38,6 +39,7 @@ GeometryData build_geometry(const Scene& scene) {
     out.instances.push_back(loose_triangle_instance(static_cast<dev::u32>(out.meshes.size() - 1)));
     out.instance_source.push_back(-1);
   }
+  build_scene_bvh(scene, out);
   return out;
 }
 

@@ -1,10 +1,11 @@
 #include "image/atomic_file.hpp"
 
+#include <fcntl.h>
+#include <unistd.h>
+
 #include <atomic>
 #include <cerrno>
 #include <cstring>
-#include <fcntl.h>
-#include <unistd.h>
 
 #include "image/image.hpp"
 
@@ -63,7 +64,8 @@ void AtomicFile::commit() {
 void AtomicFile::fail(const char* step) {
   const int error = errno;  // before discard() or any allocation can change it
   discard();
-  throw ImageError("cannot write " + path_ + ": " + step + " " + temp_path_ + ": " + std::strerror(error));
+  throw ImageError("cannot write " + path_ + ": " + step + " " + temp_path_ + ": " +
+                   std::strerror(error));
 }
 
 void AtomicFile::discard() noexcept {

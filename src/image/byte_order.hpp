@@ -18,7 +18,8 @@ inline std::uint32_t load_u32_be(const std::uint8_t* bytes) {
 }
 
 inline void append_u32_le(std::vector<std::uint8_t>& out, std::uint32_t value) {
-  for (int shift = 0; shift < 32; shift += 8) out.push_back(static_cast<std::uint8_t>(value >> shift));
+  for (int shift = 0; shift < 32; shift += 8)
+    out.push_back(static_cast<std::uint8_t>(value >> shift));
 }
 
 inline void append_f32_le(std::vector<std::uint8_t>& out, float value) {

@@ -12,12 +12,15 @@ struct NamedFormat {
   ImageFormat format;
 };
 
-constexpr NamedFormat kFormats[] = {
-    {".fsf", ImageFormat::Fsf}, {".png", ImageFormat::Png}, {".ppm", ImageFormat::Ppm}, {".pfm", ImageFormat::Pfm}};
+constexpr NamedFormat kFormats[] = {{".fsf", ImageFormat::Fsf},
+                                    {".png", ImageFormat::Png},
+                                    {".ppm", ImageFormat::Ppm},
+                                    {".pfm", ImageFormat::Pfm}};
 
 std::string supported_list() {
   std::string list;
-  for (const NamedFormat& named : kFormats) list += (list.empty() ? "" : ", ") + std::string(named.extension);
+  for (const NamedFormat& named : kFormats)
+    list += (list.empty() ? "" : ", ") + std::string(named.extension);
   return list;
 }
 
@@ -36,10 +39,12 @@ std::string lower_extension(const std::string& path) {
 
 ImageFormat format_from_path(const std::string& path) {
   const std::string extension = lower_extension(path);
-  const auto found = std::find_if(std::begin(kFormats), std::end(kFormats),
-                                  [&](const NamedFormat& named) { return extension == named.extension; });
+  const auto found =
+      std::find_if(std::begin(kFormats), std::end(kFormats),
+                   [&](const NamedFormat& named) { return extension == named.extension; });
   if (found != std::end(kFormats)) return found->format;
-  const std::string what = extension.empty() ? "has no extension" : "has the unknown extension " + extension;
+  const std::string what =
+      extension.empty() ? "has no extension" : "has the unknown extension " + extension;
   throw ImageError(path + ": " + what + "; supported image types: " + supported_list());
 }
 

@@ -22,8 +22,8 @@ std::string hex_bytes(const std::uint8_t* bytes, int count) {
 }
 
 std::string describe_size(const FsfHeader& header) {
-  return std::to_string(header.width) + "x" + std::to_string(header.height) + ", " + std::to_string(header.frames) +
-         " frame(s)";
+  return std::to_string(header.width) + "x" + std::to_string(header.height) + ", " +
+         std::to_string(header.frames) + " frame(s)";
 }
 
 FsfHeader parse_header(const std::uint8_t* raw, const std::string& path) {
@@ -48,29 +48,34 @@ FsfHeader parse_header(const std::uint8_t* raw, const std::string& path) {
 std::optional<std::uint64_t> file_bytes_for(const FsfHeader& header) {
   const auto pixels = image_detail::checked_mul(header.width, header.height);
   const auto frame_bytes = pixels ? image_detail::checked_mul(*pixels, 4) : std::nullopt;
-  const auto all_frames = frame_bytes ? image_detail::checked_mul(*frame_bytes, header.frames) : std::nullopt;
+  const auto all_frames =
+      frame_bytes ? image_detail::checked_mul(*frame_bytes, header.frames) : std::nullopt;
   if (!all_frames || *all_frames > UINT64_MAX - kFsfHeaderBytes) return std::nullopt;
   return *all_frames + kFsfHeaderBytes;
 }
 
 void check_sizes(const FsfHeader& header, std::uint64_t file_bytes, const std::string& path) {
   if (header.width == 0 || header.height == 0 || header.frames == 0)
-    throw ImageError(path + ": invalid FSF header: " + describe_size(header) + "; none may be zero");
+    throw ImageError(path + ": invalid FSF header: " + describe_size(header) +
+                     "; none may be zero");
   if (header.width > INT_MAX || header.height > INT_MAX)
     throw ImageError(path + ": invalid FSF header: " + describe_size(header) + " is too large");
   const auto expected = file_bytes_for(header);
   if (expected == file_bytes) return;
-  const std::string described = expected ? std::to_string(*expected) + " bytes" : "more than 2^64 bytes";
+  const std::string described =
+      expected ? std::to_string(*expected) + " bytes" : "more than 2^64 bytes";
   throw ImageError(path + ": the FSF header describes " + describe_size(header) + ", " + described +
                    ", but the file has " + std::to_string(file_bytes) +
-                   (!expected || file_bytes < *expected ? " (truncated)" : " (extra data after the last frame)"));
+                   (!expected || file_bytes < *expected ? " (truncated)"
+                                                        : " (extra data after the last frame)"));
 }
 
 }  // namespace
 
 std::uint64_t fsf_file_size(const FsfHeader& header) {
   const auto bytes = file_bytes_for(header);
-  if (!bytes) throw ImageError("an FSF file of " + describe_size(header) + " would exceed 2^64 bytes");
+  if (!bytes)
+    throw ImageError("an FSF file of " + describe_size(header) + " would exceed 2^64 bytes");
   return *bytes;
 }
 

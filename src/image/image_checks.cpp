@@ -7,14 +7,15 @@ namespace {
 
 void check_size(int width, int height, const std::string& context) {
   if (width < 1 || height < 1)
-    throw ImageError(context + ": the image is " + std::to_string(width) + "x" + std::to_string(height) +
-                     "; it needs at least one pixel");
+    throw ImageError(context + ": the image is " + std::to_string(width) + "x" +
+                     std::to_string(height) + "; it needs at least one pixel");
 }
 
-void check_length(std::size_t actual, std::size_t expected, const std::string& what, const std::string& context) {
+void check_length(std::size_t actual, std::size_t expected, const std::string& what,
+                  const std::string& context) {
   if (actual != expected)
-    throw ImageError(context + ": " + what + " holds " + std::to_string(actual) + " values, the image size needs " +
-                     std::to_string(expected));
+    throw ImageError(context + ": " + what + " holds " + std::to_string(actual) +
+                     " values, the image size needs " + std::to_string(expected));
 }
 
 std::size_t pixel_count(int width, int height) {
@@ -25,7 +26,8 @@ std::size_t pixel_count(int width, int height) {
 
 void check_image(const FloatImage& image, const std::string& context) {
   check_size(image.width, image.height, context);
-  check_length(image.rgb.size(), 3 * pixel_count(image.width, image.height), "the RGB array", context);
+  check_length(image.rgb.size(), 3 * pixel_count(image.width, image.height), "the RGB array",
+               context);
 }
 
 void check_image(const Rgba8Image& image, const std::string& context) {

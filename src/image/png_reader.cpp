@@ -16,7 +16,10 @@ namespace {
 // Frees libpng's state on every exit between begin_read and finish_read (which frees it itself).
 struct PngReadState {
   png_image image;
-  PngReadState() { std::memset(&image, 0, sizeof image); image.version = PNG_IMAGE_VERSION; }
+  PngReadState() {
+    std::memset(&image, 0, sizeof image);
+    image.version = PNG_IMAGE_VERSION;
+  }
   ~PngReadState() { png_image_free(&image); }
   PngReadState(const PngReadState&) = delete;
   PngReadState& operator=(const PngReadState&) = delete;

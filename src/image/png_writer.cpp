@@ -19,7 +19,8 @@ bool all_opaque(const std::vector<std::uint8_t>& rgba) {
 std::vector<std::uint8_t> without_alpha(const std::vector<std::uint8_t>& rgba) {
   std::vector<std::uint8_t> rgb;
   rgb.reserve(rgba.size() / 4 * 3);
-  for (std::size_t i = 0; i < rgba.size(); i += 4) rgb.insert(rgb.end(), rgba.begin() + i, rgba.begin() + i + 3);
+  for (std::size_t i = 0; i < rgba.size(); i += 4)
+    rgb.insert(rgb.end(), rgba.begin() + i, rgba.begin() + i + 3);
   return rgb;
 }
 

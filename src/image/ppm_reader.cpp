@@ -14,10 +14,12 @@ namespace {
 
 class PpmCursor {
  public:
-  PpmCursor(const std::vector<std::uint8_t>& bytes, const std::string& path) : bytes_(bytes), path_(path) {}
+  PpmCursor(const std::vector<std::uint8_t>& bytes, const std::string& path)
+      : bytes_(bytes), path_(path) {}
 
   [[noreturn]] void fail(const std::string& what) const {
-    throw ImageError(path_ + ": not a readable PPM: " + what + " (at byte " + std::to_string(pos_) + ")");
+    throw ImageError(path_ + ": not a readable PPM: " + what + " (at byte " + std::to_string(pos_) +
+                     ")");
   }
 
   // Whitespace and comments are skipped first; a number may not exceed `max`.
@@ -81,21 +83,24 @@ void read_binary_samples(PpmCursor& cursor, std::uint32_t maxval, std::vector<st
   const std::uint8_t* in = cursor.here();
   for (std::size_t i = 0; i < rgba.size() / 4 * 3; ++i) {
     const std::uint8_t* sample_in = in + i * sample_bytes;
-    const std::uint32_t sample = sample_bytes == 2 ? std::uint32_t{sample_in[0]} << 8 | sample_in[1] : sample_in[0];
+    const std::uint32_t sample =
+        sample_bytes == 2 ? std::uint32_t{sample_in[0]} << 8 | sample_in[1] : sample_in[0];
     if (sample > maxval) cursor.fail("a sample exceeds maxval");
     rgba[i + i / 3] = to_8bit(sample, maxval);
   }
 }
 
 void read_plain_samples(PpmCursor& cursor, std::uint32_t maxval, std::vector<std::uint8_t>& rgba) {
-  for (std::size_t i = 0; i < rgba.size() / 4 * 3; ++i) rgba[i + i / 3] = to_8bit(cursor.number("sample", 0, maxval), maxval);
+  for (std::size_t i = 0; i < rgba.size() / 4 * 3; ++i)
+    rgba[i + i / 3] = to_8bit(cursor.number("sample", 0, maxval), maxval);
   cursor.skip_blanks();
   if (!cursor.at_end()) cursor.fail("extra data after the last sample");
 }
 
 // Checked before allocating, so a tiny file cannot ask for an absurd buffer: a binary raster has
 // an exact size, and a plain one needs at least one byte per sample.
-void check_raster_size(PpmCursor& cursor, bool binary, std::uint32_t maxval, std::uint64_t samples) {
+void check_raster_size(PpmCursor& cursor, bool binary, std::uint32_t maxval,
+                       std::uint64_t samples) {
   const std::uint64_t sample_bytes = maxval > 255 ? 2 : 1;
   const auto needed = image_detail::checked_mul(samples, binary ? sample_bytes : 1);
   const std::uint64_t remaining = cursor.remaining();

@@ -4,10 +4,14 @@ namespace clrt {
 
 Rgba8Image read_image(const std::string& path) {
   switch (format_from_path(path)) {
-    case ImageFormat::Fsf: return read_fsf(path);
-    case ImageFormat::Png: return read_png(path);
-    case ImageFormat::Ppm: return read_ppm(path);
-    case ImageFormat::Pfm: break;
+    case ImageFormat::Fsf:
+      return read_fsf(path);
+    case ImageFormat::Png:
+      return read_png(path);
+    case ImageFormat::Ppm:
+      return read_ppm(path);
+    case ImageFormat::Pfm:
+      break;
   }
   throw ImageError(path + ": reading PFM is not supported; readable image types: .fsf, .png, .ppm");
 }

@@ -47,10 +47,14 @@ void write_image(const std::string& path, const Rgba8Image& image) {
   const ImageFormat format = format_from_path(path);
   image_detail::check_image(image, "cannot write " + path);
   switch (format) {
-    case ImageFormat::Fsf: return image_detail::write_fsf(path, image);
-    case ImageFormat::Png: return encode_and_write(path, encode_png, image);
-    case ImageFormat::Ppm: return encode_and_write(path, encode_ppm, image);
-    case ImageFormat::Pfm: return encode_and_write(path, encode_pfm, to_float(image));
+    case ImageFormat::Fsf:
+      return image_detail::write_fsf(path, image);
+    case ImageFormat::Png:
+      return encode_and_write(path, encode_png, image);
+    case ImageFormat::Ppm:
+      return encode_and_write(path, encode_ppm, image);
+    case ImageFormat::Pfm:
+      return encode_and_write(path, encode_pfm, to_float(image));
   }
 }
 

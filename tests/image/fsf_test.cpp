@@ -1,5 +1,4 @@
 #include <catch2/catch.hpp>
-
 #include <string>
 
 #include "image/image.hpp"
@@ -7,6 +6,7 @@
 
 using clrt::ImageError;
 using clrt::Rgba8Image;
+using clrt::test::concat;
 using clrt::test::read_bytes;
 using clrt::test::TempDir;
 using clrt::test::write_bytes;
@@ -20,17 +20,14 @@ Rgba8Image two_by_two() {
   return {2, 2, {{1, 2, 3, 255, 4, 5, 6, 255, 7, 8, 9, 255, 10, 11, 12, 128}}};
 }
 
-Bytes u32_le(std::uint32_t v) { return {Bytes::value_type(v), Bytes::value_type(v >> 8), Bytes::value_type(v >> 16), Bytes::value_type(v >> 24)}; }
-Bytes u32_be(std::uint32_t v) { return {Bytes::value_type(v >> 24), Bytes::value_type(v >> 16), Bytes::value_type(v >> 8), Bytes::value_type(v)}; }
-
-Bytes concat(std::initializer_list<Bytes> parts) {
-  Bytes all;
-  for (const Bytes& part : parts) all.insert(all.end(), part.begin(), part.end());
-  return all;
+Bytes u32_le(std::uint32_t v) {
+  return {Bytes::value_type(v), Bytes::value_type(v >> 8), Bytes::value_type(v >> 16),
+          Bytes::value_type(v >> 24)};
 }
 
 // A little-endian FSF header followed by `pixel_bytes` bytes of pixels.
-Bytes le_file(std::uint32_t width, std::uint32_t height, std::uint32_t frames, std::size_t pixel_bytes) {
+Bytes le_file(std::uint32_t width, std::uint32_t height, std::uint32_t frames,
+              std::size_t pixel_bytes) {
   Bytes file = concat({u32_le(575), u32_le(width), u32_le(height), u32_le(frames)});
   file.resize(file.size() + pixel_bytes, 0x55);
   return file;
@@ -48,14 +45,16 @@ std::string read_error(const std::string& path) {
 
 }  // namespace
 
-TEST_CASE("FSF is written little-endian: magic, width, height, frames, then RGBA from the top", "[image][fsf]") {
+TEST_CASE("FSF is written little-endian: magic, width, height, frames, then RGBA from the top",
+          "[image][fsf]") {
   TempDir dir;
   const std::string path = dir.file("a.fsf");
   const Rgba8Image image = two_by_two();
   clrt::write_image(path, image);
   const Bytes expected = concat({u32_le(575), u32_le(2), u32_le(2), u32_le(1), image.frames[0]});
   CHECK(read_bytes(path) == expected);
-  CHECK(Bytes{0x3f, 0x02, 0x00, 0x00} == u32_le(575));  // 575 = 0x23f, the independent check of u32_le
+  CHECK(Bytes{0x3f, 0x02, 0x00, 0x00} ==
+        u32_le(575));  // 575 = 0x23f, the independent check of u32_le
 
   const Rgba8Image back = clrt::read_fsf(path);
   CHECK(back.width == 2);
@@ -70,7 +69,7 @@ TEST_CASE("FSF reader accepts a hand-built big-endian file", "[image][fsf]") {
                      0x00, 0x00, 0x00, 0x02,  // width 2
                      0x00, 0x00, 0x00, 0x01,  // height 1
                      0x00, 0x00, 0x00, 0x01,  // frames 1
-                     10, 20, 30, 255, 40, 50, 60, 0});
+                     10,   20,   30,   255,  40, 50, 60, 0});
   const Rgba8Image image = clrt::read_fsf(path);
   CHECK(image.width == 2);
   CHECK(image.height == 1);
@@ -86,7 +85,10 @@ TEST_CASE("FSF reader accepts a hand-built big-endian file", "[image][fsf]") {
 TEST_CASE("FSF round trips an animation frame by frame", "[image][fsf]") {
   TempDir dir;
   const std::string path = dir.file("anim.fsf");
-  const Rgba8Image anim{1, 2, {{1, 1, 1, 255, 2, 2, 2, 255}, {3, 3, 3, 255, 4, 4, 4, 255}, {5, 5, 5, 255, 6, 6, 6, 255}}};
+  const Rgba8Image anim{
+      1,
+      2,
+      {{1, 1, 1, 255, 2, 2, 2, 255}, {3, 3, 3, 255, 4, 4, 4, 255}, {5, 5, 5, 255, 6, 6, 6, 255}}};
   clrt::write_image(path, anim);
   CHECK(read_bytes(path).size() == 16 + 3 * 8);
   const Rgba8Image back = clrt::read_fsf(path);
@@ -101,7 +103,8 @@ TEST_CASE("FSF reader rejects a file shorter or longer than its header says", "[
   const std::string truncated = dir.file("short.fsf"), oversized = dir.file("long.fsf");
   write_bytes(truncated, le_file(2, 2, 1, 15));
   write_bytes(oversized, le_file(2, 2, 1, 17));
-  CHECK_THAT(read_error(truncated), Contains(truncated) && Contains("32 bytes") && Contains("truncated"));
+  CHECK_THAT(read_error(truncated),
+             Contains(truncated) && Contains("32 bytes") && Contains("truncated"));
   CHECK_THAT(read_error(oversized), Contains(oversized) && Contains("extra data"));
   CHECK_THROWS_AS(clrt::read_fsf_header(truncated), ImageError);
   CHECK_THROWS_AS(clrt::read_fsf_header(oversized), ImageError);
@@ -147,10 +150,12 @@ TEST_CASE("FSF header summary lists width, height, frames, byte order and bytes"
   const clrt::FsfHeader header = clrt::read_fsf_header(path);
   CHECK_FALSE(header.big_endian);
   CHECK(clrt::fsf_file_size(header) == 16 + 2 * 24);
-  CHECK(clrt::fsf_summary(header) == "width: 3\nheight: 2\nframes: 2\nbyte order: little-endian\nbytes: 64\n");
+  CHECK(clrt::fsf_summary(header) ==
+        "width: 3\nheight: 2\nframes: 2\nbyte order: little-endian\nbytes: 64\n");
 
   clrt::FsfHeader big{1, 1, 1, true};
-  CHECK(clrt::fsf_summary(big) == "width: 1\nheight: 1\nframes: 1\nbyte order: big-endian\nbytes: 20\n");
+  CHECK(clrt::fsf_summary(big) ==
+        "width: 1\nheight: 1\nframes: 1\nbyte order: big-endian\nbytes: 20\n");
   CHECK_THROWS_AS(clrt::fsf_file_size({0xffffffffu, 0xffffffffu, 0xffffffffu, false}), ImageError);
 }
 

@@ -1,9 +1,9 @@
 // clrt-fsfconv end to end: the built executable, run through the shell.
-#include <catch2/catch.hpp>
+#include <sys/wait.h>
 
+#include <catch2/catch.hpp>
 #include <cstdlib>
 #include <string>
-#include <sys/wait.h>
 
 #include "image/image.hpp"
 #include "test_files.hpp"
@@ -24,26 +24,31 @@ struct RunResult {
 // Runs clrt-fsfconv with `args` (already shell-quoted where needed), capturing both streams.
 RunResult run_fsfconv(const TempDir& dir, const std::string& args) {
   const std::string out_path = dir.file("stdout.txt"), err_path = dir.file("stderr.txt");
-  const std::string command = "'" CLRT_FSFCONV "' " + args + " >'" + out_path + "' 2>'" + err_path + "'";
+  const std::string command =
+      "'" CLRT_FSFCONV "' " + args + " >'" + out_path + "' 2>'" + err_path + "'";
   const int raw = std::system(command.c_str());
   REQUIRE(WIFEXITED(raw));
   const Bytes out = read_bytes(out_path), err = read_bytes(err_path);
-  return {WEXITSTATUS(raw), std::string(out.begin(), out.end()), std::string(err.begin(), err.end())};
+  return {WEXITSTATUS(raw), std::string(out.begin(), out.end()),
+          std::string(err.begin(), err.end())};
 }
 
 std::string quoted(const std::string& path) { return "'" + path + "'"; }
 
 // Opaque pixels with distinct channels: PNG and PPM keep them exactly.
-const Rgba8Image kAnimation{3, 2, {{10, 20, 30, 255, 40, 50, 60, 255, 70, 80, 90, 255,  //
-                                    1, 2, 3, 255, 4, 5, 6, 255, 7, 8, 9, 255},
-                                   {200, 201, 202, 255, 203, 204, 205, 255, 206, 207, 208, 255,  //
-                                    0, 0, 0, 255, 255, 255, 255, 255, 128, 64, 32, 255}}};
+const Rgba8Image kAnimation{3,
+                            2,
+                            {{10, 20, 30, 255, 40, 50, 60, 255, 70, 80, 90, 255,  //
+                              1,  2,  3,  255, 4,  5,  6,  255, 7,  8,  9,  255},
+                             {200, 201, 202, 255, 203, 204, 205, 255, 206, 207, 208, 255,  //
+                              0,   0,   0,   255, 255, 255, 255, 255, 128, 64,  32,  255}}};
 
 }  // namespace
 
 TEST_CASE("clrt-fsfconv: FSF -> PNG -> FSF gives back the same file", "[image][fsfconv]") {
   TempDir dir;
-  const std::string fsf = dir.file("in.fsf"), png = dir.file("mid.png"), back = dir.file("back.fsf");
+  const std::string fsf = dir.file("in.fsf"), png = dir.file("mid.png"),
+                    back = dir.file("back.fsf");
   const Rgba8Image still{3, 2, {kAnimation.frames[0]}};
   clrt::write_image(fsf, still);
   REQUIRE(run_fsfconv(dir, quoted(fsf) + " " + quoted(png)).status == 0);
@@ -79,7 +84,8 @@ TEST_CASE("clrt-fsfconv --info prints the header summary", "[image][fsfconv]") {
 
 TEST_CASE("clrt-fsfconv fails with status 1 on bad files and 2 on bad usage", "[image][fsfconv]") {
   TempDir dir;
-  const std::string anim = dir.file("anim.fsf"), missing = dir.file("missing.fsf"), out = dir.file("out.png");
+  const std::string anim = dir.file("anim.fsf"), missing = dir.file("missing.fsf"),
+                    out = dir.file("out.png");
   clrt::write_image(anim, kAnimation);
 
   RunResult result = run_fsfconv(dir, quoted(missing) + " " + quoted(out));

@@ -1,35 +1,27 @@
 #include <catch2/catch.hpp>
-
 #include <string>
 
 #include "image/image.hpp"
 #include "test_files.hpp"
 
 using clrt::test::bytes_of;
+using clrt::test::concat;
 using clrt::test::read_bytes;
 using clrt::test::TempDir;
 using Bytes = std::vector<std::uint8_t>;
 
-namespace {
-
-Bytes concat(std::initializer_list<Bytes> parts) {
-  Bytes all;
-  for (const Bytes& part : parts) all.insert(all.end(), part.begin(), part.end());
-  return all;
-}
-
-}  // namespace
-
-TEST_CASE("PFM is colour PF, scale -1.0 (little-endian), rows bottom to top, unclamped", "[image][pfm]") {
+TEST_CASE("PFM is colour PF, scale -1.0 (little-endian), rows bottom to top, unclamped",
+          "[image][pfm]") {
   TempDir dir;
   const std::string path = dir.file("a.pfm");
   // Row 0 (top): 1, 2, -3. Row 1 (bottom): 0.5, 100, -0.25.
   clrt::write_image(path, clrt::FloatImage{1, 2, {1.0f, 2.0f, -3.0f, 0.5f, 100.0f, -0.25f}});
   // IEEE 754 single precision, least significant byte first, worked out by hand:
   // 0.5 = 3f000000, 100 = 42c80000, -0.25 = be800000, 1 = 3f800000, 2 = 40000000, -3 = c0400000.
-  const Bytes expected = concat({bytes_of("PF\n1 2\n-1.0\n"),
-                                 {0x00, 0x00, 0x00, 0x3f, 0x00, 0x00, 0xc8, 0x42, 0x00, 0x00, 0x80, 0xbe},
-                                 {0x00, 0x00, 0x80, 0x3f, 0x00, 0x00, 0x00, 0x40, 0x00, 0x00, 0x40, 0xc0}});
+  const Bytes expected =
+      concat({bytes_of("PF\n1 2\n-1.0\n"),
+              {0x00, 0x00, 0x00, 0x3f, 0x00, 0x00, 0xc8, 0x42, 0x00, 0x00, 0x80, 0xbe},
+              {0x00, 0x00, 0x80, 0x3f, 0x00, 0x00, 0x00, 0x40, 0x00, 0x00, 0x40, 0xc0}});
   CHECK(read_bytes(path) == expected);
 }
 
@@ -37,6 +29,7 @@ TEST_CASE("PFM of an 8-bit image holds value / 255 and drops alpha", "[image][pf
   TempDir dir;
   const std::string path = dir.file("a.pfm");
   clrt::write_image(path, clrt::Rgba8Image{1, 1, {{255, 0, 255, 7}}});
-  CHECK(read_bytes(path) == concat({bytes_of("PF\n1 1\n-1.0\n"),
-                                    {0x00, 0x00, 0x80, 0x3f, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x80, 0x3f}}));
+  CHECK(read_bytes(path) ==
+        concat({bytes_of("PF\n1 1\n-1.0\n"),
+                {0x00, 0x00, 0x80, 0x3f, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x80, 0x3f}}));
 }

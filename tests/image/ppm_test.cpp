@@ -1,5 +1,4 @@
 #include <catch2/catch.hpp>
-
 #include <string>
 
 #include "image/image.hpp"
@@ -34,7 +33,8 @@ TEST_CASE("PPM is binary P6, maxval 255, RGB without alpha", "[image][ppm]") {
   TempDir dir;
   const std::string path = dir.file("a.ppm");
   clrt::write_image(path, Rgba8Image{2, 1, {{255, 0, 10, 255, 1, 2, 3, 128}}});
-  CHECK(read_bytes(path) == Bytes{'P', '6', '\n', '2', ' ', '1', '\n', '2', '5', '5', '\n', 255, 0, 10, 1, 2, 3});
+  CHECK(read_bytes(path) ==
+        Bytes{'P', '6', '\n', '2', ' ', '1', '\n', '2', '5', '5', '\n', 255, 0, 10, 1, 2, 3});
 }
 
 TEST_CASE("PPM reader reads back what the writer wrote, opaque", "[image][ppm]") {
@@ -50,17 +50,20 @@ TEST_CASE("PPM reader reads back what the writer wrote, opaque", "[image][ppm]")
 TEST_CASE("PPM reader accepts comments, plain P3 and other maxvals", "[image][ppm]") {
   TempDir dir;
   SECTION("P6 with comments in the header") {
-    const Rgba8Image image = read_ppm_bytes(dir, with_raster("P6 # made by hand\n1 1\n# maxval next\n255\n", {1, 2, 3}));
+    const Rgba8Image image =
+        read_ppm_bytes(dir, with_raster("P6 # made by hand\n1 1\n# maxval next\n255\n", {1, 2, 3}));
     CHECK(image.frames == std::vector<Bytes>{{1, 2, 3, 255}});
   }
   SECTION("P3, maxval 10: 3 -> 76.5 -> 77, 7 -> 178.5 -> 179") {
-    const Rgba8Image image = read_ppm_bytes(dir, bytes_of("P3\n2 1\n10\n0 3 7\n# comment\n10 5 1\n"));
+    const Rgba8Image image =
+        read_ppm_bytes(dir, bytes_of("P3\n2 1\n10\n0 3 7\n# comment\n10 5 1\n"));
     CHECK(image.width == 2);
     CHECK(image.frames == std::vector<Bytes>{{0, 77, 179, 255, 255, 128, 26, 255}});
   }
   SECTION("P6 with maxval above 255 has two big-endian bytes per sample") {
     // 500 / 1000 -> 127.5 -> 128; 1000 -> 255; 0x0102 = 258 -> 65.79 -> 66
-    const Rgba8Image image = read_ppm_bytes(dir, with_raster("P6\n1 1\n1000\n", {0x01, 0xf4, 0x03, 0xe8, 0x01, 0x02}));
+    const Rgba8Image image =
+        read_ppm_bytes(dir, with_raster("P6\n1 1\n1000\n", {0x01, 0xf4, 0x03, 0xe8, 0x01, 0x02}));
     CHECK(image.frames == std::vector<Bytes>{{128, 255, 66, 255}});
   }
 }

@@ -1,5 +1,4 @@
 #include <catch2/catch.hpp>
-
 #include <cmath>
 #include <limits>
 
@@ -46,7 +45,8 @@ TEST_CASE("quantize keeps pixel order and makes every pixel opaque", "[image][qu
   CHECK(out.frames[0] == std::vector<std::uint8_t>{255, 128, 0, 255, 51, 255, 0, 255});
 }
 
-TEST_CASE("quantize rejects an empty image and a pixel array of the wrong length", "[image][quantize]") {
+TEST_CASE("quantize rejects an empty image and a pixel array of the wrong length",
+          "[image][quantize]") {
   CHECK_THROWS_AS(clrt::quantize(FloatImage{0, 0, {}}), ImageError);
   CHECK_THROWS_AS(clrt::quantize(FloatImage{2, 1, {0, 0, 0}}), ImageError);
 }

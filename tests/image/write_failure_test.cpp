@@ -1,23 +1,23 @@
 // Failed writes leave no file and no temporary behind, and never damage the file already at the
 // path. The tests run as root, where permissions stop nothing, so failures come from paths that
 // cannot work for anyone and from resource limits, which bind root too.
-#include <catch2/catch.hpp>
+#include <sys/resource.h>
+#include <sys/stat.h>
 
+#include <catch2/catch.hpp>
 #include <csignal>
 #include <filesystem>
 #include <functional>
 #include <string>
-#include <sys/resource.h>
-#include <sys/stat.h>
 
 #include "image/image.hpp"
 #include "test_files.hpp"
 
+using Catch::Matchers::Contains;
 using clrt::ImageError;
 using clrt::Rgba8Image;
 using clrt::test::read_bytes;
 using clrt::test::TempDir;
-using Catch::Matchers::Contains;
 using Entries = std::set<std::string>;
 
 namespace {
@@ -53,11 +53,13 @@ std::string error_under_limit(int resource, rlim_t limit, const std::function<vo
 
 }  // namespace
 
-TEST_CASE("a write into a directory that does not exist fails and creates nothing", "[image][write]") {
+TEST_CASE("a write into a directory that does not exist fails and creates nothing",
+          "[image][write]") {
   TempDir dir;
   for (const char* name : {"a.fsf", "a.png", "a.ppm", "a.pfm"}) {
     const std::string path = dir.file(std::string("missing/") + name);
-    CHECK_THAT(error_of([&] { clrt::write_image(path, kImage); }), Contains(path) && Contains("No such file"));
+    CHECK_THAT(error_of([&] { clrt::write_image(path, kImage); }),
+               Contains(path) && Contains("No such file"));
   }
   CHECK(dir.entries().empty());
 }
@@ -66,7 +68,8 @@ TEST_CASE("a write over an existing directory fails and leaves no temporary", "[
   TempDir dir;
   const std::string path = dir.file("out.fsf");
   std::filesystem::create_directory(path);
-  CHECK_THAT(error_of([&] { clrt::write_image(path, kImage); }), Contains(path) && Contains("rename"));
+  CHECK_THAT(error_of([&] { clrt::write_image(path, kImage); }),
+             Contains(path) && Contains("rename"));
   CHECK(dir.entries() == Entries{"out.fsf"});
   CHECK(std::filesystem::is_directory(path));
 }
@@ -90,8 +93,10 @@ TEST_CASE("a failed write leaves the previous file intact and no temporary", "[i
     CHECK_THAT(message, Contains(path) && Contains("File too large"));
   }
   SECTION("failing to create the temporary: no file descriptor may be opened") {
-    const std::string message = error_under_limit(RLIMIT_NOFILE, 0, [&] { clrt::write_image(path, second); });
-    CHECK_THAT(message, Contains(path) && Contains("create temporary") && Contains("Too many open files"));
+    const std::string message =
+        error_under_limit(RLIMIT_NOFILE, 0, [&] { clrt::write_image(path, second); });
+    CHECK_THAT(message,
+               Contains(path) && Contains("create temporary") && Contains("Too many open files"));
   }
   CHECK(read_bytes(path) == first);
   CHECK(dir.entries() == Entries{"out.fsf"});
@@ -101,7 +106,8 @@ TEST_CASE("a failed write leaves the previous file intact and no temporary", "[i
   CHECK(dir.entries() == Entries{"out.fsf"});
 }
 
-TEST_CASE("a new file gets the permissions the umask allows, like any created file", "[image][write]") {
+TEST_CASE("a new file gets the permissions the umask allows, like any created file",
+          "[image][write]") {
   TempDir dir;
   const std::string path = dir.file("out.ppm");
   const mode_t old_mask = ::umask(022);
@@ -112,16 +118,25 @@ TEST_CASE("a new file gets the permissions the umask allows, like any created fi
   CHECK((info.st_mode & 0777) == 0644);
 }
 
-TEST_CASE("an unknown extension or an invalid image is refused before any file is touched", "[image][write]") {
+TEST_CASE("an unknown extension or an invalid image is refused before any file is touched",
+          "[image][write]") {
   TempDir dir;
   const std::string unknown = dir.file("out.jpg");
   CHECK_THAT(error_of([&] { clrt::write_image(unknown, kImage); }),
              Contains(unknown) && Contains(".jpg") && Contains(".fsf, .png, .ppm, .pfm"));
-  CHECK_THAT(error_of([&] { clrt::write_image(dir.file("noext"), kImage); }), Contains("no extension"));
-  CHECK_THAT(error_of([&] { clrt::write_image(dir.file("a.fsf"), Rgba8Image{2, 2, {{1, 2, 3, 4}}}); }),
+  CHECK_THAT(error_of([&] { clrt::write_image(dir.file("noext"), kImage); }),
+             Contains("no extension"));
+  CHECK_THAT(error_of([&] {
+               clrt::write_image(dir.file("a.fsf"), Rgba8Image{2, 2, {{1, 2, 3, 4}}});
+             }),
              Contains("a.fsf") && Contains("frame 0"));
-  CHECK_THAT(error_of([&] { clrt::write_image(dir.file("a.png"), Rgba8Image{1, 1, {}}); }), Contains("no frames"));
-  CHECK_THAT(error_of([&] { clrt::write_image(dir.file("a.pfm"), clrt::FloatImage{1, 1, {0.5f}}); }),
+  CHECK_THAT(error_of([&] {
+               clrt::write_image(dir.file("a.png"), Rgba8Image{1, 1, {}});
+             }),
+             Contains("no frames"));
+  CHECK_THAT(error_of([&] {
+               clrt::write_image(dir.file("a.pfm"), clrt::FloatImage{1, 1, {0.5f}});
+             }),
              Contains("RGB array"));
   CHECK(dir.entries().empty());
 }

@@ -3,7 +3,6 @@
 //   clrt-fsfconv --info FILE.fsf      print the FSF header
 // Exit status: 0 success, 1 a file could not be read or written, 2 a usage error.
 #include <CLI/CLI.hpp>
-
 #include <climits>
 #include <iostream>
 #include <optional>
@@ -27,17 +26,21 @@ void convert(const Options& options) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"Convert images between FSF, PNG and PPM by their extensions, or summarise an FSF file.",
-               "clrt-fsfconv"};
+  CLI::App app{
+      "Convert images between FSF, PNG and PPM by their extensions, or summarise an FSF file.",
+      "clrt-fsfconv"};
   Options options;
   CLI::Option* input = app.add_option("input", options.input, "image to read (.fsf, .png, .ppm)");
-  CLI::Option* output = app.add_option("output", options.output, "image to write (.fsf, .png, .ppm, .pfm)");
-  CLI::Option* info = app.add_option("--info", options.info, "print the header of an FSF file instead of converting")
+  CLI::Option* output =
+      app.add_option("output", options.output, "image to write (.fsf, .png, .ppm, .pfm)");
+  CLI::Option* info = app.add_option("--info", options.info,
+                                     "print the header of an FSF file instead of converting")
                           ->excludes(input)
                           ->excludes(output);
-  app.add_option("--frame", options.frame,
-                 "convert only this frame of an animation, counted from 0 (default: all frames into FSF, "
-                 "frame 0 into the other formats)")
+  app.add_option(
+         "--frame", options.frame,
+         "convert only this frame of an animation, counted from 0 (default: all frames into FSF, "
+         "frame 0 into the other formats)")
       ->check(CLI::Range(0, INT_MAX))
       ->excludes(info);
   try {

@@ -1,0 +1,49 @@
+// Axis-aligned boxes in single precision, as the device stores them.
+#pragma once
+
+#include <algorithm>
+#include <limits>
+
+#include "math/mat4.hpp"
+
+namespace clrt {
+
+struct Box {
+  float lo[3] = {kInf, kInf, kInf};
+  float hi[3] = {-kInf, -kInf, -kInf};
+
+  static constexpr float kInf = std::numeric_limits<float>::infinity();
+
+  bool empty() const { return lo[0] > hi[0]; }
+
+  void grow(float x, float y, float z) {
+    const float p[3] = {x, y, z};
+    for (int a = 0; a < 3; ++a) {
+      lo[a] = std::min(lo[a], p[a]);
+      hi[a] = std::max(hi[a], p[a]);
+    }
+  }
+
+  void grow(const Box& b) {
+    for (int a = 0; a < 3; ++a) {
+      lo[a] = std::min(lo[a], b.lo[a]);
+      hi[a] = std::max(hi[a], b.hi[a]);
+    }
+  }
+
+  float center(int axis) const { return 0.5f * (lo[axis] + hi[axis]); }
+
+  // Half the surface area: the SAH only compares areas, so the factor 2 is left out.
+  float half_area() const {
+    if (empty()) return 0.0f;
+    const float x = hi[0] - lo[0], y = hi[1] - lo[1], z = hi[2] - lo[2];
+    return x * y + y * z + z * x;
+  }
+};
+
+// The box of `box` (in object space) after the affine transform `m`, from its eight corners in
+// double precision, rounded outwards and padded so that a single-precision ray-box test in
+// world space does not miss what the object-space test would hit.
+Box transformed_box(const Box& box, const Mat4& m);
+
+}  // namespace clrt

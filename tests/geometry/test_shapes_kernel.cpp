@@ -1,0 +1,206 @@
+#include "test_shapes_kernel.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <sstream>
+
+#include "cl_fixture.hpp"
+
+namespace clrt::test {
+namespace {
+
+// rays: origin (w = tmin), direction (w = tmax); results: normal (w = t), (hit, u, v, 0).
+const char* const kKernels = R"CL(
+#include "geometry/instance.h"
+#include "geometry/shapes.h"
+#include "geometry/triangle.h"
+
+__kernel void cast_canonical(__global const Instance* instances, __global const float4* rays,
+                             uint count, __global float4* results) {
+  const uint i = get_global_id(0);
+  if (i >= count) return;
+  __global const Instance* inst = instances + i;
+  float3 o, d;
+  instance_ray_to_object(inst, rays[2 * i].xyz, rays[2 * i + 1].xyz, &o, &d);
+  float t = rays[2 * i + 1].w;
+  float3 n = (float3)(7.0f, 8.0f, 9.0f);
+  const bool hit = intersect_canonical(inst->shape, inst->cone_r0, inst->cone_r1, o, d,
+                                       rays[2 * i].w, &t, &n);
+  results[2 * i] = (float4)(hit ? instance_normal_to_world(inst, n) : n, t);
+  results[2 * i + 1] = (float4)(hit ? 1.0f : 0.0f, 0.0f, 0.0f, 0.0f);
+}
+
+__kernel void cast_triangles(__global const Instance* instances, __global const Triangle* tris,
+                             uint tri_count, uint stride, __global const float4* rays,
+                             uint count, __global float4* results) {
+  const uint i = get_global_id(0);
+  if (i >= count) return;
+  __global const Instance* inst = instances + i;
+  float3 o, d;
+  instance_ray_to_object(inst, rays[2 * i].xyz, rays[2 * i + 1].xyz, &o, &d);
+  float t = rays[2 * i + 1].w, u = -7.0f, v = -7.0f;
+  float3 n = (float3)(7.0f, 8.0f, 9.0f);
+  bool hit = false;
+  for (uint k = 0; k < tri_count; ++k) {
+    __global const Triangle* tri = tris + i * stride + k;
+    if (intersect_triangle(tri->v0.xyz, tri->v1.xyz, tri->v2.xyz, o, d, rays[2 * i].w, &t, &u, &v)) {
+      hit = true;
+      n = instance_normal_to_world(inst, triangle_normal(tri->v0.xyz, tri->v1.xyz, tri->v2.xyz));
+    }
+  }
+  results[2 * i] = (float4)(n, t);
+  results[2 * i + 1] = (float4)(hit ? 1.0f : 0.0f, u, v, 0.0f);
+}
+)CL";
+
+dev::f4 to_f4(const Vec3& v, double w) {
+  return {static_cast<float>(v.x), static_cast<float>(v.y), static_cast<float>(v.z),
+          static_cast<float>(w)};
+}
+
+dev::Instance instance_of(const Mat4& m, dev::u32 shape, double r0, double r1) {
+  const Mat4 inverse = m.inverse(), normal = inverse.transposed();
+  dev::Instance instance{};
+  for (int row = 0; row < 3; ++row) {
+    instance.world_to_object[row] = to_f4({inverse.m[row][0], inverse.m[row][1], inverse.m[row][2]},
+                                          inverse.m[row][3]);
+    instance.normal_to_world[row] =
+        to_f4({normal.m[row][0], normal.m[row][1], normal.m[row][2]}, 0);
+  }
+  instance.shape = shape;
+  instance.cone_r0 = static_cast<float>(r0);
+  instance.cone_r1 = static_cast<float>(r1);
+  return instance;
+}
+
+std::vector<DeviceHit> run_kernel(const char* name, const std::vector<dev::Instance>& instances,
+                                  const std::vector<WorldRay>& rays,
+                                  const compute::buffer* triangles, int count, int stride) {
+  std::vector<dev::f4> packed;
+  for (const WorldRay& ray : rays) {
+    packed.push_back(to_f4(ray.origin, ray.tmin));
+    packed.push_back(to_f4(ray.dir, ray.tmax));
+  }
+  compute::kernel kernel(test_program(kKernels), name);
+  const compute::buffer instance_buffer = upload(instances), ray_buffer = upload(packed);
+  compute::buffer results = device().allocate(2 * rays.size() * sizeof(dev::f4), "results");
+  int arg = 0;
+  kernel.set_arg(arg++, instance_buffer);
+  if (triangles) {
+    kernel.set_arg(arg++, *triangles);
+    kernel.set_arg(arg++, static_cast<cl_uint>(count));
+    kernel.set_arg(arg++, static_cast<cl_uint>(stride));
+  }
+  kernel.set_arg(arg++, ray_buffer);
+  kernel.set_arg(arg++, static_cast<cl_uint>(rays.size()));
+  kernel.set_arg(arg++, results);
+  run(kernel, rays.size());
+  const std::vector<dev::f4> out = download<dev::f4>(results, 2 * rays.size());
+  std::vector<DeviceHit> hits(rays.size());
+  for (std::size_t i = 0; i < rays.size(); ++i) {
+    const dev::f4 a = out[2 * i], b = out[2 * i + 1];
+    hits[i] = {b.x != 0, a.w, {a.x, a.y, a.z}, b.y, b.z};
+  }
+  return hits;
+}
+
+// Whether the reference's hit or miss survives shrinking and growing the object.
+bool robust(const PlacedShape& shape, const WorldRay& ray, bool hit) {
+  for (const double s : {1 - 1e-3, 1 + 1e-3}) {
+    PlacedShape moved = shape;
+    moved.transform = shape.transform * Mat4::scale({s, s, s});
+    if (reference_intersect(moved, ray).hit != hit) return false;
+  }
+  return true;
+}
+
+std::string describe(const PlacedShape& shape, const WorldRay& ray, const ReferenceHit& expected,
+                     const DeviceHit& got) {
+  std::ostringstream out;
+  out.precision(9);
+  const auto v = [&](const Vec3& p) { out << '(' << p.x << ", " << p.y << ", " << p.z << ')'; };
+  out << "shape " << shape.shape << " r0 " << shape.cone_r0 << " r1 " << shape.cone_r1
+      << "\nM rows:";
+  for (const auto& row : shape.transform.m)
+    out << " [" << row[0] << ' ' << row[1] << ' ' << row[2] << ' ' << row[3] << ']';
+  out << "\nray ";
+  v(ray.origin);
+  out << " + t ";
+  v(ray.dir);
+  out << " in (" << ray.tmin << ", " << ray.tmax << ")\nexpected hit " << expected.hit << " t "
+      << expected.t << " n ";
+  v(expected.normal);
+  out << "\ndevice   hit " << got.hit << " t " << got.t << " n ";
+  v(got.normal);
+  return out.str();
+}
+
+}  // namespace
+
+dev::Instance make_instance(const PlacedShape& shape) {
+  return instance_of(shape.transform, shape.shape, shape.cone_r0, shape.cone_r1);
+}
+
+std::vector<DeviceHit> cast_canonical(const std::vector<PlacedShape>& shapes,
+                                      const std::vector<WorldRay>& rays) {
+  std::vector<dev::Instance> instances;
+  for (const PlacedShape& shape : shapes) instances.push_back(make_instance(shape));
+  return run_kernel("cast_canonical", instances, rays, nullptr, 0, 0);
+}
+
+std::vector<DeviceHit> cast_triangles(const std::vector<Vec3>& triangles, int count, int stride,
+                                      const std::vector<Mat4>& transforms,
+                                      const std::vector<WorldRay>& rays) {
+  std::vector<dev::Instance> instances;
+  for (const Mat4& m : transforms) instances.push_back(instance_of(m, CLRT_SHAPE_MESH, 1, 0));
+  std::vector<dev::Triangle> packed;
+  for (std::size_t i = 0; i + 2 < triangles.size(); i += 3)
+    packed.push_back({to_f4(triangles[i], 0), to_f4(triangles[i + 1], 0), to_f4(triangles[i + 2], 0)});
+  const compute::buffer buffer = upload(packed);
+  return run_kernel("cast_triangles", instances, rays, &buffer, count, stride);
+}
+
+void check_hit(const DeviceHit& got, double t, const Vec3& normal) {
+  REQUIRE(got.hit);
+  CHECK(got.t == Approx(t).margin(1e-5));
+  const Vec3 n = normalize(normal);
+  INFO("normal (" << got.normal.x << ", " << got.normal.y << ", " << got.normal.z << ")");
+  CHECK(length(got.normal - n) <= 1e-5);
+}
+
+void check_miss(const DeviceHit& got, const WorldRay& ray) {
+  CHECK_FALSE(got.hit);
+  CHECK(got.t == static_cast<float>(ray.tmax));
+  CHECK(got.normal == kNormalSentinel);
+}
+
+int compare_with_reference(const std::vector<PlacedShape>& shapes,
+                           const std::vector<WorldRay>& rays) {
+  const std::vector<DeviceHit> device_hits = cast_canonical(shapes, rays);
+  int compared = 0;
+  for (std::size_t i = 0; i < rays.size(); ++i) {
+    const WorldRay& ray = rays[i];
+    const ReferenceHit expected = reference_intersect(shapes[i], ray);
+    const DeviceHit& got = device_hits[i];
+    INFO(describe(shapes[i], ray, expected, got));
+    // Whatever the case, no NaN and no hit outside (tmin, tmax).
+    REQUIRE_FALSE(std::isnan(got.t));
+    REQUIRE_FALSE((std::isnan(got.normal.x) || std::isnan(got.normal.y) || std::isnan(got.normal.z)));
+    if (got.hit) REQUIRE((got.t > ray.tmin && got.t < ray.tmax));
+    if (!robust(shapes[i], ray, expected.hit)) continue;
+    ++compared;
+    REQUIRE(got.hit == expected.hit);
+    if (!got.hit) {
+      check_miss(got, ray);
+      continue;
+    }
+    const double speed = length(ray.dir);
+    CHECK(std::abs(got.t - expected.t) * speed <=
+          1e-4 * (1 + expected.t * speed + length(ray.origin)));
+    if (expected.edge_distance > 1e-3) CHECK(length(got.normal - expected.normal) <= 2e-3);
+  }
+  return compared;
+}
+
+}  // namespace clrt::test

@@ -1,0 +1,157 @@
+#include <catch2/catch.hpp>
+
+#include "scene_test_support.hpp"
+
+using clrt::load_scene;
+using clrt::ShapeKind;
+using clrt::Vec3;
+using clrt::test::load_error_of_file;
+using clrt::test::TempFolder;
+
+namespace {
+
+// A unit square in the xy plane as one quad, counter-clockwise seen from +z, normals +z.
+const char* const kQuadWithNormals =
+    "# quad\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvn 0 0 1\nf 1//1 2//1 3//1 4//1\n";
+
+// Two triangles sharing an edge, no normals; relative indices on the second face.
+const char* const kTwoTrianglesNoNormals =
+    "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nf 1 2 3\nf -3 -1 -2\n";
+
+Vec3 face_normal(const clrt::MeshData& m, std::size_t t) {
+  const Vec3 a = m.positions[m.corners[3 * t]], b = m.positions[m.corners[3 * t + 1]],
+             c = m.positions[m.corners[3 * t + 2]];
+  return cross(b - a, c - a);
+}
+
+// Loads a scene naming `obj_name` written with `obj_text`; returns the error.
+clrt::SceneError mesh_error(const std::string& obj_text, const std::string& scene_text = "\n  mesh m.obj\n") {
+  TempFolder folder;
+  folder.write("m.obj", obj_text);
+  return load_error_of_file(folder.write("scene.ray", scene_text));
+}
+
+}  // namespace
+
+TEST_CASE("a mesh with vertex normals: polygons triangulated, normals kept", "[scene][mesh]") {
+  TempFolder folder;
+  folder.write("quad.obj", kQuadWithNormals);
+  const clrt::Scene s = load_scene(folder.write("scene.ray", "material 1 0 0 .2 .8 0 1 0 0\nmesh quad.obj\n"));
+  REQUIRE(s.meshes.size() == 1);
+  const clrt::MeshData& m = s.meshes[0];
+  CHECK(m.positions.size() == 4);
+  CHECK(m.positions[2] == Vec3{1, 1, 0});
+  REQUIRE(m.corners.size() == 6);
+  for (std::size_t t = 0; t < 2; ++t) {
+    // Both triangles keep the quad's counter-clockwise order: area 0.5 facing +z.
+    const Vec3 n = face_normal(m, t);
+    CHECK(n.x == 0);
+    CHECK(n.y == 0);
+    CHECK(n.z == Approx(1.0));
+  }
+  REQUIRE(m.normals.size() == 1);
+  CHECK(m.normals[0] == Vec3{0, 0, 1});
+  CHECK(m.corner_normals == std::vector<std::uint32_t>(6, 0));
+  REQUIRE(s.instances.size() == 1);
+  CHECK(s.instances[0].shape == ShapeKind::Mesh);
+  CHECK(s.instances[0].mesh == 0);
+  CHECK(s.instances[0].material == 1);
+}
+
+TEST_CASE("a mesh without normals leaves normals and corner_normals empty", "[scene][mesh]") {
+  TempFolder folder;
+  folder.write("tris.obj", kTwoTrianglesNoNormals);
+  const clrt::Scene s = load_scene(folder.write("scene.ray", "mesh tris.obj\n"));
+  const clrt::MeshData& m = s.meshes.at(0);
+  CHECK(m.corners == std::vector<std::uint32_t>{0, 1, 2, 1, 3, 2});
+  CHECK(m.normals.empty());
+  CHECK(m.corner_normals.empty());
+}
+
+TEST_CASE("normals are dropped unless every corner has one", "[scene][mesh]") {
+  TempFolder folder;
+  folder.write("partial.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nvn 0 0 1\nf 1//1 2//1 3//1\nf 2 4 3\n");
+  const clrt::Scene s = load_scene(folder.write("scene.ray", "mesh partial.obj\n"));
+  CHECK(s.meshes.at(0).corners.size() == 6);
+  CHECK(s.meshes.at(0).normals.empty());
+  CHECK(s.meshes.at(0).corner_normals.empty());
+}
+
+TEST_CASE("one mesh file is loaded once and shared by every instance", "[scene][mesh]") {
+  TempFolder folder;
+  folder.write("scenes/models/quad.obj", kQuadWithNormals);
+  folder.write("scenes/models/tris.obj", kTwoTrianglesNoNormals);
+  const clrt::Scene s = load_scene(folder.write(
+      "scenes/many.ray",
+      "mesh models/quad.obj\ntranslate 2 0 0\nmesh ./models/quad.obj\nmesh models/tris.obj\n"
+      "reset\nmesh models/../models/quad.obj\n"));
+  REQUIRE(s.meshes.size() == 2);
+  CHECK(s.meshes[0].path == folder.path("scenes/models/quad.obj"));
+  CHECK(s.meshes[1].path == folder.path("scenes/models/tris.obj"));
+  REQUIRE(s.instances.size() == 4);
+  CHECK(s.instances[0].mesh == 0);
+  CHECK(s.instances[1].mesh == 0);
+  CHECK(s.instances[2].mesh == 1);
+  CHECK(s.instances[3].mesh == 0);
+  CHECK(s.instances[1].transform.m[0][3] == 2);
+  CHECK(s.instances[3].transform.m[0][3] == 0);
+}
+
+TEST_CASE("a quoted mesh path may contain spaces", "[scene][mesh]") {
+  TempFolder folder;
+  folder.write("my models/quad #1.obj", kQuadWithNormals);
+  const clrt::Scene s = load_scene(folder.write("scene.ray", "mesh \"my models/quad #1.obj\" # quoted\n"));
+  CHECK(s.meshes.at(0).corners.size() == 6);
+}
+
+TEST_CASE("a missing mesh file is an error at the mesh command naming the file", "[scene][mesh][errors]") {
+  TempFolder folder;
+  const clrt::SceneError e = load_error_of_file(folder.write("scene.ray", "sphere\n\tmesh gone.obj\n"));
+  CHECK(e.where().line == 2);
+  CHECK(e.where().column == 2);
+  CHECK_THAT(e.message(), Catch::Contains(folder.path("gone.obj") + ": cannot be read"));
+}
+
+TEST_CASE("bad OBJ indices are errors at the mesh command naming the OBJ line", "[scene][mesh][errors]") {
+  const std::string verts = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";  // lines 1-3
+  SECTION("position index past the end") {
+    const clrt::SceneError e = mesh_error(verts + "f 1 2 3\nf 1 2 4\n");
+    CHECK(e.where().line == 2);
+    CHECK(e.where().column == 3);
+    CHECK_THAT(e.message(), Catch::Contains("m.obj:5: vertex index 4 is out of range (the file has 3)"));
+  }
+  SECTION("index 0") {
+    CHECK_THAT(mesh_error(verts + "f 0 1 2\n").message(), Catch::Contains("m.obj:4: vertex index 0"));
+  }
+  SECTION("relative index before the first vertex") {
+    CHECK_THAT(mesh_error(verts + "f -1 -2 -4\n").message(),
+               Catch::Contains("m.obj:4: relative vertex index -4"));
+  }
+  SECTION("normal index past the end") {
+    CHECK_THAT(mesh_error(verts + "vn 0 0 1\nf 1//1 2//1 3//2\n").message(),
+               Catch::Contains("m.obj:5: normal index 2 is out of range (the file has 1)"));
+  }
+  SECTION("a corner that is not an index") {
+    CHECK_THAT(mesh_error(verts + "f 1 2 x\n").message(), Catch::Contains("m.obj:4: bad face corner 'x'"));
+  }
+  SECTION("a face with two corners") {
+    CHECK_THAT(mesh_error(verts + "f 1 2\n").message(), Catch::Contains("m.obj:4: a face needs at least 3"));
+  }
+  SECTION("a vertex defined after the face that uses it is fine") {
+    TempFolder folder;
+    folder.write("m.obj", "v 0 0 0\nv 1 0 0\nf 1 2 3\nv 0 1 0\n");
+    CHECK(load_scene(folder.write("scene.ray", "mesh m.obj\n")).meshes.at(0).corners.size() == 3);
+  }
+}
+
+TEST_CASE("a mesh with no triangles is an error", "[scene][mesh][errors]") {
+  const clrt::SceneError e = mesh_error("# only points\nv 0 0 0\nv 1 0 0\nv 0 1 0\n");
+  CHECK(e.where().line == 2);
+  CHECK_THAT(e.message(), Catch::Contains("m.obj: the mesh has no triangles"));
+  CHECK_THAT(mesh_error("").message(), Catch::Contains("no triangles"));
+}
+
+TEST_CASE("mesh takes one path", "[scene][mesh][errors]") {
+  clrt::test::require_error("mesh\n", 1, 5, "wrong number of arguments");
+  clrt::test::require_error("mesh my model.obj\n", 1, 9, "wrong number of arguments: mesh takes 1 path");
+}

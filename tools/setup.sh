@@ -1,0 +1,43 @@
+#!/usr/bin/env bash
+# Installs the Debian packages clrt needs (only those missing), then configures and builds a
+# Release tree in build/. Idempotent: with everything in place it only runs an incremental build.
+# Usage: bash tools/setup.sh            (as root, or with sudo available)
+set -euo pipefail
+
+cd "$(dirname "${BASH_SOURCE[0]}")/.."
+
+packages=(
+  cmake g++ make                 # the build
+  ocl-icd-opencl-dev             # the OpenCL ICD loader (libOpenCL.so) and its CMake/pkg-config files
+  opencl-headers                 # CL/cl.h
+  pocl-opencl-icd                # PoCL: the CPU OpenCL device clrt runs and is tested on
+  libboost-dev                   # Boost.Compute (header-only) for the host API
+  catch2                         # the test framework (2.13 on Debian 12)
+  libcli11-dev                   # the command line
+  libpng-dev                     # PNG output and input
+  libtinyobjloader-dev           # Wavefront OBJ meshes
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+    missing+=("$p")
+  fi
+done
+
+if ((${#missing[@]})); then
+  echo "setup: installing ${missing[*]}"
+  sudo=()
+  if [[ $(id -u) -ne 0 ]]; then
+    command -v sudo >/dev/null || { echo "setup: run as root to install: ${missing[*]}" >&2; exit 1; }
+    sudo=(sudo)
+  fi
+  export DEBIAN_FRONTEND=noninteractive
+  "${sudo[@]}" apt-get update -q
+  "${sudo[@]}" apt-get install -y -q --no-install-recommends "${missing[@]}"
+fi
+
+if [[ ! -f build/CMakeCache.txt ]]; then
+  cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
+fi
+cmake --build build -j"$(nproc)"
