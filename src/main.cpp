@@ -1,5 +1,7 @@
 // clrt: render a .ray scene with the wavefront OpenCL renderer.
 // Exit codes: 0 success, 1 runtime failure (device, kernel build, output), 2 usage or scene error.
+#include <sys/resource.h>
+
 #include <chrono>
 #include <filesystem>
 #include <iostream>
@@ -62,6 +64,9 @@ int run(const clrt::CliOptions& cli) {
   clrt::write_image(out, image);
   stats.write_seconds = seconds_since(write_start);
   stats.total_seconds = seconds_since(start);
+  struct rusage usage {};
+  getrusage(RUSAGE_SELF, &usage);
+  stats.peak_host_bytes = static_cast<std::uint64_t>(usage.ru_maxrss) * 1024;
   if (cli.stats == clrt::StatsFormat::Text) std::cout << stats.to_text();
   if (cli.stats == clrt::StatsFormat::Json) std::cout << stats.to_json();
   return 0;

@@ -75,7 +75,8 @@ BuildItems::BuildItems(const std::vector<Box>& item_boxes)
     : boxes(item_boxes), centers(3 * item_boxes.size()), order(item_boxes.size()) {
   for (std::size_t i = 0; i < boxes.size(); ++i) {
     order[i] = static_cast<std::uint32_t>(i);
-    for (int a = 0; a < 3; ++a) centers[3 * i + a] = boxes[i].center(a);
+    // An empty box (a mesh without triangles) has no centre; any finite stand-in will do.
+    for (int a = 0; a < 3; ++a) centers[3 * i + a] = boxes[i].empty() ? 0.0f : boxes[i].center(a);
   }
 }
 

@@ -63,7 +63,6 @@ class PpmCursor {
   }
 
   bool at_end() const { return pos_ >= bytes_.size(); }
-  std::size_t pos() const { return pos_; }
   std::size_t remaining() const { return bytes_.size() - pos_; }
   const std::uint8_t* here() const { return bytes_.data() + pos_; }
 

@@ -67,7 +67,7 @@ std::string RenderStats::to_text() const {
       << ", total " << total_seconds << "\n";
   out << "waves:         " << waves << " (restarts after a queue overflow: " << wave_restarts
       << "), wavefront " << wavefront << " rays, device memory " << (device_bytes >> 20)
-      << " MiB\n";
+      << " MiB, peak process memory " << (peak_host_bytes >> 20) << " MiB\n";
   out << "passes:        pass      rays    shadow  max queue  device s\n";
   for (std::size_t i = 0; i < passes.size(); ++i)
     out << "               " << std::setw(4) << i << std::setw(10) << passes[i].rays
@@ -92,6 +92,7 @@ std::string RenderStats::to_json() const {
       << ", \"write\": " << write_seconds << ", \"total\": " << total_seconds
       << "}, \"waves\": " << waves << ", \"wave_restarts\": " << wave_restarts
       << ", \"wavefront\": " << wavefront << ", \"device_bytes\": " << device_bytes
+      << ", \"peak_host_bytes\": " << peak_host_bytes
       << ", \"passes\": [";
   for (std::size_t i = 0; i < passes.size(); ++i)
     out << (i ? ", " : "") << "{\"rays\": " << passes[i].rays << ", \"shadow_rays\": "

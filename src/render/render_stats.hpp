@@ -29,6 +29,7 @@ struct RenderStats {
   std::uint64_t waves = 0, wave_restarts = 0;
   std::uint64_t wavefront = 0;       // rays per queue
   std::uint64_t device_bytes = 0;    // render buffers + scene tables
+  std::uint64_t peak_host_bytes = 0; // the process's peak resident memory
   double load_seconds = 0, bvh_seconds = 0, build_seconds = 0, render_seconds = 0,
          write_seconds = 0, total_seconds = 0;
 

@@ -1,0 +1,47 @@
+/* A ray prepared for BVH box tests, and the test of all of a node's child boxes at once. */
+#ifndef CLRT_GEOMETRY_BVH_RAY_H
+#define CLRT_GEOMETRY_BVH_RAY_H
+#include "shared/bvh.h"
+
+typedef struct BvhRay {
+  float3 o, d;   /* as the shape and triangle routines take them */
+  float3 inv_d;  /* 1 / d, with zero components replaced by a tiny number of the same sign */
+  int neg_x, neg_y, neg_z; /* the ray runs towards -axis: it enters a slab at its max side */
+} BvhRay;
+
+inline BvhRay bvh_ray(float3 o, float3 d) {
+  BvhRay r;
+  r.o = o;
+  r.d = d;
+  /* With an exact zero, a slab plane through the origin would give 0 * inf = NaN. */
+  const float3 tiny = copysign((float3)(1e-30f), d);
+  r.inv_d = 1.0f / select(d, tiny, isless(fabs(d), (float3)(1e-30f)));
+  r.neg_x = r.inv_d.x < 0.0f;
+  r.neg_y = r.inv_d.y < 0.0f;
+  r.neg_z = r.inv_d.z < 0.0f;
+  return r;
+}
+
+/* Slightly more than 1: the far distance is scaled up by a few ulps so that rounding in the
+ * box test cannot cull a box whose primitive the exact test would hit. */
+#define BVH_FAR_SCALE 1.0000004f
+
+/* Bit k set when the ray enters child box k within [tmin, tmax]; *t_enter holds the entry
+ * distances. The near side of each slab is chosen by the ray's sign, so the empty lanes
+ * (min = +inf, max = -inf) give near = +inf, far = -inf and are never entered. */
+inline int bvh_node_test(__global const BvhNode* node, const BvhRay* r, float tmin, float tmax,
+                         float4* t_enter) {
+  const float4 near_x = ((r->neg_x ? node->max_x : node->min_x) - r->o.x) * r->inv_d.x;
+  const float4 far_x = ((r->neg_x ? node->min_x : node->max_x) - r->o.x) * r->inv_d.x;
+  const float4 near_y = ((r->neg_y ? node->max_y : node->min_y) - r->o.y) * r->inv_d.y;
+  const float4 far_y = ((r->neg_y ? node->min_y : node->max_y) - r->o.y) * r->inv_d.y;
+  const float4 near_z = ((r->neg_z ? node->max_z : node->min_z) - r->o.z) * r->inv_d.z;
+  const float4 far_z = ((r->neg_z ? node->min_z : node->max_z) - r->o.z) * r->inv_d.z;
+  const float4 t0 = fmax(fmax(near_x, near_y), fmax(near_z, (float4)(tmin)));
+  const float4 t1 = fmin(fmin(far_x, far_y), fmin(far_z, (float4)(tmax))) * BVH_FAR_SCALE;
+  *t_enter = t0;
+  const int4 bits = isless_equal(t0, t1) & (int4)(1, 2, 4, 8);
+  return bits.x | bits.y | bits.z | bits.w;
+}
+
+#endif

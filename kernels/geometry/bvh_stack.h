@@ -1,0 +1,50 @@
+/* The traversal stack: node and leaf references still to visit, with the distance at which the
+ * ray enters each, so that entries behind the nearest hit found meanwhile are skipped. */
+#ifndef CLRT_GEOMETRY_BVH_STACK_H
+#define CLRT_GEOMETRY_BVH_STACK_H
+#include "shared/bvh.h"
+#include "geometry/bvh_ray.h"
+
+/* An entry that is no node or leaf: the ray leaves a mesh's bottom level for the top level. */
+#define BVH_LEAVE_MESH INT_MIN
+
+typedef struct BvhStack {
+  int ref[CLRT_BVH_STACK_SIZE];   /* BvhNode.child encoding, or BVH_LEAVE_MESH */
+  u32 count[CLRT_BVH_STACK_SIZE]; /* leaf item count */
+  float t[CLRT_BVH_STACK_SIZE];   /* entry distance */
+  int size;
+} BvhStack;
+
+inline void bvh_push(BvhStack* s, int ref, u32 count, float t) {
+  s->ref[s->size] = ref;
+  s->count[s->size] = count;
+  s->t[s->size] = t;
+  ++s->size;
+}
+
+/* Pushes the children of `node` that the ray enters in [tmin, tmax]. When `ordered`, they go
+ * on sorted so that the nearest is popped first: closest-hit searches then find near hits
+ * early and skip what lies behind them. */
+inline void bvh_push_children(BvhStack* s, __global const BvhNode* node, const BvhRay* ray,
+                              float tmin, float tmax, bool ordered) {
+  float4 t_enter;
+  int mask = bvh_node_test(node, ray, tmin, tmax, &t_enter);
+  float t[4];
+  vstore4(t_enter, 0, t);
+  const int base = s->size;
+  while (mask != 0) {
+    const int k = 31 - clz(mask & -mask);
+    mask &= mask - 1;
+    int i = s->size++;
+    for (; ordered && i > base && s->t[i - 1] < t[k]; --i) {
+      s->ref[i] = s->ref[i - 1];
+      s->count[i] = s->count[i - 1];
+      s->t[i] = s->t[i - 1];
+    }
+    s->ref[i] = node->child[k];
+    s->count[i] = node->count[k];
+    s->t[i] = t[k];
+  }
+}
+
+#endif
