@@ -1,6 +1,11 @@
 /* Ray queries against the whole scene: the closest hit and the any-hit (shadow) test.
- * FIRST VERSION: brute force over every instance and every triangle of every mesh, so that
- * the renderer can run while the two-level BVH is being written; it will replace this. */
+ *
+ * The planes are tested in a loop first (they are unbounded); everything else is found through
+ * the two-level BVH of kernels/shared/bvh.h: the top level's leaves are single instances, and a
+ * mesh instance's leaf continues into its mesh's bottom level with the ray mapped into object
+ * space. One stack serves both levels: entering a mesh pushes a marker under the mesh's root,
+ * and popping the marker brings the world ray back. t is the same on both levels because the
+ * mapped direction is not normalised. */
 #ifndef CLRT_GEOMETRY_SCENE_INTERSECT_H
 #define CLRT_GEOMETRY_SCENE_INTERSECT_H
 #include "shared/bvh.h"
@@ -10,40 +15,90 @@
 #include "geometry/triangle.h"
 #include "geometry/instance.h"
 #include "geometry/bvh_hit_record.h"
+#include "geometry/bvh_ray.h"
+#include "geometry/bvh_stack.h"
 
 #define SCENE_PARAMS u32 instance_count, u32 plane_count, __global const Instance* instances, __global const Mesh* meshes, __global const Triangle* triangles, __global const TriangleNormals* triangle_normals, __global const u32* triangle_materials, __global const BvhNode* nodes
 #define SCENE_ARGS instance_count, plane_count, instances, meshes, triangles, triangle_normals, triangle_materials, nodes
 
-/* Updates *best when instance i has a hit with tmin < t < best->t; true when it did. */
-inline bool scene_test_instance(SCENE_PARAMS, u32 i, float3 o, float3 d, float tmin,
-                                HitRecord* best) {
-  __global const Instance* inst = instances + i;
-  float3 oo, od;
+/* Canonical shape instance `index` against the world ray; updates *best on a hit in
+ * (tmin, best->t). */
+inline bool bvh_test_shape(__global const Instance* instances, u32 index, float3 o, float3 d,
+                           float tmin, HitRecord* best) {
+  __global const Instance* inst = instances + index;
+  float3 oo, od, n;
   instance_ray_to_object(inst, o, d, &oo, &od);
+  if (!intersect_canonical(inst->shape, inst->cone_r0, inst->cone_r1, oo, od, tmin, &best->t, &n))
+    return false;
+  best->instance = index;
+  best->object_normal = n;
+  return true;
+}
+
+/* Triangles [first, first + count) of mesh instance `instance` against its object-space ray. */
+inline bool bvh_test_triangles(__global const Triangle* triangles, u32 first, u32 count,
+                               u32 instance, const BvhRay* ray, float tmin, bool any,
+                               HitRecord* best) {
   bool found = false;
-  if (inst->shape != CLRT_SHAPE_MESH) {
-    float3 n;
-    if (intersect_canonical(inst->shape, inst->cone_r0, inst->cone_r1, oo, od, tmin, &best->t, &n)) {
-      best->instance = i;
-      best->object_normal = n;
-      found = true;
-    }
-    return found;
-  }
-  const Mesh mesh = meshes[inst->mesh];
-  for (u32 k = mesh.first_triangle; k < mesh.first_triangle + mesh.triangle_count; ++k) {
+  for (u32 k = first; k < first + count; ++k) {
     const Triangle tri = triangles[k];
     float u, v;
-    if (intersect_triangle(bvh_float3(tri.v0), bvh_float3(tri.v1), bvh_float3(tri.v2), oo, od,
-                           tmin, &best->t, &u, &v)) {
-      best->instance = i;
-      best->triangle = k;
-      best->u = u;
-      best->v = v;
-      found = true;
-    }
+    if (!intersect_triangle(bvh_float3(tri.v0), bvh_float3(tri.v1), bvh_float3(tri.v2), ray->o,
+                            ray->d, tmin, &best->t, &u, &v))
+      continue;
+    best->instance = instance;
+    best->triangle = k;
+    best->u = u;
+    best->v = v;
+    found = true;
+    if (any) break;
   }
   return found;
+}
+
+/* The search behind both queries: hits in (tmin, best->t) go into *best; `any` stops at the
+ * first one. Returns whether anything was hit. */
+inline bool scene_search(SCENE_PARAMS, float3 o, float3 d, float tmin, bool any, HitRecord* best) {
+  for (u32 p = 0; p < plane_count; ++p)
+    if (bvh_test_shape(instances, p, o, d, tmin, best) && any) return true;
+  const BvhRay world = bvh_ray(o, d);
+  BvhRay ray = world;
+  u32 mesh_instance = CLRT_NO_HIT; /* the instance whose bottom level is being traversed */
+  BvhStack stack;
+  stack.size = 0;
+  bvh_push(&stack, 0, 0u, -INFINITY);
+  while (stack.size > 0) {
+    const int top = --stack.size;
+    const int ref = stack.ref[top];
+    if (ref == BVH_LEAVE_MESH) {
+      ray = world;
+      mesh_instance = CLRT_NO_HIT;
+      continue;
+    }
+    if (stack.t[top] >= best->t) continue;
+    if (ref >= 0) {
+      bvh_push_children(&stack, nodes + ref, &ray, tmin, best->t, !any);
+      continue;
+    }
+    const u32 first = ~(u32)ref;
+    bool hit;
+    if (mesh_instance != CLRT_NO_HIT) {
+      hit = bvh_test_triangles(triangles, first, stack.count[top], mesh_instance, &ray, tmin, any,
+                               best);
+    } else if (instances[first].shape != CLRT_SHAPE_MESH) {
+      hit = bvh_test_shape(instances, first, o, d, tmin, best);
+    } else {
+      float3 oo, od;
+      instance_ray_to_object(instances + first, o, d, &oo, &od);
+      ray = bvh_ray(oo, od);
+      mesh_instance = first;
+      bvh_push(&stack, BVH_LEAVE_MESH, 0u, 0.0f);
+      bvh_push(&stack, (int)meshes[instances[first].mesh].root_node, 0u, stack.t[top]);
+      continue;
+    }
+    if (hit && any) return true;
+  }
+  return best->instance != CLRT_NO_HIT;
 }
 
 /* Closest hit with tmin < t < tmax. Fills *hit completely: geometric_normal (world, unit,
@@ -54,19 +109,16 @@ inline bool scene_test_instance(SCENE_PARAMS, u32 i, float3 o, float3 d, float t
  * CLRT_NO_HIT and returns false. */
 inline bool scene_closest_hit(SCENE_PARAMS, float3 o, float3 d, float tmin, float tmax, Hit* hit) {
   HitRecord best = hit_record_none(tmax);
-  for (u32 i = 0; i < instance_count; ++i) scene_test_instance(SCENE_ARGS, i, o, d, tmin, &best);
+  const bool found = scene_search(SCENE_ARGS, o, d, tmin, false, &best);
   hit_record_resolve(&best, instances, meshes, triangles, triangle_normals, triangle_materials, hit);
-  return best.instance != CLRT_NO_HIT;
+  return found;
 }
 
 /* Any hit with tmin <= t < tmax (early exit). */
 inline bool scene_any_hit(SCENE_PARAMS, float3 o, float3 d, float tmin, float tmax) {
-  /* The shape routines accept t > tmin; the next float below tmin makes that t >= tmin. */
-  const float below = nextafter(tmin, -INFINITY);
   HitRecord best = hit_record_none(tmax);
-  for (u32 i = 0; i < instance_count; ++i)
-    if (scene_test_instance(SCENE_ARGS, i, o, d, below, &best)) return true;
-  return false;
+  /* The shape routines accept t > tmin; the next float below tmin makes that t >= tmin. */
+  return scene_search(SCENE_ARGS, o, d, nextafter(tmin, -INFINITY), true, &best);
 }
 
 #endif

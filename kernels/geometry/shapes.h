@@ -39,9 +39,10 @@ inline float3 side_normal(float3 p, float m, float k) {
  * cone that solid is a double cone; between y = -1 and y = 1 only the nappe with R >= 0 lies
  * (the radii are >= 0 there), so the slab that follows removes the other one. */
 inline Span side_span(float3 o, float3 d, float m, float k) {
-  const float r_o = m * o.y + k; /* R at the origin's height; along the ray R = r_o + m d.y t */
-  const float a = d.x * d.x + d.z * d.z - m * m * d.y * d.y;
-  const float b = o.x * d.x + o.z * d.z - m * d.y * r_o;
+  /* Along the ray R = r_o + w t: r_o is R at the origin's height. */
+  const float r_o = m * o.y + k, w = m * d.y;
+  const float a = d.x * d.x + d.z * d.z - w * w;
+  const float b = o.x * d.x + o.z * d.z - w * r_o;
   const float c = o.x * o.x + o.z * o.z - r_o * r_o;
   if (a == 0.0f) {
     /* Parallel to the axis of a cylinder, or to a line of a cone: f is linear or constant. */
@@ -50,17 +51,21 @@ inline Span side_span(float3 o, float3 d, float m, float k) {
     const float3 n = side_normal(o + r * d, m, k);
     return b > 0.0f ? span_make(-INFINITY, n, r, n) : span_make(r, n, INFINITY, n);
   }
-  const float disc = b * b - a * c;
+  /* b^2 - a c rewritten by Lagrange's identity as |r_o d_xz - w o_xz|^2 - (o_xz x d_xz)^2.
+   * Both terms vanish for a line through a cone's apex, where b^2 and a c are large and equal:
+   * their float difference would put the double root off by sqrt(epsilon), not epsilon. */
+  const float2 e = (float2)(r_o * d.x - w * o.x, r_o * d.z - w * o.z);
+  const float across = o.x * d.z - o.z * d.x;
+  const float disc = dot(e, e) - across * across;
   /* No root: f keeps the sign of a (a < 0 only by rounding for a line through the apex). */
   if (disc < 0.0f) return a > 0.0f ? span_empty() : span_all();
   const float2 r = quadratic_roots(a, b, c, disc);
   const float3 n_lo = side_normal(o + r.x * d, m, k), n_hi = side_normal(o + r.y * d, m, k);
   if (a > 0.0f) return span_make(r.x, n_lo, r.y, n_hi);
   /* a < 0: the line is steeper than the cone and crosses both nappes; it is inside the double
-   * cone before r.x and after r.y. Keep the half on the nappe with R >= 0: R = r_o + m d.y t
-   * grows without bound towards t = -infinity when m d.y < 0. */
-  return m * d.y < 0.0f ? span_make(-INFINITY, n_lo, r.x, n_lo)
-                        : span_make(r.y, n_hi, INFINITY, n_hi);
+   * cone before r.x and after r.y. Keep the half on the nappe with R >= 0: R = r_o + w t grows
+   * without bound towards t = -infinity when w < 0. */
+  return w < 0.0f ? span_make(-INFINITY, n_lo, r.x, n_lo) : span_make(r.y, n_hi, INFINITY, n_hi);
 }
 
 /* Radius r0 at y = -1 to r1 at y = 1 (r0, r1 >= 0, not both 0); the caps come from the slab,

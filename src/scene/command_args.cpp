@@ -44,11 +44,11 @@ void CommandArgs::require_count(std::initializer_list<std::size_t> allowed, std:
                                 const std::string& subject) const {
   const std::size_t found = count() - first;
   if (std::find(allowed.begin(), allowed.end(), found) != allowed.end()) return;
-  const std::string message = "wrong number of arguments: " + subject + " takes " +
-                              list_counts(allowed) +
-                              (allowed.size() == 1 && *allowed.begin() == 1 ? " argument" : " arguments") +
-                              (first > 0 ? " after '" + word(first - 1).text + "'" : "") +
-                              ", found " + std::to_string(found);
+  const std::string message =
+      "wrong number of arguments: " + subject + " takes " + list_counts(allowed) +
+      (allowed.size() == 1 && *allowed.begin() == 1 ? " argument" : " arguments") +
+      (first > 0 ? " after '" + word(first - 1).text + "'" : "") + ", found " +
+      std::to_string(found);
   const std::size_t most = *std::max_element(allowed.begin(), allowed.end());
   if (found > most) throw error_at(first + most, message);
   throw error_past_end(message);
@@ -56,8 +56,8 @@ void CommandArgs::require_count(std::initializer_list<std::size_t> allowed, std:
 
 double CommandArgs::number(std::size_t i) const {
   const Word& w = word(i);
-  const ParsedNumber parsed = w.quoted ? ParsedNumber{0, NumberProblem::NotANumber}
-                                       : parse_number(w.text);
+  const ParsedNumber parsed =
+      w.quoted ? ParsedNumber{0, NumberProblem::NotANumber} : parse_number(w.text);
   switch (parsed.problem) {
     case NumberProblem::None:
       return parsed.value;
@@ -86,8 +86,8 @@ Vec3 CommandArgs::nonzero_vec3(std::size_t first, const std::string& what) const
 int CommandArgs::whole_number(std::size_t i, int min, const std::string& what) const {
   const double value = number(i);
   if (value != std::floor(value) || value < min || value > INT_MAX)
-    throw error_at(i, what + " must be a whole number >= " + std::to_string(min) + ", found " +
-                          word(i).text);
+    throw error_at(
+        i, what + " must be a whole number >= " + std::to_string(min) + ", found " + word(i).text);
   return static_cast<int>(value);
 }
 

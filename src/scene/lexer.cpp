@@ -10,7 +10,8 @@ namespace {
 bool is_separator(char c) { return c == ' ' || c == '\t' || c == '\r'; }
 
 // Reads one word starting at `pos` (not a separator, not `#`); advances `pos` past it.
-Word read_word(const std::string& line, std::size_t& pos, int line_number, const std::string& file) {
+Word read_word(const std::string& line, std::size_t& pos, int line_number,
+               const std::string& file) {
   Word word;
   word.column = static_cast<int>(pos) + 1;
   if (line[pos] == '"') {

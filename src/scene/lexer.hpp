@@ -14,7 +14,7 @@ struct Word {
 };
 
 struct Line {
-  int number = 1;  // 1-based
+  int number = 1;           // 1-based
   std::vector<Word> words;  // never empty: blank and comment-only lines are dropped
 };
 

@@ -8,7 +8,7 @@
 namespace clrt {
 namespace {
 
-constexpr std::size_t kKind = 3;       // index of the kind word
+constexpr std::size_t kKind = 3;           // index of the kind word
 constexpr std::size_t kFirst = kKind + 1;  // index of the kind's first argument
 
 void ambient(LightSpec&, const CommandArgs& a) { a.require_count({0}, kFirst, "light"); }
@@ -31,7 +31,8 @@ void spot(LightSpec& light, const CommandArgs& a) {
   const std::size_t angle = kFirst + 6, exponent = kFirst + 7;
   light.angle_degrees = a.number(angle);
   if (light.angle_degrees <= 0 || light.angle_degrees > 180)
-    throw a.error_at(angle, "the spot angle must be > 0 and <= 180 degrees, found " + a.word(angle).text);
+    throw a.error_at(angle,
+                     "the spot angle must be > 0 and <= 180 degrees, found " + a.word(angle).text);
   if (a.count() > exponent) {
     light.exponent = a.number(exponent);
     if (light.exponent < 0)
@@ -46,7 +47,8 @@ void area(LightSpec& light, const CommandArgs& a) {
   light.edge_u = a.nonzero_vec3(kFirst + 3, "the area light's edge u");
   light.edge_v = a.nonzero_vec3(kFirst + 6, "the area light's edge v");
   const std::size_t samples = kFirst + 9;
-  light.samples = a.count() > samples ? a.whole_number(samples, 1, "the number of light samples") : 16;
+  light.samples =
+      a.count() > samples ? a.whole_number(samples, 1, "the number of light samples") : 16;
 }
 
 struct KindEntry {
@@ -56,8 +58,10 @@ struct KindEntry {
 
 const std::map<std::string, KindEntry>& light_kinds() {
   static const std::map<std::string, KindEntry> kinds = {
-      {"ambient", {LightKind::Ambient, ambient}}, {"point", {LightKind::Point, point}},
-      {"directional", {LightKind::Directional, directional}}, {"spot", {LightKind::Spot, spot}},
+      {"ambient", {LightKind::Ambient, ambient}},
+      {"point", {LightKind::Point, point}},
+      {"directional", {LightKind::Directional, directional}},
+      {"spot", {LightKind::Spot, spot}},
       {"area", {LightKind::Area, area}}};
   return kinds;
 }
@@ -70,13 +74,16 @@ bool looks_numeric(const Word& word) {
 // written (as in the lecture's `light 0 6 0 6 0 6 point 3 3 3`, which lost its decimal points).
 const KindEntry& find_kind(const CommandArgs& a) {
   if (a.count() == kKind)
-    throw a.error_past_end("wrong number of arguments: light needs a kind after r g b "
-                           "(ambient, point, directional, spot or area)");
+    throw a.error_past_end(
+        "wrong number of arguments: light needs a kind after r g b "
+        "(ambient, point, directional, spot or area)");
   if (looks_numeric(a.word(kKind))) {
     std::size_t numbers = kKind;
     while (numbers < a.count() && looks_numeric(a.word(numbers))) ++numbers;
-    throw a.error_at(kKind, "wrong number of arguments: light takes 3 numbers (r g b) before its "
-                            "kind, found " + std::to_string(numbers));
+    throw a.error_at(kKind,
+                     "wrong number of arguments: light takes 3 numbers (r g b) before its "
+                     "kind, found " +
+                         std::to_string(numbers));
   }
   const auto entry = light_kinds().find(lower_case(a.word(kKind).text));
   if (entry == light_kinds().end())

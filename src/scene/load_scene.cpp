@@ -28,7 +28,7 @@ std::string read_scene_file(const std::string& path) {
 void apply(LoaderState& state, const Line& line) {
   const CommandArgs args(state.scene.path, line);
   const auto command = command_table().find(args.name());
-  if (command == command_table().end())
+  if (command == command_table().end() || line.words.front().quoted)
     throw SceneError(args.command_location(), "unknown command '" + line.words.front().text + "'");
   command->second(state, args);
 }

@@ -13,9 +13,9 @@ namespace clrt {
 
 struct LoaderState {
   Scene scene;
-  std::string scene_folder;  // mesh paths are relative to it
-  Mat4 transform;            // the current transform M
-  int material = 0;          // the current material: index into scene.materials
+  std::string scene_folder;                 // mesh paths are relative to it
+  Mat4 transform;                           // the current transform M
+  int material = 0;                         // the current material: index into scene.materials
   std::map<std::string, int> mesh_by_path;  // resolved path -> index into scene.meshes
   // The last command that set each camera vector, for errors found only after the whole file.
   std::optional<SourceLocation> eye_set_at, lookat_set_at, up_set_at;

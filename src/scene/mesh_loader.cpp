@@ -16,7 +16,8 @@ namespace {
 
 std::string read_mesh_file(const std::string& path) {
   std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) throw MeshError(path + ": cannot be read (it is a folder)");
+  if (std::filesystem::is_directory(path, ec))
+    throw MeshError(path + ": cannot be read (it is a folder)");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw MeshError(path + ": cannot be read (" + std::strerror(errno) + ")");
   std::ostringstream text;

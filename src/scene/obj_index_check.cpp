@@ -69,11 +69,12 @@ class IndexChecker {
     const std::vector<std::string_view> parts = split(corner, "/");
     if (parts.size() > 3) fail(line, "bad face corner '" + std::string(corner) + "'");
     check_index(parts[0], corner, kPosition, positions_, line);
-    if (parts.size() == 3 && !parts[2].empty()) check_index(parts[2], corner, kNormal, normals_, line);
+    if (parts.size() == 3 && !parts[2].empty())
+      check_index(parts[2], corner, kNormal, normals_, line);
   }
 
-  void check_index(std::string_view text, std::string_view corner, const char* what, long count_so_far,
-                   int line) {
+  void check_index(std::string_view text, std::string_view corner, const char* what,
+                   long count_so_far, int line) {
     long index = 0;
     const auto result = std::from_chars(text.data(), text.data() + text.size(), index);
     if (text.empty() || result.ec != std::errc() || result.ptr != text.data() + text.size())

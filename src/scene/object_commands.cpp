@@ -97,7 +97,8 @@ int mesh_index(LoaderState& s, const CommandArgs& a) {
 void mesh(LoaderState& s, const CommandArgs& a) {
   if (a.count() > 1)
     throw a.error_at(1, "wrong number of arguments: mesh takes 1 path, found " +
-                            std::to_string(a.count()) + " (put a path with spaces in double quotes)");
+                            std::to_string(a.count()) +
+                            " (put a path with spaces in double quotes)");
   a.require_count({1});
   const int index = mesh_index(s, a);
   add_instance(s, a, ShapeKind::Mesh, s.transform).mesh = index;

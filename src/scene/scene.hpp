@@ -55,7 +55,7 @@ struct InstanceSpec {
 struct MeshData {
   std::string path;                  // as resolved against the scene's folder
   std::vector<Vec3> positions;
-  std::vector<Vec3> normals;         // empty, or the file's vertex normals, indexed by corner_normals
+  std::vector<Vec3> normals;         // empty, or the file's normals (see corner_normals)
   std::vector<std::uint32_t> corners;  // 3 per triangle, into `positions`, counter-clockwise
   std::vector<std::uint32_t> corner_normals;  // 3 per triangle into `normals` when normals exist
 };

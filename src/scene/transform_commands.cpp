@@ -20,7 +20,8 @@ void scale(LoaderState& s, const CommandArgs& a) {
   a.require_count({3});
   const Vec3 factors = a.vec3(0);
   for (int i = 0; i < 3; ++i)
-    if (factors[i] == 0) throw a.error_at(static_cast<std::size_t>(i), "a scale factor must not be 0");
+    if (factors[i] == 0)
+      throw a.error_at(static_cast<std::size_t>(i), "a scale factor must not be 0");
   s.transform = Mat4::scale(factors) * s.transform;
 }
 

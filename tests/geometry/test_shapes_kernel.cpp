@@ -2,6 +2,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -105,12 +106,16 @@ std::vector<DeviceHit> run_kernel(const char* name, const std::vector<dev::Insta
   return hits;
 }
 
-// Whether the reference's hit or miss survives shrinking and growing the object.
-bool robust(const PlacedShape& shape, const WorldRay& ray, bool hit) {
+// Whether the reference's answer is stable when the object shrinks or grows by a relative
+// 1e-3: the same hit or miss, and no jump of t (to another surface, or past a cone's apex,
+// where even the double-precision reference is unreliable).
+bool well_conditioned(const PlacedShape& shape, const WorldRay& ray, const ReferenceHit& exact) {
   for (const double s : {1 - 1e-3, 1 + 1e-3}) {
     PlacedShape moved = shape;
     moved.transform = shape.transform * Mat4::scale({s, s, s});
-    if (reference_intersect(moved, ray).hit != hit) return false;
+    const ReferenceHit hit = reference_intersect(moved, ray);
+    if (hit.hit != exact.hit) return false;
+    if (hit.hit && std::abs(hit.t - exact.t) * length(ray.dir) > 0.1) return false;
   }
   return true;
 }
@@ -137,6 +142,10 @@ std::string describe(const PlacedShape& shape, const WorldRay& ray, const Refere
 }
 
 }  // namespace
+
+Vec3 round_to_float(const Vec3& v) {
+  return {static_cast<float>(v.x), static_cast<float>(v.y), static_cast<float>(v.z)};
+}
 
 dev::Instance make_instance(const PlacedShape& shape) {
   return instance_of(shape.transform, shape.shape, shape.cone_r0, shape.cone_r1);
@@ -188,16 +197,19 @@ int compare_with_reference(const std::vector<PlacedShape>& shapes,
     REQUIRE_FALSE(std::isnan(got.t));
     REQUIRE_FALSE((std::isnan(got.normal.x) || std::isnan(got.normal.y) || std::isnan(got.normal.z)));
     if (got.hit) REQUIRE((got.t > ray.tmin && got.t < ray.tmax));
-    if (!robust(shapes[i], ray, expected.hit)) continue;
+    if (!well_conditioned(shapes[i], ray, expected)) continue;
     ++compared;
     REQUIRE(got.hit == expected.hit);
     if (!got.hit) {
       check_miss(got, ray);
       continue;
     }
+    // Float rounding moves the surface by about 1e-7 of the scene's size across itself;
+    // along the ray that is 1 / cos(incidence) times more.
     const double speed = length(ray.dir);
+    const double incidence = std::abs(dot(expected.normal, ray.dir)) / speed;
     CHECK(std::abs(got.t - expected.t) * speed <=
-          1e-4 * (1 + expected.t * speed + length(ray.origin)));
+          1e-5 * (1 + expected.t * speed + length(ray.origin)) / std::max(incidence, 1e-3));
     if (expected.edge_distance > 1e-3) CHECK(length(got.normal - expected.normal) <= 2e-3);
   }
   return compared;

@@ -11,6 +11,9 @@
 
 namespace clrt::test {
 
+// v with each component rounded to float: rays the host and the device see alike.
+Vec3 round_to_float(const Vec3& v);
+
 // The instance the renderer would build for `shape` (rows of M^-1 and of (M^-1)^T).
 dev::Instance make_instance(const PlacedShape& shape);
 

@@ -75,8 +75,10 @@ TEST_CASE("maxdepth must be a whole number >= 0", "[scene][camera][errors]") {
   require_error("maxdepth 0.5\n", 1, 10, "whole number >= 0");
 }
 
-TEST_CASE("eye equal to lookat is an error at the later of the two commands", "[scene][camera][errors]") {
-  require_error("eye 1 2 3\nsphere\nlookat 1 2 3\nplane\n", 3, 1, "eye and lookat are the same point");
+TEST_CASE("eye equal to lookat is an error at the later of the two commands",
+          "[scene][camera][errors]") {
+  require_error("eye 1 2 3\nsphere\nlookat 1 2 3\nplane\n", 3, 1,
+                "eye and lookat are the same point");
   require_error("lookat 0 0 5\nsphere\n  eye 0 0 5\n", 3, 3, "same point");
   // The default lookat is the origin.
   require_error("sphere\neye 0 0 0\n", 2, 1, "same point");

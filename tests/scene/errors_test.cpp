@@ -18,6 +18,7 @@ TEST_CASE("the error text is FILE:LINE:COLUMN: error: MESSAGE", "[scene][errors]
 TEST_CASE("an unknown command is reported at the command word", "[scene][errors]") {
   require_error("# comment\n\n\tspheres\n", 3, 2, "unknown command 'spheres'");
   require_error("eye 0 0 5\n1 2 3\n", 2, 1, "unknown command '1'");
+  require_error("\"sphere\"\n", 1, 1, "unknown command 'sphere'");
 }
 
 TEST_CASE("a word that is not a number is reported at that word", "[scene][errors]") {
@@ -28,7 +29,8 @@ TEST_CASE("a word that is not a number is reported at that word", "[scene][error
   require_error("fov \"45\"\n", 1, 5, "expected a number");
 }
 
-TEST_CASE("NaN, infinities and overflowing literals are rejected at their word", "[scene][errors]") {
+TEST_CASE("NaN, infinities and overflowing literals are rejected at their word",
+          "[scene][errors]") {
   require_error("translate 0 nan 0\n", 1, 13, "not a finite number");
   require_error("background 0 0 -Inf\n", 1, 16, "not a finite number");
   require_error("scale 1 1 infinity\n", 1, 11, "not a finite number");

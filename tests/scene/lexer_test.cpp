@@ -1,6 +1,7 @@
+#include "scene/lexer.hpp"
+
 #include <catch2/catch.hpp>
 
-#include "scene/lexer.hpp"
 #include "scene/source_location.hpp"
 
 using clrt::Line;

@@ -22,8 +22,8 @@ TEST_CASE("ambient, point and directional lights", "[scene][lights]") {
 }
 
 TEST_CASE("spot lights, with and without an exponent", "[scene][lights]") {
-  const clrt::Scene s = load_text(
-      "light 1 1 1 spot 0 4 0 0 -2 0 30\nlight 1 1 1 spot 1 2 3 1 0 0 180 2.5\n");
+  const clrt::Scene s =
+      load_text("light 1 1 1 spot 0 4 0 0 -2 0 30\nlight 1 1 1 spot 1 2 3 1 0 0 180 2.5\n");
   REQUIRE(s.lights.size() == 2);
   CHECK(s.lights[0].kind == LightKind::Spot);
   CHECK(s.lights[0].position == Vec3{0, 4, 0});
@@ -35,8 +35,8 @@ TEST_CASE("spot lights, with and without an exponent", "[scene][lights]") {
 }
 
 TEST_CASE("area lights, with and without a sample count", "[scene][lights]") {
-  const clrt::Scene s = load_text(
-      "light 3 3 3 area -1 4 -1 2 0 0 0 0 2\nlight 1 1 1 area 0 0 0 1 0 0 0 1 0 9\n");
+  const clrt::Scene s =
+      load_text("light 3 3 3 area -1 4 -1 2 0 0 0 0 2\nlight 1 1 1 area 0 0 0 1 0 0 0 1 0 9\n");
   REQUIRE(s.lights.size() == 2);
   CHECK(s.lights[0].kind == LightKind::Area);
   CHECK(s.lights[0].position == Vec3{-1, 4, -1});
@@ -54,8 +54,9 @@ TEST_CASE("lights are not moved by the current transform", "[scene][lights]") {
 TEST_CASE("the lecture's unrepaired light line is a wrong argument count at its 4th number",
           "[scene][lights][errors]") {
   // light 0 6 0 6 0 6 point 3 3 3: six numbers before the kind; the 4th (column 13) is extra.
-  require_error("eye 0 0 5\nlight 0 6 0 6 0 6 point 3 3 3\n", 2, 13,
-                "wrong number of arguments: light takes 3 numbers (r g b) before its kind, found 6");
+  require_error(
+      "eye 0 0 5\nlight 0 6 0 6 0 6 point 3 3 3\n", 2, 13,
+      "wrong number of arguments: light takes 3 numbers (r g b) before its kind, found 6");
 }
 
 TEST_CASE("light kind and colour errors", "[scene][lights][errors]") {
@@ -72,20 +73,27 @@ TEST_CASE("argument counts after the light kind", "[scene][lights][errors]") {
   require_error("light 1 1 1 ambient 0\n", 1, 21, "takes 0 arguments after 'ambient', found 1");
   require_error("light 1 1 1 point 0 0\n", 1, 22, "takes 3 arguments after 'point', found 2");
   require_error("light 1 1 1 directional 0 -1 0 1\n", 1, 32, "found 4");
-  require_error("light 1 1 1 spot 0 0 0 0 -1 0\n", 1, 30, "takes 7 or 8 arguments after 'spot', found 6");
+  require_error("light 1 1 1 spot 0 0 0 0 -1 0\n", 1, 30,
+                "takes 7 or 8 arguments after 'spot', found 6");
   require_error("light 1 1 1 spot 0 0 0 0 -1 0 30 1 1\n", 1, 36, "found 9");
-  require_error("light 1 1 1 area 0 0 0 1 0 0 0 1\n", 1, 33, "takes 9 or 10 arguments after 'area'");
+  require_error("light 1 1 1 area 0 0 0 1 0 0 0 1\n", 1, 33,
+                "takes 9 or 10 arguments after 'area'");
   require_error("light 1 1 1 area 0 0 0 1 0 0 0 1 0 4 4\n", 1, 38, "found 11");
 }
 
 TEST_CASE("light range rules", "[scene][lights][errors]") {
-  require_error("light 1 1 1 directional 0 0 0\n", 1, 25, "light direction must not be a zero-length vector");
-  require_error("light 1 1 1 spot 0 4 0 0 0 0 30\n", 1, 24, "spot axis must not be a zero-length vector");
+  require_error("light 1 1 1 directional 0 0 0\n", 1, 25,
+                "light direction must not be a zero-length vector");
+  require_error("light 1 1 1 directional 1e200 0 0\n", 1, 25, "light direction is too long");
+  require_error("light 1 1 1 spot 0 4 0 0 0 0 30\n", 1, 24,
+                "spot axis must not be a zero-length vector");
   require_error("light 1 1 1 spot 0 4 0 0 -1 0 0\n", 1, 31, "spot angle must be > 0 and <= 180");
   require_error("light 1 1 1 spot 0 4 0 0 -1 0 180.5\n", 1, 31, "spot angle");
   require_error("light 1 1 1 spot 0 4 0 0 -1 0 45 -1\n", 1, 34, "spot exponent must be >= 0");
-  require_error("light 1 1 1 area 0 4 0 0 0 0 0 0 1\n", 1, 24, "edge u must not be a zero-length vector");
-  require_error("light 1 1 1 area 0 4 0 1 0 0 0 0 0\n", 1, 30, "edge v must not be a zero-length vector");
+  require_error("light 1 1 1 area 0 4 0 0 0 0 0 0 1\n", 1, 24,
+                "edge u must not be a zero-length vector");
+  require_error("light 1 1 1 area 0 4 0 1 0 0 0 0 0\n", 1, 30,
+                "edge v must not be a zero-length vector");
   require_error("light 1 1 1 area 0 4 0 1 0 0 0 0 1 0\n", 1, 36, "whole number >= 1");
   require_error("light 1 1 1 area 0 4 0 1 0 0 0 0 1 2.5\n", 1, 36, "whole number >= 1");
 }

@@ -1,8 +1,7 @@
-#include <catch2/catch.hpp>
-
-#include <cmath>
-
 #include "math/mat4.hpp"
+
+#include <catch2/catch.hpp>
+#include <cmath>
 
 using clrt::Mat4;
 using clrt::Vec3;

@@ -32,8 +32,8 @@ TEST_CASE("the default material is 1 1 1 0.2 0.8 0 1 0 0 1 at index 0", "[scene]
 
 TEST_CASE("the three material spellings", "[scene][material]") {
   const clrt::Scene s = load_text(
-      "material 0 1 0 .3 .7 0 0 0 0\n"                  // 9: r g b ka kd ks n kr kt
-      "material 1 0 0 0.3 .7 .5 100 .5 0 1.5\n"        // 10: ... ior
+      "material 0 1 0 .3 .7 0 0 0 0\n"                   // 9: r g b ka kd ks n kr kt
+      "material 1 0 0 0.3 .7 .5 100 .5 0 1.5\n"          // 10: ... ior
       "material 0 0 1 0.25 0.3 .7 .5 100 .5 .25 1.33\n"  // 11: r g b a ka kd ks n kr kt ior
   );
   REQUIRE(s.materials.size() == 4);
@@ -49,12 +49,14 @@ TEST_CASE("surface is a synonym of material", "[scene][material]") {
 }
 
 TEST_CASE("an ior <= 0 means 1", "[scene][material]") {
-  const clrt::Scene s = load_text("material 1 1 1 .2 .8 0 1 0 0 0\nmaterial 1 1 1 .2 .8 0 1 0 0 -2\n");
+  const clrt::Scene s =
+      load_text("material 1 1 1 .2 .8 0 1 0 0 0\nmaterial 1 1 1 .2 .8 0 1 0 0 -2\n");
   CHECK(s.materials[1].ior == 1);
   CHECK(s.materials[2].ior == 1);
 }
 
-TEST_CASE("objects take the current material; each material command appends one", "[scene][material]") {
+TEST_CASE("objects take the current material; each material command appends one",
+          "[scene][material]") {
   const clrt::Scene s = load_text(
       "sphere\nmaterial 1 0 0 .2 .8 0 1 0 0\nplane\ncube\nmaterial 0 1 0 .2 .8 0 1 0 0\n"
       "triangle 0 0 0 1 0 0 0 1 0\nmaterial 1 0 0 .2 .8 0 1 0 0\ncone\n");

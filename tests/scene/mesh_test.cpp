@@ -24,11 +24,11 @@ Vec3 face_normal(const clrt::MeshData& m, std::size_t t) {
   return cross(b - a, c - a);
 }
 
-// Loads a scene naming `obj_name` written with `obj_text`; returns the error.
-clrt::SceneError mesh_error(const std::string& obj_text, const std::string& scene_text = "\n  mesh m.obj\n") {
+// Writes `obj_text` to m.obj, loads a scene whose line 2 is "  mesh m.obj", returns the error.
+clrt::SceneError mesh_error(const std::string& obj_text) {
   TempFolder folder;
   folder.write("m.obj", obj_text);
-  return load_error_of_file(folder.write("scene.ray", scene_text));
+  return load_error_of_file(folder.write("scene.ray", "\n  mesh m.obj\n"));
 }
 
 }  // namespace
@@ -36,7 +36,8 @@ clrt::SceneError mesh_error(const std::string& obj_text, const std::string& scen
 TEST_CASE("a mesh with vertex normals: polygons triangulated, normals kept", "[scene][mesh]") {
   TempFolder folder;
   folder.write("quad.obj", kQuadWithNormals);
-  const clrt::Scene s = load_scene(folder.write("scene.ray", "material 1 0 0 .2 .8 0 1 0 0\nmesh quad.obj\n"));
+  const clrt::Scene s =
+      load_scene(folder.write("scene.ray", "material 1 0 0 .2 .8 0 1 0 0\nmesh quad.obj\n"));
   REQUIRE(s.meshes.size() == 1);
   const clrt::MeshData& m = s.meshes[0];
   CHECK(m.positions.size() == 4);
@@ -70,7 +71,8 @@ TEST_CASE("a mesh without normals leaves normals and corner_normals empty", "[sc
 
 TEST_CASE("normals are dropped unless every corner has one", "[scene][mesh]") {
   TempFolder folder;
-  folder.write("partial.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nvn 0 0 1\nf 1//1 2//1 3//1\nf 2 4 3\n");
+  folder.write("partial.obj",
+               "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nvn 0 0 1\nf 1//1 2//1 3//1\nf 2 4 3\n");
   const clrt::Scene s = load_scene(folder.write("scene.ray", "mesh partial.obj\n"));
   CHECK(s.meshes.at(0).corners.size() == 6);
   CHECK(s.meshes.at(0).normals.empty());
@@ -100,28 +102,34 @@ TEST_CASE("one mesh file is loaded once and shared by every instance", "[scene][
 TEST_CASE("a quoted mesh path may contain spaces", "[scene][mesh]") {
   TempFolder folder;
   folder.write("my models/quad #1.obj", kQuadWithNormals);
-  const clrt::Scene s = load_scene(folder.write("scene.ray", "mesh \"my models/quad #1.obj\" # quoted\n"));
+  const clrt::Scene s =
+      load_scene(folder.write("scene.ray", "mesh \"my models/quad #1.obj\" # quoted\n"));
   CHECK(s.meshes.at(0).corners.size() == 6);
 }
 
-TEST_CASE("a missing mesh file is an error at the mesh command naming the file", "[scene][mesh][errors]") {
+TEST_CASE("a missing mesh file is an error at the mesh command naming the file",
+          "[scene][mesh][errors]") {
   TempFolder folder;
-  const clrt::SceneError e = load_error_of_file(folder.write("scene.ray", "sphere\n\tmesh gone.obj\n"));
+  const clrt::SceneError e =
+      load_error_of_file(folder.write("scene.ray", "sphere\n\tmesh gone.obj\n"));
   CHECK(e.where().line == 2);
   CHECK(e.where().column == 2);
   CHECK_THAT(e.message(), Catch::Contains(folder.path("gone.obj") + ": cannot be read"));
 }
 
-TEST_CASE("bad OBJ indices are errors at the mesh command naming the OBJ line", "[scene][mesh][errors]") {
+TEST_CASE("bad OBJ indices are errors at the mesh command naming the OBJ line",
+          "[scene][mesh][errors]") {
   const std::string verts = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";  // lines 1-3
   SECTION("position index past the end") {
     const clrt::SceneError e = mesh_error(verts + "f 1 2 3\nf 1 2 4\n");
     CHECK(e.where().line == 2);
     CHECK(e.where().column == 3);
-    CHECK_THAT(e.message(), Catch::Contains("m.obj:5: vertex index 4 is out of range (the file has 3)"));
+    CHECK_THAT(e.message(),
+               Catch::Contains("m.obj:5: vertex index 4 is out of range (the file has 3)"));
   }
   SECTION("index 0") {
-    CHECK_THAT(mesh_error(verts + "f 0 1 2\n").message(), Catch::Contains("m.obj:4: vertex index 0"));
+    CHECK_THAT(mesh_error(verts + "f 0 1 2\n").message(),
+               Catch::Contains("m.obj:4: vertex index 0"));
   }
   SECTION("relative index before the first vertex") {
     CHECK_THAT(mesh_error(verts + "f -1 -2 -4\n").message(),
@@ -132,10 +140,12 @@ TEST_CASE("bad OBJ indices are errors at the mesh command naming the OBJ line", 
                Catch::Contains("m.obj:5: normal index 2 is out of range (the file has 1)"));
   }
   SECTION("a corner that is not an index") {
-    CHECK_THAT(mesh_error(verts + "f 1 2 x\n").message(), Catch::Contains("m.obj:4: bad face corner 'x'"));
+    CHECK_THAT(mesh_error(verts + "f 1 2 x\n").message(),
+               Catch::Contains("m.obj:4: bad face corner 'x'"));
   }
   SECTION("a face with two corners") {
-    CHECK_THAT(mesh_error(verts + "f 1 2\n").message(), Catch::Contains("m.obj:4: a face needs at least 3"));
+    CHECK_THAT(mesh_error(verts + "f 1 2\n").message(),
+               Catch::Contains("m.obj:4: a face needs at least 3"));
   }
   SECTION("a vertex defined after the face that uses it is fine") {
     TempFolder folder;
@@ -153,5 +163,6 @@ TEST_CASE("a mesh with no triangles is an error", "[scene][mesh][errors]") {
 
 TEST_CASE("mesh takes one path", "[scene][mesh][errors]") {
   clrt::test::require_error("mesh\n", 1, 5, "wrong number of arguments");
-  clrt::test::require_error("mesh my model.obj\n", 1, 9, "wrong number of arguments: mesh takes 1 path");
+  clrt::test::require_error("mesh my model.obj\n", 1, 9,
+                            "wrong number of arguments: mesh takes 1 path");
 }

@@ -1,6 +1,6 @@
-#include <catch2/catch.hpp>
-
 #include "scene/number.hpp"
+
+#include <catch2/catch.hpp>
 
 using clrt::NumberProblem;
 using clrt::parse_number;

@@ -27,7 +27,8 @@ TEST_CASE("an instance remembers where it was written", "[scene][objects]") {
   CHECK_THAT(s.instances.at(0).where.file, Catch::EndsWith("scene.ray"));
 }
 
-TEST_CASE("sphere x y z r is the sphere of radius r at (x,y,z), then placed by M", "[scene][objects]") {
+TEST_CASE("sphere x y z r is the sphere of radius r at (x,y,z), then placed by M",
+          "[scene][objects]") {
   const clrt::Scene s = load_text("translate 1 0 0\nsphere 0 2 0 3\n");
   const clrt::Mat4& m = s.instances.at(0).transform;
   // M * T(0,2,0) * S(3): centre (1, 2, 0), radius 3.

@@ -1,5 +1,4 @@
 #include <catch2/catch.hpp>
-
 #include <cmath>
 
 #include "scene_test_support.hpp"
@@ -33,7 +32,8 @@ const double kDeg30 = M_PI / 6;
 
 }  // namespace
 
-TEST_CASE("each transform is applied after the earlier ones (the lecture's example)", "[scene][transform]") {
+TEST_CASE("each transform is applied after the earlier ones (the lecture's example)",
+          "[scene][transform]") {
   // scale .5 then translate -2 -.5 0: centre (-2, -0.5, 0), radius 0.5.
   check_affine(transform_of("scale .5 .5 .5\ntranslate -2 -.5 0"),
                {{0.5, 0, 0, -2}, {0, 0.5, 0, -0.5}, {0, 0, 0.5, 0}});
@@ -112,7 +112,8 @@ TEST_CASE("transform argument counts", "[scene][transform][errors]") {
   require_error("translate\n", 1, 10, "found 0");
 }
 
-TEST_CASE("a transform too extreme to invert is an error at the object", "[scene][transform][errors]") {
+TEST_CASE("a transform too extreme to invert is an error at the object",
+          "[scene][transform][errors]") {
   require_error("scale 1e-200 1e-200 1e-200\nscale 1e-200 1e-200 1e-200\n  sphere\n", 3, 3,
                 "cannot be inverted");
   require_error("scale 1e200 1 1\nscale 1e200 1 1\ncube\n", 3, 1, "cannot be inverted");

@@ -1,0 +1,177 @@
+// The host side of the acceleration structure: the geometry tables and the BVH's invariants.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <random>
+
+#include "bvh_test_scenes.hpp"
+#include "bvh_tree_check.hpp"
+#include "geometry/bvh_builder.hpp"
+#include "geometry/geometry_data.hpp"
+
+using namespace clrt;
+using namespace clrt::bvhtest;
+
+namespace {
+
+Vec3 to_vec(const dev::f4& v) { return {v.x, v.y, v.z}; }
+
+std::vector<Vec3> triangle_points(const GeometryData& g, std::uint32_t t) {
+  return {to_vec(g.triangles[t].v0), to_vec(g.triangles[t].v1), to_vec(g.triangles[t].v2)};
+}
+
+// Points on the surface of a canonical shape (or a mesh's vertices), carried to world space.
+std::vector<Vec3> instance_points(const Scene& scene, const GeometryData& g, std::uint32_t i) {
+  const int source = g.instance_source[i];
+  const Mat4 m = source < 0 ? Mat4::identity() : scene.instances[source].transform;
+  std::vector<Vec3> object;
+  if (g.instances[i].shape == CLRT_SHAPE_MESH) {
+    const dev::Mesh& mesh = g.meshes[g.instances[i].mesh];
+    for (std::uint32_t t = mesh.first_triangle; t < mesh.first_triangle + mesh.triangle_count; ++t)
+      for (const Vec3& p : triangle_points(g, t)) object.push_back(p);
+  } else {
+    const InstanceSpec& s = scene.instances[source];
+    for (int k = 0; k < 64; ++k) {
+      const double phi = 2 * M_PI * k / 64;
+      const double c = std::cos(phi), sn = std::sin(phi);
+      const double r0 = s.shape == ShapeKind::Cone ? s.cone_r0 : 1;
+      const double r1 = s.shape == ShapeKind::Cone ? s.cone_r1 : 1;
+      if (s.shape == ShapeKind::Sphere) {
+        object.push_back({c, 0, sn});
+        object.push_back({0, c, sn});
+        object.push_back({c, sn, 0});
+      } else if (s.shape == ShapeKind::Cube) {
+        object.push_back({k & 1 ? 1.0 : -1.0, k & 2 ? 1.0 : -1.0, k & 4 ? 1.0 : -1.0});
+      } else {
+        object.push_back({r0 * c, -1, r0 * sn});
+        object.push_back({r1 * c, 1, r1 * sn});
+      }
+    }
+  }
+  std::vector<Vec3> world;
+  for (const Vec3& p : object) world.push_back(source < 0 ? p : m.transform_point(p));
+  return world;
+}
+
+void check_scene_bvh(const Scene& scene, const GeometryData& g) {
+  std::vector<std::string> errors;
+  const auto instance_count = static_cast<std::uint32_t>(g.instances.size());
+  const TreeShape top = check_tree(g.nodes, 0, g.plane_count, instance_count - g.plane_count,
+                                   [&](std::uint32_t i) { return instance_points(scene, g, i); }, errors);
+  CHECK(top.max_leaf <= 1);
+  CHECK(top.depth <= CLRT_BVH_MAX_DEPTH);
+  for (const dev::Mesh& mesh : g.meshes) {
+    const TreeShape bottom = check_tree(g.nodes, mesh.root_node, mesh.first_triangle, mesh.triangle_count,
+                                        [&](std::uint32_t t) { return triangle_points(g, t); }, errors);
+    CHECK(bottom.max_leaf <= CLRT_BVH_MAX_LEAF);
+    CHECK(bottom.depth <= CLRT_BVH_MAX_DEPTH);
+  }
+  INFO((errors.empty() ? std::string() : errors.front()));
+  CHECK(errors.empty());
+}
+
+}  // namespace
+
+TEST_CASE("geometry tables: planes first, one mesh per model, loose triangles last", "[bvh]") {
+  std::mt19937 rng(7);
+  const Scene scene = random_scene(rng, 40, 30);
+  const GeometryData g = build_geometry(scene);
+  REQUIRE(g.instances.size() == scene.instances.size() + 1);
+  REQUIRE(g.plane_count == 1);
+  CHECK(g.instances[0].shape == CLRT_SHAPE_PLANE);
+  for (std::size_t i = 1; i < g.instances.size(); ++i) CHECK(g.instances[i].shape != CLRT_SHAPE_PLANE);
+  REQUIRE(g.meshes.size() == 2);
+  CHECK(g.meshes[0].has_normals == 1);
+  CHECK(g.meshes[1].has_normals == 0);
+  CHECK(g.meshes[1].triangle_count == 30);
+  CHECK(g.triangles.size() == scene.meshes[0].corners.size() / 3 + 30);
+  CHECK(g.triangle_normals.size() == g.triangles.size());
+  int loose_instances = 0;
+  for (std::size_t i = 0; i < g.instances.size(); ++i) {
+    if (g.instance_source[i] >= 0) {
+      CHECK(g.instances[i].material == static_cast<dev::u32>(scene.instances[g.instance_source[i]].material));
+      continue;
+    }
+    ++loose_instances;
+    CHECK(g.instances[i].material == CLRT_MATERIAL_PER_TRIANGLE);
+    CHECK(g.instances[i].mesh == 1);
+    CHECK(g.instances[i].world_to_object[0].x == 1.0f);
+    CHECK(g.instances[i].world_to_object[0].w == 0.0f);
+  }
+  CHECK(loose_instances == 1);
+  // Each stored loose triangle is the scene's triangle its source index names, with its material.
+  const dev::Mesh& loose = g.meshes[1];
+  for (std::uint32_t t = loose.first_triangle; t < loose.first_triangle + loose.triangle_count; ++t) {
+    const TriangleSpec& spec = scene.triangles[g.triangle_source[t]];
+    CHECK(g.triangles[t].v1.y == static_cast<float>(spec.v1.y));
+    CHECK(g.triangle_materials[t] == static_cast<dev::u32>(spec.material));
+  }
+  CHECK(g.device_bytes() == g.instances.size() * 128 + g.meshes.size() * 16 + g.triangles.size() * 100 +
+                                g.nodes.size() * sizeof(dev::BvhNode));
+}
+
+TEST_CASE("mesh vertex normals are stored unit length, in the triangle's corner order", "[bvh]") {
+  Scene scene;
+  MeshData mesh;
+  mesh.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+  mesh.normals = {{0, 0, 2}, {0, 3, 4}, {0, 0, 0}};
+  mesh.corners = {0, 1, 2};
+  mesh.corner_normals = {0, 1, 2};
+  scene.meshes.push_back(mesh);
+  scene.instances.push_back(placed(ShapeKind::Mesh, Mat4::identity()));
+  scene.instances.back().mesh = 0;
+  const GeometryData g = build_geometry(scene);
+  const dev::TriangleNormals& n = g.triangle_normals.at(0);
+  CHECK(n.n0.z == Approx(1.0));
+  CHECK(n.n1.y == Approx(0.6));
+  CHECK(n.n1.z == Approx(0.8));
+  // A zero normal falls back to the face normal (+z for this counter-clockwise triangle).
+  CHECK(n.n2.z == Approx(1.0));
+}
+
+TEST_CASE("BVH invariants hold on random scenes", "[bvh]") {
+  for (unsigned seed : {1u, 2u, 3u}) {
+    std::mt19937 rng(seed);
+    const Scene scene = random_scene(rng, 300 * seed, 500);
+    check_scene_bvh(scene, build_geometry(scene));
+  }
+}
+
+TEST_CASE("a scene of planes only has an empty top level", "[bvh]") {
+  Scene scene;
+  scene.instances.push_back(placed(ShapeKind::Plane, Mat4::identity()));
+  const GeometryData g = build_geometry(scene);
+  REQUIRE(g.nodes.size() == 1);
+  for (int k = 0; k < CLRT_BVH_WIDTH; ++k) CHECK(g.nodes[0].count[k] == 0);
+  check_scene_bvh(scene, g);
+}
+
+TEST_CASE("coincident triangles are split by count, within the depth limit", "[bvh]") {
+  Scene scene;
+  for (int t = 0; t < 5000; ++t) scene.triangles.push_back({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, 0});
+  check_scene_bvh(scene, build_geometry(scene));
+}
+
+TEST_CASE("nested boxes that the SAH peels one by one stay within the depth limit", "[bvh]") {
+  std::vector<Box> boxes(400);
+  for (std::size_t i = 0; i < boxes.size(); ++i) {
+    const float size = std::pow(1.2f, static_cast<float>(i));
+    boxes[i].grow(0, 0, 0);
+    boxes[i].grow(size, size, size);
+  }
+  BvhBuildSettings settings;
+  settings.max_leaf_size = 1;
+  const BvhTree tree = build_bvh(boxes, settings, 0);
+  std::vector<std::string> errors;
+  const TreeShape shape = check_tree(tree.nodes, 0, 0, static_cast<std::uint32_t>(boxes.size()),
+                                     [&](std::uint32_t i) {
+                                       const Box& b = boxes[tree.order[i]];
+                                       return std::vector<Vec3>{{b.lo[0], b.lo[1], b.lo[2]},
+                                                                {b.hi[0], b.hi[1], b.hi[2]}};
+                                     },
+                                     errors);
+  INFO((errors.empty() ? std::string() : errors.front()));
+  CHECK(errors.empty());
+  CHECK(shape.depth <= CLRT_BVH_MAX_DEPTH);
+  CHECK(tree.depth == shape.depth);
+}
