@@ -41,7 +41,7 @@ inline int bvh_node_test(__global const BvhNode* node, const BvhRay* r, float tm
   const float4 t1 = fmin(fmin(far_x, far_y), fmin(far_z, (float4)(tmax))) * BVH_FAR_SCALE;
   *t_enter = t0;
   const int4 bits = islessequal(t0, t1) & (int4)(1, 2, 4, 8);
-  return bits.x | bits.y | bits.z | bits.w;
+  return (bits.x | bits.y | bits.z | bits.w) & 7;
 }
 
 #endif

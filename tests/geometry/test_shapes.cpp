@@ -158,3 +158,12 @@ TEST_CASE("cone: frustum and apex at the bottom", "[shapes]") {
   // No cap where the radius is 0: from below it enters through the side where R = 0.2.
   expect_hit(upside_down, ray({0.2, -5, 0}, {0, 1, 0}), 4.4, {0.2, -0.1, 0});
 }
+
+TEST_CASE("a zero direction hits nothing and makes no NaN", "[shapes]") {
+  for (const dev::u32 shape : {CLRT_SHAPE_SPHERE, CLRT_SHAPE_PLANE, CLRT_SHAPE_CUBE,
+                               CLRT_SHAPE_CYLINDER, CLRT_SHAPE_CONE}) {
+    INFO("shape " << shape);
+    expect_miss(placed(shape), ray({0, 0, 0}, {0, 0, 0}));
+    expect_miss(placed(shape), ray({0, 3, 0}, {0, 0, 0}));
+  }
+}

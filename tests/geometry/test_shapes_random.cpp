@@ -113,7 +113,7 @@ void check_against_reference(dev::u32 shape, double r0 = 1, double r1 = 0) {
     }
   }
   const int compared = compare_with_reference(shapes, rays);
-  INFO(compared << " of " << rays.size() << " rays were far enough from an edge to compare");
+  INFO(compared << " of " << rays.size() << " rays were well-conditioned enough to compare");
   CHECK(compared >= static_cast<int>(0.75 * rays.size()));
 }
 

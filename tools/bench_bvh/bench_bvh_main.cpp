@@ -1,0 +1,85 @@
+// clrt-bench-bvh: builds the two-level BVH of procedural or .ray scenes and measures
+// scene_closest_hit and scene_any_hit on the device with camera rays and random rays. Prints a
+// Markdown table: build time, BVH size, Mrays/s.
+#include <CLI/CLI.hpp>
+
+#include <cstdio>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "bench_scenes.hpp"
+#include "bench_trace.hpp"
+#include "device/device_select.hpp"
+
+using namespace clrt;
+using namespace clrt::benchbvh;
+
+namespace {
+
+struct Case {
+  std::string name;
+  std::function<Scene()> make;
+  bool own_camera = false;  // a .ray file's camera, else one that frames the scene
+};
+
+std::vector<Case> suite() {
+  std::vector<Case> cases;
+  for (int n : {1000, 10000, 100000, 1000000})
+    cases.push_back({"mesh " + std::to_string(n / 1000) + "k tris", [n] { return mesh_scene(n); }});
+  for (int n : {10, 100, 1000, 10000, 100000})
+    cases.push_back({std::to_string(n) + " shapes", [n] { return shapes_scene(n); }});
+  for (int n : {10, 100, 1000, 10000})
+    cases.push_back({std::to_string(n) + " x 1k-tri mesh", [n] { return mesh_instances_scene(n); }});
+  return cases;
+}
+
+double mib(std::size_t bytes) { return static_cast<double>(bytes) / (1024.0 * 1024.0); }
+
+void run_case(DeviceContext& device, const Case& c, int ray_count, int runs) {
+  const Scene scene = c.make();
+  const GeometryData geometry = build_geometry(scene);
+  const Box bounds = scene_bounds(geometry);
+  const RaySet camera = camera_rays(c.own_camera ? scene.camera : camera_for(bounds), ray_count);
+  const RaySet random = random_rays(bounds, ray_count);
+  Tracer tracer(device, geometry);
+  std::printf("| %s | %zu | %zu | %.1f | %zu | %.2f | %.2f | %.2f | %.2f | %.2f | %.2f |\n", c.name.c_str(),
+              geometry.instances.size(), geometry.triangles.size(), geometry.build_seconds * 1e3,
+              geometry.nodes.size(), mib(geometry.nodes.size() * sizeof(dev::BvhNode)),
+              mib(geometry.device_bytes()), tracer.closest_hit_mrays(camera, runs),
+              tracer.closest_hit_mrays(random, runs), tracer.any_hit_mrays(camera, runs),
+              tracer.any_hit_mrays(random, runs));
+  std::fflush(stdout);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"clrt-bench-bvh: BVH build time, size and ray throughput"};
+  std::vector<std::string> files;
+  int ray_count = 1 << 20;
+  int runs = 3;
+  std::string device_spec = "cpu";
+  bool with_suite = false;
+  app.add_option("scenes", files, ".ray files to measure (their own cameras are used)");
+  app.add_flag("--suite", with_suite, "procedural meshes of 1k-1M triangles and 10-100k instances (default without scenes)");
+  app.add_option("--rays", ray_count, "rays per measurement")->capture_default_str();
+  app.add_option("--runs", runs, "timed launches per measurement; the best counts")->capture_default_str();
+  app.add_option("--device", device_spec, "OpenCL device (cpu, gpu, P:D or a name)")->capture_default_str();
+  CLI11_PARSE(app, argc, argv);
+
+  std::vector<Case> cases;
+  if (with_suite || files.empty()) cases = suite();
+  for (const std::string& f : files) cases.push_back({f, [f] { return load_scene(f); }, true});
+  try {
+    DeviceContext device(select_devices(device_spec).front());
+    std::printf("%d rays per measurement on %s; Mrays/s, best of %d\n\n", ray_count, device.name().c_str(), runs);
+    std::printf("| scene | instances | triangles | build ms | nodes | BVH MiB | all MiB | closest camera | closest random | any camera | any random |\n");
+    std::printf("|---|---|---|---|---|---|---|---|---|---|---|\n");
+    for (const Case& c : cases) run_case(device, c, ray_count, runs);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "clrt-bench-bvh: %s\n", e.what());
+    return 1;
+  }
+  return 0;
+}

@@ -1,0 +1,127 @@
+#include "bench_trace.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <random>
+
+#include "device/kernel_source.hpp"
+#include "device/launch.hpp"
+#include "geometry/bvh_builder.hpp"
+#include "shared/ray.h"
+
+namespace clrt::benchbvh {
+namespace {
+
+const char* const kSource = R"(
+#include "geometry/scene_intersect.h"
+
+__kernel void closest_hits(SCENE_PARAMS, __global const float4* rays, uint count, __global Hit* hits) {
+  const uint i = get_global_id(0);
+  if (i >= count) return;
+  const float4 o = rays[2 * i], d = rays[2 * i + 1];
+  Hit hit;
+  scene_closest_hit(SCENE_ARGS, o.xyz, d.xyz, o.w, d.w, &hit);
+  hits[i] = hit;
+}
+
+__kernel void any_hits(SCENE_PARAMS, __global const float4* rays, uint count, __global int* out) {
+  const uint i = get_global_id(0);
+  if (i >= count) return;
+  const float4 o = rays[2 * i], d = rays[2 * i + 1];
+  out[i] = scene_any_hit(SCENE_ARGS, o.xyz, d.xyz, o.w, d.w) ? 1 : 0;
+}
+)";
+
+constexpr float kTmin = 1e-4f;
+
+void add_ray(RaySet& rays, const Vec3& o, const Vec3& d) {
+  rays.push_back({static_cast<float>(o.x), static_cast<float>(o.y), static_cast<float>(o.z), kTmin});
+  rays.push_back({static_cast<float>(d.x), static_cast<float>(d.y), static_cast<float>(d.z), INFINITY});
+}
+
+Vec3 centre(const Box& b) { return {b.center(0), b.center(1), b.center(2)}; }
+
+}  // namespace
+
+Box scene_bounds(const GeometryData& geometry) {
+  Box b;
+  for (int k = 0; k < CLRT_BVH_WIDTH; ++k) b.grow(lane_box(geometry.nodes.at(0), k));
+  if (b.empty()) b.grow(-1, -1, -1), b.grow(1, 1, 1);
+  return b;
+}
+
+CameraSpec camera_for(const Box& bounds) {
+  const Vec3 size{bounds.hi[0] - bounds.lo[0], bounds.hi[1] - bounds.lo[1], bounds.hi[2] - bounds.lo[2]};
+  CameraSpec camera;
+  camera.lookat = centre(bounds);
+  camera.eye = camera.lookat + normalize(Vec3{0.3, 0.5, 1}) * (1.2 * length(size));
+  camera.fov_degrees = 50;
+  return camera;
+}
+
+RaySet camera_rays(const CameraSpec& camera, int count) {
+  const int side = std::max(1, static_cast<int>(std::sqrt(count)));
+  const Vec3 forward = normalize(camera.lookat - camera.eye);
+  const Vec3 right = normalize(cross(forward, camera.up));
+  const Vec3 up = cross(right, forward);
+  const double half = std::tan(camera.fov_degrees * M_PI / 360);
+  RaySet rays;
+  for (int j = 0; j < side; ++j)
+    for (int i = 0; i < side; ++i) {
+      const double x = (2 * (i + 0.5) / side - 1) * half, y = (1 - 2 * (j + 0.5) / side) * half;
+      add_ray(rays, camera.eye, normalize(forward + right * x + up * y));
+    }
+  return rays;
+}
+
+RaySet random_rays(const Box& bounds, int count) {
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> u(0, 1);
+  RaySet rays;
+  while (static_cast<int>(rays.size()) < 2 * count) {
+    const Vec3 o{bounds.lo[0] + u(rng) * (bounds.hi[0] - bounds.lo[0]),
+                 bounds.lo[1] + u(rng) * (bounds.hi[1] - bounds.lo[1]),
+                 bounds.lo[2] + u(rng) * (bounds.hi[2] - bounds.lo[2])};
+    const Vec3 d{2 * u(rng) - 1, 2 * u(rng) - 1, 2 * u(rng) - 1};
+    if (dot(d, d) > 1 || dot(d, d) < 1e-4) continue;
+    add_ray(rays, o, normalize(d));
+  }
+  return rays;
+}
+
+Tracer::Tracer(DeviceContext& device, const GeometryData& geometry)
+    : device_(device), geometry_(device, geometry) {
+  const compute::program program = device.build(assemble_kernel_source(kSource, "bench_bvh.cl"));
+  closest_ = compute::kernel(program, "closest_hits");
+  any_ = compute::kernel(program, "any_hits");
+  geometry_.bind(closest_, 0);
+  geometry_.bind(any_, 0);
+}
+
+double Tracer::closest_hit_mrays(const RaySet& rays, int runs) {
+  return measure(closest_, rays, sizeof(dev::Hit), runs);
+}
+
+double Tracer::any_hit_mrays(const RaySet& rays, int runs) { return measure(any_, rays, sizeof(int), runs); }
+
+double Tracer::measure(compute::kernel& kernel, const RaySet& rays, std::size_t result_bytes, int runs) {
+  const std::size_t count = rays.size() / 2;
+  compute::buffer ray_buffer = device_.allocate(sizeof(dev::f4) * rays.size(), "rays");
+  device_.queue().enqueue_write_buffer(ray_buffer, 0, sizeof(dev::f4) * rays.size(), rays.data());
+  compute::buffer results = device_.allocate(result_bytes * count, "results");
+  kernel.set_arg(8, ray_buffer);
+  kernel.set_arg(9, static_cast<cl_uint>(count));
+  kernel.set_arg(10, results);
+  double best = INFINITY;
+  for (int run = 0; run <= runs; ++run) {
+    const auto start = std::chrono::steady_clock::now();
+    launch(device_.queue(), kernel, count);
+    device_.queue().finish();
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (run > 0) best = std::min(best, seconds);
+  }
+  return count / best * 1e-6;
+}
+
+}  // namespace clrt::benchbvh

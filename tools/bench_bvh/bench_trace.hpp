@@ -1,0 +1,44 @@
+// Rays for the BVH benchmark and their throughput through scene_closest_hit / scene_any_hit.
+#pragma once
+
+#include <vector>
+
+#include "device/device_context.hpp"
+#include "geometry/bvh_box.hpp"
+#include "geometry/device_geometry.hpp"
+#include "geometry/geometry_data.hpp"
+
+namespace clrt::benchbvh {
+
+// Per ray: origin with w = tmin, then direction with w = tmax.
+using RaySet = std::vector<dev::f4>;
+
+// The box of everything but the planes (from the top level's root).
+Box scene_bounds(const GeometryData& geometry);
+
+// A camera that sees all of `bounds` from above and in front.
+CameraSpec camera_for(const Box& bounds);
+
+// About `count` primary rays of `camera` through the pixel centres of a square image.
+RaySet camera_rays(const CameraSpec& camera, int count);
+
+// `count` rays from uniform points of `bounds` in uniform directions.
+RaySet random_rays(const Box& bounds, int count);
+
+class Tracer {
+ public:
+  Tracer(DeviceContext& device, const GeometryData& geometry);
+
+  // Millions of rays per second, the best of `runs` timed launches after one warm-up launch.
+  double closest_hit_mrays(const RaySet& rays, int runs);
+  double any_hit_mrays(const RaySet& rays, int runs);
+
+ private:
+  double measure(compute::kernel& kernel, const RaySet& rays, std::size_t result_bytes, int runs);
+
+  DeviceContext& device_;
+  DeviceGeometry geometry_;
+  compute::kernel closest_, any_;
+};
+
+}  // namespace clrt::benchbvh
