@@ -25,16 +25,22 @@ RaySet camera_rays(const CameraSpec& camera, int count);
 // `count` rays from uniform points of `bounds` in uniform directions.
 RaySet random_rays(const Box& bounds, int count);
 
+// Millions of rays per second of elapsed time, and per second of CPU time (per core: steadier
+// than elapsed time on a machine shared with other work).
+struct Throughput {
+  double wall = 0, per_core = 0;
+};
+
 class Tracer {
  public:
   Tracer(DeviceContext& device, const GeometryData& geometry);
 
-  // Millions of rays per second, the best of `runs` timed launches after one warm-up launch.
-  double closest_hit_mrays(const RaySet& rays, int runs);
-  double any_hit_mrays(const RaySet& rays, int runs);
+  // The best of `runs` timed launches after one warm-up launch.
+  Throughput closest_hit_mrays(const RaySet& rays, int runs);
+  Throughput any_hit_mrays(const RaySet& rays, int runs);
 
  private:
-  double measure(compute::kernel& kernel, const RaySet& rays, std::size_t result_bytes, int runs);
+  Throughput measure(compute::kernel& kernel, const RaySet& rays, std::size_t result_bytes, int runs);
 
   DeviceContext& device_;
   DeviceGeometry geometry_;
