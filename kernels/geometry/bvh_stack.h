@@ -25,7 +25,7 @@ inline void bvh_push(BvhStack* s, int ref, u32 count, float t) {
 /* Pushes the children of `node` that the ray enters in [tmin, tmax]. When `ordered`, they go
  * on sorted so that the nearest is popped first: closest-hit searches then find near hits
  * early and skip what lies behind them. */
-inline void bvh_push_children(BvhStack* s, __global const BvhNode* node, const BvhRay* ray,
+__attribute__((always_inline)) inline void bvh_push_children(BvhStack* s, __global const BvhNode* node, const BvhRay* ray,
                               float tmin, float tmax, bool ordered) {
   float4 t_enter;
   int mask = bvh_node_test(node, ray, tmin, tmax, &t_enter);

@@ -58,7 +58,7 @@ inline bool bvh_test_triangles(__global const Triangle* triangles, u32 first, u3
 
 /* The search behind both queries: hits in (tmin, best->t) go into *best; `any` stops at the
  * first one. Returns whether anything was hit. */
-inline bool scene_search(SCENE_PARAMS, float3 o, float3 d, float tmin, bool any, HitRecord* best) {
+__attribute__((always_inline)) inline bool scene_search(SCENE_PARAMS, float3 o, float3 d, float tmin, bool any, HitRecord* best) {
   for (u32 p = 0; p < plane_count; ++p)
     if (bvh_test_shape(instances, p, o, d, tmin, best) && any) return true;
   const BvhRay world = bvh_ray(o, d);
