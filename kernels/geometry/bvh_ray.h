@@ -9,6 +9,20 @@ typedef struct BvhRay {
   int neg_x, neg_y, neg_z; /* the ray runs towards -axis: it enters a slab at its max side */
 } BvhRay;
 
+/* One bit per lane, and the lanes' vector helpers, for the node width. */
+#if CLRT_BVH_WIDTH == 8
+#define BVH_LANE_BITS ((int8)(1, 2, 4, 8, 16, 32, 64, 128))
+#define bvh_store_lanes vstore8
+inline int bvh_or_lanes(int8 b) {
+  const int4 h = b.lo | b.hi;
+  return h.x | h.y | h.z | h.w;
+}
+#else
+#define BVH_LANE_BITS ((int4)(1, 2, 4, 8))
+#define bvh_store_lanes vstore4
+inline int bvh_or_lanes(int4 b) { return b.x | b.y | b.z | b.w; }
+#endif
+
 inline BvhRay bvh_ray(float3 o, float3 d) {
   BvhRay r;
   r.o = o;
@@ -30,20 +44,19 @@ inline BvhRay bvh_ray(float3 o, float3 d) {
  * distances. The near side of each slab is chosen by the ray's sign, so the empty lanes
  * (min = +inf, max = -inf) give near = +inf, far = -inf and are never entered. */
 inline int bvh_node_test(__global const BvhNode* node, const BvhRay* r, float tmin, float tmax,
-                         float4* t_enter) {
-  const float4 near_x = ((r->neg_x ? node->max_x : node->min_x) - r->o.x) * r->inv_d.x;
-  const float4 far_x = ((r->neg_x ? node->min_x : node->max_x) - r->o.x) * r->inv_d.x;
-  const float4 near_y = ((r->neg_y ? node->max_y : node->min_y) - r->o.y) * r->inv_d.y;
-  const float4 far_y = ((r->neg_y ? node->min_y : node->max_y) - r->o.y) * r->inv_d.y;
-  const float4 near_z = ((r->neg_z ? node->max_z : node->min_z) - r->o.z) * r->inv_d.z;
-  const float4 far_z = ((r->neg_z ? node->min_z : node->max_z) - r->o.z) * r->inv_d.z;
+                         BvhLanes* t_enter) {
+  const BvhLanes near_x = ((r->neg_x ? node->max_x : node->min_x) - r->o.x) * r->inv_d.x;
+  const BvhLanes far_x = ((r->neg_x ? node->min_x : node->max_x) - r->o.x) * r->inv_d.x;
+  const BvhLanes near_y = ((r->neg_y ? node->max_y : node->min_y) - r->o.y) * r->inv_d.y;
+  const BvhLanes far_y = ((r->neg_y ? node->min_y : node->max_y) - r->o.y) * r->inv_d.y;
+  const BvhLanes near_z = ((r->neg_z ? node->max_z : node->min_z) - r->o.z) * r->inv_d.z;
+  const BvhLanes far_z = ((r->neg_z ? node->min_z : node->max_z) - r->o.z) * r->inv_d.z;
   /* max and min, not fmax and fmin: no operand is NaN (the inverse direction is finite), and
    * they compile to one instruction each instead of a NaN-aware sequence. */
-  const float4 t0 = max(max(near_x, near_y), max(near_z, (float4)(tmin)));
-  const float4 t1 = min(min(far_x, far_y), min(far_z, (float4)(tmax))) * BVH_FAR_SCALE;
+  const BvhLanes t0 = max(max(near_x, near_y), max(near_z, (BvhLanes)(tmin)));
+  const BvhLanes t1 = min(min(far_x, far_y), min(far_z, (BvhLanes)(tmax))) * BVH_FAR_SCALE;
   *t_enter = t0;
-  const int4 bits = islessequal(t0, t1) & (int4)(1, 2, 4, 8);
-  return (bits.x | bits.y | bits.z | bits.w) & 7;
+  return bvh_or_lanes(islessequal(t0, t1) & BVH_LANE_BITS);
 }
 
 #endif

@@ -58,7 +58,7 @@ inline bool bvh_test_triangles(__global const Triangle* triangles, u32 first, u3
 
 /* The search behind both queries: hits in (tmin, best->t) go into *best; `any` stops at the
  * first one. Returns whether anything was hit. */
-__attribute__((always_inline)) inline bool scene_search(SCENE_PARAMS, float3 o, float3 d, float tmin, bool any, HitRecord* best) {
+inline bool scene_search(SCENE_PARAMS, float3 o, float3 d, float tmin, bool any, HitRecord* best) {
   for (u32 p = 0; p < plane_count; ++p)
     if (bvh_test_shape(instances, p, o, d, tmin, best) && any) return true;
   const BvhRay world = bvh_ray(o, d);
@@ -66,7 +66,7 @@ __attribute__((always_inline)) inline bool scene_search(SCENE_PARAMS, float3 o, 
   u32 mesh_instance = CLRT_NO_HIT; /* the instance whose bottom level is being traversed */
   BvhStack stack;
   stack.size = 0;
-  bvh_push(&stack, 0, 0u, -INFINITY);
+  if (instance_count > plane_count) bvh_push(&stack, 0, 0u, -INFINITY);
   while (stack.size > 0) {
     const int top = --stack.size;
     const int ref = stack.ref[top];
@@ -77,7 +77,7 @@ __attribute__((always_inline)) inline bool scene_search(SCENE_PARAMS, float3 o, 
     }
     if (stack.t[top] >= best->t) continue;
     if (ref >= 0) {
-      bvh_push_children(&stack, nodes + ref, &ray, tmin, best->t, !any);
+      bvh_push_children(&stack, nodes, ref, &ray, tmin, best->t, !any);
       continue;
     }
     const u32 first = ~(u32)ref;

@@ -4,6 +4,20 @@
 
 namespace clrt {
 
+Box padded_world_box(const Vec3& lo, const Vec3& hi) {
+  // The world-to-object matrix the device uses is rounded to float, so the object it hits can sit
+  // a few ulps of its size and of its distance from the origin away from where double precision
+  // puts it.
+  const Vec3 far = max(-lo, hi);
+  const double pad = 1e-5 * length(hi - lo) + 1e-6 * std::max({far.x, far.y, far.z});
+  Box out;
+  for (int a = 0; a < 3; ++a) {
+    out.lo[a] = std::nextafter(static_cast<float>(lo[a] - pad), -Box::kInf);
+    out.hi[a] = std::nextafter(static_cast<float>(hi[a] + pad), Box::kInf);
+  }
+  return out;
+}
+
 Box transformed_box(const Box& box, const Mat4& m) {
   if (box.empty()) return box;
   const double inf = std::numeric_limits<double>::infinity();
@@ -16,17 +30,7 @@ Box transformed_box(const Box& box, const Mat4& m) {
     lo = min(lo, w);
     hi = max(hi, w);
   }
-  // The world-to-object matrix the device uses is rounded to float, so the object it hits can sit
-  // a few ulps of its size and of its distance from the origin away from where double precision
-  // puts it.
-  const Vec3 far = max(-lo, hi);
-  const double pad = 1e-5 * length(hi - lo) + 1e-6 * std::max({far.x, far.y, far.z});
-  Box out;
-  for (int a = 0; a < 3; ++a) {
-    out.lo[a] = std::nextafter(static_cast<float>(lo[a] - pad), -Box::kInf);
-    out.hi[a] = std::nextafter(static_cast<float>(hi[a] + pad), Box::kInf);
-  }
-  return out;
+  return padded_world_box(lo, hi);
 }
 
 }  // namespace clrt

@@ -41,9 +41,13 @@ struct Box {
   }
 };
 
-// The box of `box` (in object space) after the affine transform `m`, from its eight corners in
-// double precision, rounded outwards and padded so that a single-precision ray-box test in
-// world space does not miss what the object-space test would hit.
+// The world box [lo, hi] of an object the device intersects in its object space, rounded
+// outwards to float and padded so that a single-precision ray-box test in world space does not
+// miss what the object-space test would hit.
+Box padded_world_box(const Vec3& lo, const Vec3& hi);
+
+// The padded world box of `box` (in object space) after the affine transform `m`, from its eight
+// corners.
 Box transformed_box(const Box& box, const Mat4& m);
 
 }  // namespace clrt

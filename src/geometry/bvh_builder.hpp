@@ -18,7 +18,6 @@ struct BvhBuildSettings {
 struct BvhTree {
   std::vector<dev::BvhNode> nodes;   // nodes[0] is the root; inner lanes index this vector
   std::vector<std::uint32_t> order;  // leaf item first_item + i is boxes[order[i]]
-  Box bounds;                        // of all the boxes
   int depth = 0;                     // node levels on the longest root-to-leaf path
 };
 
@@ -29,6 +28,7 @@ BvhTree build_bvh(const std::vector<Box>& boxes, const BvhBuildSettings& setting
 
 // Appends `tree`'s nodes to `table`, renumbering its inner lanes; returns the root's index.
 std::uint32_t append_bvh(const BvhTree& tree, std::vector<dev::BvhNode>& table);
+std::uint32_t append_bvh_nodes(const std::vector<dev::BvhNode>& nodes, std::vector<dev::BvhNode>& table);
 
 // The box of lane `k` of `node` (empty for an empty lane).
 Box lane_box(const dev::BvhNode& node, int k);

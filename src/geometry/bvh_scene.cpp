@@ -6,6 +6,7 @@
 #include <thread>
 
 #include "geometry/bvh_builder.hpp"
+#include "geometry/instance_bounds.hpp"
 
 namespace clrt {
 namespace {
@@ -53,16 +54,6 @@ void reorder_triangles(GeometryData& geometry, const dev::Mesh& mesh, const BvhT
   reorder(geometry.triangle_source, mesh.first_triangle, tree.order);
 }
 
-// The canonical shapes' object-space bounds: [-1, 1]^3, a cone's widest radius across x and z.
-Box canonical_box(const InstanceSpec& spec) {
-  const float r = spec.shape == ShapeKind::Cone
-                      ? static_cast<float>(std::max(spec.cone_r0, spec.cone_r1)) : 1.0f;
-  Box b;
-  b.grow(-r, -1.0f, -r);
-  b.grow(r, 1.0f, r);
-  return b;
-}
-
 // A mesh instance's world box: its bottom level's root lanes each carried by M, which is
 // tighter than the root box carried whole when M rotates.
 Box mesh_instance_box(const BvhTree& mesh_tree, const Mat4& m) {
@@ -80,7 +71,7 @@ std::vector<Box> instance_boxes(const Scene& scene, const GeometryData& geometry
     const dev::Instance& inst = geometry.instances[i];
     boxes.push_back(inst.shape == CLRT_SHAPE_MESH
                         ? mesh_instance_box(mesh_trees[inst.mesh], m)
-                        : transformed_box(canonical_box(scene.instances[source]), m));
+                        : shape_world_box(scene.instances[source]));
   }
   return boxes;
 }

@@ -10,7 +10,7 @@ constexpr int kBins = 32;
 
 struct Bin {
   std::uint32_t count = 0;
-  Box bounds, centroids;
+  Box bounds;
 };
 
 struct Binning {
@@ -35,7 +35,6 @@ float sah_area(const Box& b) { return b.half_area(); }
 struct Candidate {
   int axis = -1, last_left_bin = 0;
   float weighted = 0;  // area(left) * count(left) + area(right) * count(right)
-  Bin left, right;
 };
 
 // Sweeps the bins of one axis from both ends and keeps the cheapest boundary in `best`.
@@ -45,39 +44,30 @@ void sweep(const std::array<Bin, kBins>& bins, int axis, Candidate& best) {
   for (int b = kBins - 1; b > 0; --b) {
     acc.count += bins[b].count;
     acc.bounds.grow(bins[b].bounds);
-    acc.centroids.grow(bins[b].centroids);
     right[b] = acc;
   }
   Bin left;
   for (int b = 0; b + 1 < kBins; ++b) {
     left.count += bins[b].count;
     left.bounds.grow(bins[b].bounds);
-    left.centroids.grow(bins[b].centroids);
     const Bin& r = right[b + 1];
     if (left.count == 0 || r.count == 0) continue;
     const float weighted = sah_area(left.bounds) * left.count + sah_area(r.bounds) * r.count;
-    if (best.axis < 0 || weighted < best.weighted) best = {axis, b, weighted, left, r};
+    if (best.axis < 0 || weighted < best.weighted) best = {axis, b, weighted};
   }
-}
-
-Range sub_range(std::uint32_t begin, std::uint32_t end, const Bin& bin) {
-  Range r;
-  r.begin = begin;
-  r.end = end;
-  r.bounds = bin.bounds;
-  r.centroids = bin.centroids;
-  return r;
 }
 
 }  // namespace
 
-BuildItems::BuildItems(const std::vector<Box>& item_boxes)
-    : boxes(item_boxes), centers(3 * item_boxes.size()), order(item_boxes.size()) {
+BuildItems make_build_items(const std::vector<Box>& boxes) {
+  BuildItems items(boxes.size());
   for (std::size_t i = 0; i < boxes.size(); ++i) {
-    order[i] = static_cast<std::uint32_t>(i);
+    items[i].box = boxes[i];
+    items[i].index = static_cast<std::uint32_t>(i);
     // An empty box (a mesh without triangles) has no centre; any finite stand-in will do.
-    for (int a = 0; a < 3; ++a) centers[3 * i + a] = boxes[i].empty() ? 0.0f : boxes[i].center(a);
+    for (int a = 0; a < 3; ++a) items[i].center[a] = boxes[i].empty() ? 0.0f : boxes[i].center(a);
   }
+  return items;
 }
 
 Range make_range(const BuildItems& items, std::uint32_t begin, std::uint32_t end) {
@@ -85,9 +75,8 @@ Range make_range(const BuildItems& items, std::uint32_t begin, std::uint32_t end
   r.begin = begin;
   r.end = end;
   for (std::uint32_t i = begin; i < end; ++i) {
-    const std::uint32_t item = items.order[i];
-    r.bounds.grow(items.boxes[item]);
-    r.centroids.grow(items.center(item, 0), items.center(item, 1), items.center(item, 2));
+    r.bounds.grow(items[i].box);
+    r.centroids.grow(items[i].center[0], items[i].center[1], items[i].center[2]);
   }
   return r;
 }
@@ -96,13 +85,10 @@ std::optional<Split> split_sah(BuildItems& items, const Range& range, float node
   const Binning binning(range.centroids);
   std::array<std::array<Bin, kBins>, 3> bins;
   for (std::uint32_t i = range.begin; i < range.end; ++i) {
-    const std::uint32_t item = items.order[i];
-    const float c[3] = {items.center(item, 0), items.center(item, 1), items.center(item, 2)};
     for (int a = 0; a < 3; ++a) {
-      Bin& bin = bins[a][binning.bin(c[a], a)];
+      Bin& bin = bins[a][binning.bin(items[i].center[a], a)];
       ++bin.count;
-      bin.bounds.grow(items.boxes[item]);
-      bin.centroids.grow(c[0], c[1], c[2]);
+      bin.bounds.grow(items[i].box);
     }
   }
   Candidate best;
@@ -110,15 +96,15 @@ std::optional<Split> split_sah(BuildItems& items, const Range& range, float node
     if (binning.scale[a] > 0) sweep(bins[a], a, best);
   if (best.axis < 0) return std::nullopt;
 
-  const auto first = items.order.begin() + range.begin;
-  const auto middle = std::partition(first, items.order.begin() + range.end, [&](std::uint32_t item) {
-    return binning.bin(items.center(item, best.axis), best.axis) <= best.last_left_bin;
-  });
-  const auto mid = static_cast<std::uint32_t>(middle - items.order.begin());
+  const auto middle = std::partition(items.begin() + range.begin, items.begin() + range.end,
+                                     [&](const BuildItem& item) {
+                                       return binning.bin(item.center[best.axis], best.axis) <= best.last_left_bin;
+                                     });
+  const auto mid = static_cast<std::uint32_t>(middle - items.begin());
   const float area = sah_area(range.bounds);
   Split split;
-  split.left = sub_range(range.begin, mid, best.left);
-  split.right = sub_range(mid, range.end, best.right);
+  split.left = make_range(items, range.begin, mid);
+  split.right = make_range(items, mid, range.end);
   split.cost = area > 0 ? node_cost + best.weighted / area : node_cost + range.size();
   return split;
 }
@@ -130,10 +116,8 @@ Split split_median(BuildItems& items, const Range& range) {
         range.centroids.hi[axis] - range.centroids.lo[axis])
       axis = a;
   const std::uint32_t mid = range.begin + range.size() / 2;
-  std::nth_element(items.order.begin() + range.begin, items.order.begin() + mid,
-                   items.order.begin() + range.end, [&](std::uint32_t a, std::uint32_t b) {
-                     return items.center(a, axis) < items.center(b, axis);
-                   });
+  std::nth_element(items.begin() + range.begin, items.begin() + mid, items.begin() + range.end,
+                   [&](const BuildItem& a, const BuildItem& b) { return a.center[axis] < b.center[axis]; });
   Split split;
   split.left = make_range(items, range.begin, mid);
   split.right = make_range(items, mid, range.end);

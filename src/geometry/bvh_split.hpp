@@ -10,18 +10,21 @@
 
 namespace clrt {
 
-struct BuildItems {
-  explicit BuildItems(const std::vector<Box>& item_boxes);
-
-  const std::vector<Box>& boxes;
-  std::vector<float> centers;        // 3 per item: its box's centre
-  std::vector<std::uint32_t> order;  // items in tree order; ranges are slices of it
-
-  float center(std::uint32_t item, int axis) const { return centers[3 * item + axis]; }
+// What the build moves around: each item's box and centre travel with it, so that the passes
+// over a range read memory in order.
+struct BuildItem {
+  Box box;
+  float center[3];
+  std::uint32_t index;  // of the box the build was given
 };
 
+// The items in tree order: ranges are slices of it, partitioned in place.
+using BuildItems = std::vector<BuildItem>;
+
+BuildItems make_build_items(const std::vector<Box>& boxes);
+
 struct Range {
-  std::uint32_t begin = 0, end = 0;  // into BuildItems::order
+  std::uint32_t begin = 0, end = 0;  // into BuildItems
   Box bounds;                        // of the items' boxes
   Box centroids;                     // of the items' centres
   std::uint32_t size() const { return end - begin; }
@@ -34,8 +37,8 @@ struct Split {
   float cost = 0;  // SAH cost of the two halves relative to testing the range's items as a leaf
 };
 
-// The cheapest split of `range` at a bin boundary of its centroid box, with order[begin, end)
-// partitioned accordingly; nothing (and order untouched) when every centre coincides.
+// The cheapest split of `range` at a bin boundary of its centroid box, with items[begin, end)
+// partitioned accordingly; nothing (and the items untouched) when every centre coincides.
 std::optional<Split> split_sah(BuildItems& items, const Range& range, float node_cost);
 
 // Halves `range` by count along the axis where the centres spread most.

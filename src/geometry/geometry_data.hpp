@@ -15,9 +15,12 @@ struct GeometryData {
   std::vector<dev::Instance> instances;  // planes are [0, plane_count): they stay outside the BVH
   dev::u32 plane_count = 0;
   std::vector<dev::Mesh> meshes;  // the scene's mesh files, then one mesh of the loose triangles
+  // Each mesh's triangles in the order of its BVH leaves, which is the order Hit.primitive counts
+  // in (triangle_source maps them back to the file's order).
   std::vector<dev::Triangle> triangles;
-  std::vector<dev::TriangleNormals> triangle_normals;  // one per triangle
-  std::vector<dev::u32> triangle_materials;            // one per triangle
+  std::vector<dev::TriangleNormals> triangle_normals;  // one per triangle; zero without normals
+  std::vector<dev::u32> triangle_materials;            // one per triangle; used by the loose
+                                                       // triangles only (else 0)
   std::vector<dev::BvhNode> nodes;                     // the top level's root is node 0
   double build_seconds = 0;                            // BVH build time, for --stats
 

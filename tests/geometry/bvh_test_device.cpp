@@ -6,25 +6,7 @@
 namespace clrt::bvhtest {
 namespace {
 
-const char* const kSource = R"(
-#include "geometry/scene_intersect.h"
-
-__kernel void closest_hits(SCENE_PARAMS, __global const float4* rays, uint count, __global Hit* hits) {
-  const uint i = get_global_id(0);
-  if (i >= count) return;
-  const float4 o = rays[2 * i], d = rays[2 * i + 1];
-  Hit hit;
-  scene_closest_hit(SCENE_ARGS, o.xyz, d.xyz, o.w, d.w, &hit);
-  hits[i] = hit;
-}
-
-__kernel void any_hits(SCENE_PARAMS, __global const float4* rays, uint count, __global int* out) {
-  const uint i = get_global_id(0);
-  if (i >= count) return;
-  const float4 o = rays[2 * i], d = rays[2 * i + 1];
-  out[i] = scene_any_hit(SCENE_ARGS, o.xyz, d.xyz, o.w, d.w) ? 1 : 0;
-}
-)";
+const char* const kSource = "#include \"geometry/bvh_query_kernels.h\"\n";
 
 // Origin with w = tmin, then direction with w = tmax, per ray.
 std::vector<dev::f4> pack(const std::vector<TestRay>& rays) {
@@ -56,11 +38,11 @@ std::vector<Result> run_queries(const char* kernel_name, const GeometryData& geo
 }  // namespace
 
 std::vector<dev::Hit> device_closest_hits(const GeometryData& geometry, const std::vector<TestRay>& rays) {
-  return run_queries<dev::Hit>("closest_hits", geometry, rays);
+  return run_queries<dev::Hit>("bvh_closest_hits", geometry, rays);
 }
 
 std::vector<int> device_any_hits(const GeometryData& geometry, const std::vector<TestRay>& rays) {
-  return run_queries<int>("any_hits", geometry, rays);
+  return run_queries<int>("bvh_any_hits", geometry, rays);
 }
 
 ObjectId hit_object(const GeometryData& geometry, const dev::Hit& hit) {

@@ -10,7 +10,7 @@ struct LaneBox {
 };
 
 LaneBox lane_of(const dev::BvhNode& n, int k) {
-  const float* lanes[6] = {&n.min_x.x, &n.min_y.x, &n.min_z.x, &n.max_x.x, &n.max_y.x, &n.max_z.x};
+  const float* lanes[6] = {n.min_x.lane, n.min_y.lane, n.min_z.lane, n.max_x.lane, n.max_y.lane, n.max_z.lane};
   LaneBox b;
   for (int a = 0; a < 3; ++a) {
     b.lo[a] = lanes[a][k];

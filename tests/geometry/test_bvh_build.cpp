@@ -7,6 +7,7 @@
 #include "bvh_test_scenes.hpp"
 #include "bvh_tree_check.hpp"
 #include "geometry/bvh_builder.hpp"
+#include "geometry/instance_bounds.hpp"
 #include "geometry/geometry_data.hpp"
 
 using namespace clrt;
@@ -20,37 +21,43 @@ std::vector<Vec3> triangle_points(const GeometryData& g, std::uint32_t t) {
   return {to_vec(g.triangles[t].v0), to_vec(g.triangles[t].v1), to_vec(g.triangles[t].v2)};
 }
 
-// Points on the surface of a canonical shape (or a mesh's vertices), carried to world space.
+// Points spread over the surface of a canonical shape, in object space: all of them for a
+// cube's corners and for the rims of a cylinder or cone (which hold their extreme points).
+std::vector<Vec3> shape_points(const InstanceSpec& s, int count) {
+  std::vector<Vec3> points;
+  const double r0 = s.shape == ShapeKind::Cone ? s.cone_r0 : 1;
+  const double r1 = s.shape == ShapeKind::Cone ? s.cone_r1 : 1;
+  for (int k = 0; k < count; ++k) {
+    const double phi = 2 * M_PI * k / count, c = std::cos(phi), sn = std::sin(phi);
+    if (s.shape == ShapeKind::Sphere) {
+      // Fibonacci sphere: evenly spread, so extreme points in any direction are near one.
+      const double y = 1 - 2 * (k + 0.5) / count, r = std::sqrt(1 - y * y);
+      const double a = k * M_PI * (3 - std::sqrt(5.0));
+      points.push_back({r * std::cos(a), y, r * std::sin(a)});
+    } else if (s.shape == ShapeKind::Cube) {
+      points.push_back({k & 1 ? 1.0 : -1.0, k & 2 ? 1.0 : -1.0, k & 4 ? 1.0 : -1.0});
+    } else {
+      points.push_back({r0 * c, -1, r0 * sn});
+      points.push_back({r1 * c, 1, r1 * sn});
+    }
+  }
+  return points;
+}
+
+// Points on the surface of an instance (a mesh's vertices), in world space.
 std::vector<Vec3> instance_points(const Scene& scene, const GeometryData& g, std::uint32_t i) {
   const int source = g.instance_source[i];
-  const Mat4 m = source < 0 ? Mat4::identity() : scene.instances[source].transform;
-  std::vector<Vec3> object;
+  std::vector<Vec3> points;
   if (g.instances[i].shape == CLRT_SHAPE_MESH) {
     const dev::Mesh& mesh = g.meshes[g.instances[i].mesh];
     for (std::uint32_t t = mesh.first_triangle; t < mesh.first_triangle + mesh.triangle_count; ++t)
-      for (const Vec3& p : triangle_points(g, t)) object.push_back(p);
+      for (const Vec3& p : triangle_points(g, t)) points.push_back(p);
   } else {
-    const InstanceSpec& s = scene.instances[source];
-    for (int k = 0; k < 64; ++k) {
-      const double phi = 2 * M_PI * k / 64;
-      const double c = std::cos(phi), sn = std::sin(phi);
-      const double r0 = s.shape == ShapeKind::Cone ? s.cone_r0 : 1;
-      const double r1 = s.shape == ShapeKind::Cone ? s.cone_r1 : 1;
-      if (s.shape == ShapeKind::Sphere) {
-        object.push_back({c, 0, sn});
-        object.push_back({0, c, sn});
-        object.push_back({c, sn, 0});
-      } else if (s.shape == ShapeKind::Cube) {
-        object.push_back({k & 1 ? 1.0 : -1.0, k & 2 ? 1.0 : -1.0, k & 4 ? 1.0 : -1.0});
-      } else {
-        object.push_back({r0 * c, -1, r0 * sn});
-        object.push_back({r1 * c, 1, r1 * sn});
-      }
-    }
+    points = shape_points(scene.instances[source], 256);
   }
-  std::vector<Vec3> world;
-  for (const Vec3& p : object) world.push_back(source < 0 ? p : m.transform_point(p));
-  return world;
+  if (source >= 0)
+    for (Vec3& p : points) p = scene.instances[source].transform.transform_point(p);
+  return points;
 }
 
 void check_scene_bvh(const Scene& scene, const GeometryData& g) {
@@ -153,25 +160,53 @@ TEST_CASE("coincident triangles are split by count, within the depth limit", "[b
 }
 
 TEST_CASE("nested boxes that the SAH peels one by one stay within the depth limit", "[bvh]") {
-  std::vector<Box> boxes(400);
+  std::vector<Box> boxes(3000);
   for (std::size_t i = 0; i < boxes.size(); ++i) {
-    const float size = std::pow(1.2f, static_cast<float>(i));
+    const float size = std::pow(1.01f, static_cast<float>(i));
     boxes[i].grow(0, 0, 0);
     boxes[i].grow(size, size, size);
   }
-  BvhBuildSettings settings;
-  settings.max_leaf_size = 1;
-  const BvhTree tree = build_bvh(boxes, settings, 0);
-  std::vector<std::string> errors;
-  const TreeShape shape = check_tree(tree.nodes, 0, 0, static_cast<std::uint32_t>(boxes.size()),
-                                     [&](std::uint32_t i) {
-                                       const Box& b = boxes[tree.order[i]];
-                                       return std::vector<Vec3>{{b.lo[0], b.lo[1], b.lo[2]},
-                                                                {b.hi[0], b.hi[1], b.hi[2]}};
-                                     },
-                                     errors);
-  INFO((errors.empty() ? std::string() : errors.front()));
-  CHECK(errors.empty());
-  CHECK(shape.depth <= CLRT_BVH_MAX_DEPTH);
-  CHECK(tree.depth == shape.depth);
+  for (unsigned leaf_size : {1u, 4u}) {
+    BvhBuildSettings settings;
+    settings.max_leaf_size = leaf_size;
+    const BvhTree tree = build_bvh(boxes, settings, 0);
+    std::vector<std::string> errors;
+    const TreeShape shape = check_tree(tree.nodes, 0, 0, static_cast<std::uint32_t>(boxes.size()),
+                                       [&](std::uint32_t i) {
+                                         const Box& b = boxes[tree.order[i]];
+                                         return std::vector<Vec3>{{b.lo[0], b.lo[1], b.lo[2]},
+                                                                  {b.hi[0], b.hi[1], b.hi[2]}};
+                                       },
+                                       errors);
+    INFO("leaf size " << leaf_size << ": " << (errors.empty() ? std::string() : errors.front()));
+    CHECK(errors.empty());
+    CHECK(shape.depth <= CLRT_BVH_MAX_DEPTH);
+    CHECK(static_cast<unsigned>(shape.max_leaf) <= leaf_size);
+    CHECK(tree.depth == shape.depth);
+  }
+}
+
+TEST_CASE("shape boxes hug the transformed shapes", "[bvh]") {
+  std::mt19937 rng(9);
+  const ShapeKind kinds[] = {ShapeKind::Sphere, ShapeKind::Cube, ShapeKind::Cylinder, ShapeKind::Cone};
+  for (int i = 0; i < 40; ++i) {
+    InstanceSpec s = placed(kinds[i % 4], random_transform(rng, 10));
+    s.cone_r0 = i % 8 == 3 ? 0.0 : 0.7;
+    s.cone_r1 = 1.3;
+    Vec3 lo{1e30, 1e30, 1e30}, hi = -lo;
+    for (const Vec3& p : shape_points(s, 20000)) {
+      lo = min(lo, s.transform.transform_point(p));
+      hi = max(hi, s.transform.transform_point(p));
+    }
+    const Box box = shape_world_box(s);
+    INFO("shape " << i);
+    for (int a = 0; a < 3; ++a) {
+      // Contains every point, and no more than a thousandth of the size beyond them.
+      const double slack = 1e-3 * (hi[a] - lo[a]);
+      CHECK(box.lo[a] <= lo[a]);
+      CHECK(box.hi[a] >= hi[a]);
+      CHECK(box.lo[a] >= lo[a] - slack);
+      CHECK(box.hi[a] <= hi[a] + slack);
+    }
+  }
 }

@@ -47,7 +47,7 @@ TEST_CASE("a sphere hit reports t, the outward world normal and the instance's m
   check_near(xyz(side.geometric_normal), normalize(Vec3{0.25, 0, z}));
 }
 
-TEST_CASE("a miss reports no instance; a ray from inside finds the way out", "[bvh][device]") {
+TEST_CASE("a miss reports no instance, and a ray from inside finds the way out", "[bvh][device]") {
   Scene scene;
   scene.instances.push_back(placed(ShapeKind::Cube, Mat4::identity()));
   CHECK(closest(scene, {{0, 5, 0}, {0, 1, 0}, 1e-4, 1e30}).instance == CLRT_NO_HIT);

@@ -15,25 +15,7 @@
 namespace clrt::benchbvh {
 namespace {
 
-const char* const kSource = R"(
-#include "geometry/scene_intersect.h"
-
-__kernel void closest_hits(SCENE_PARAMS, __global const float4* rays, uint count, __global Hit* hits) {
-  const uint i = get_global_id(0);
-  if (i >= count) return;
-  const float4 o = rays[2 * i], d = rays[2 * i + 1];
-  Hit hit;
-  scene_closest_hit(SCENE_ARGS, o.xyz, d.xyz, o.w, d.w, &hit);
-  hits[i] = hit;
-}
-
-__kernel void any_hits(SCENE_PARAMS, __global const float4* rays, uint count, __global int* out) {
-  const uint i = get_global_id(0);
-  if (i >= count) return;
-  const float4 o = rays[2 * i], d = rays[2 * i + 1];
-  out[i] = scene_any_hit(SCENE_ARGS, o.xyz, d.xyz, o.w, d.w) ? 1 : 0;
-}
-)";
+const char* const kSource = "#include \"geometry/bvh_query_kernels.h\"\n";
 
 constexpr float kTmin = 1e-4f;
 
@@ -102,8 +84,8 @@ RaySet random_rays(const Box& bounds, int count) {
 Tracer::Tracer(DeviceContext& device, const GeometryData& geometry)
     : device_(device), geometry_(device, geometry) {
   const compute::program program = device.build(assemble_kernel_source(kSource, "bench_bvh.cl"));
-  closest_ = compute::kernel(program, "closest_hits");
-  any_ = compute::kernel(program, "any_hits");
+  closest_ = compute::kernel(program, "bvh_closest_hits");
+  any_ = compute::kernel(program, "bvh_any_hits");
   geometry_.bind(closest_, 0);
   geometry_.bind(any_, 0);
 }

@@ -1,0 +1,71 @@
+#include "geometry/instance_bounds.hpp"
+
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+namespace clrt {
+namespace {
+
+struct Extent {
+  Vec3 lo, hi;
+  void grow(const Extent& o) {
+    lo = min(lo, o.lo);
+    hi = max(hi, o.hi);
+  }
+};
+
+// Column j of M's linear part.
+Vec3 column(const Mat4& m, int j) { return {m.m[0][j], m.m[1][j], m.m[2][j]}; }
+
+// The disk x^2 + z^2 <= r^2 at height y, under M: the ellipse spanned by r times M's x and z
+// columns, whose reach along world axis i is r * sqrt(m_i0^2 + m_i2^2).
+Extent disk(const Mat4& m, double y, double r) {
+  const Vec3 c = m.transform_point({0, y, 0});
+  const Vec3 ex = column(m, 0), ez = column(m, 2);
+  const Vec3 half{r * std::hypot(ex.x, ez.x), r * std::hypot(ex.y, ez.y), r * std::hypot(ex.z, ez.z)};
+  return {c - half, c + half};
+}
+
+// The unit sphere under M reaches sqrt(m_i0^2 + m_i1^2 + m_i2^2) along world axis i.
+Extent sphere(const Mat4& m) {
+  const Vec3 c = m.transform_point({0, 0, 0});
+  const auto reach = [&](int i) { return length(Vec3{m.m[i][0], m.m[i][1], m.m[i][2]}); };
+  const Vec3 half{reach(0), reach(1), reach(2)};
+  return {c - half, c + half};
+}
+
+Extent cube(const Mat4& m) {
+  const double inf = std::numeric_limits<double>::infinity();
+  Extent e{{inf, inf, inf}, {-inf, -inf, -inf}};
+  for (int corner = 0; corner < 8; ++corner) {
+    const Vec3 p = m.transform_point({corner & 1 ? 1.0 : -1.0, corner & 2 ? 1.0 : -1.0, corner & 4 ? 1.0 : -1.0});
+    e.grow({p, p});
+  }
+  return e;
+}
+
+// A cylinder or cone is the convex hull of its two cap disks, so its box is theirs.
+Extent frustum(const Mat4& m, double r0, double r1) {
+  Extent e = disk(m, -1, r0);
+  e.grow(disk(m, 1, r1));
+  return e;
+}
+
+}  // namespace
+
+Box shape_world_box(const InstanceSpec& spec) {
+  const Mat4& m = spec.transform;
+  Extent e;
+  switch (spec.shape) {
+    case ShapeKind::Sphere: e = sphere(m); break;
+    case ShapeKind::Cube: e = cube(m); break;
+    case ShapeKind::Cylinder: e = frustum(m, 1, 1); break;
+    case ShapeKind::Cone: e = frustum(m, spec.cone_r0, spec.cone_r1); break;
+    case ShapeKind::Plane:
+    case ShapeKind::Mesh: throw std::logic_error("shape_world_box: not a bounded canonical shape");
+  }
+  return padded_world_box(e.lo, e.hi);
+}
+
+}  // namespace clrt

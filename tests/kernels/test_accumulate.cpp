@@ -1,0 +1,201 @@
+// gather_shadows, accumulate_samples and resolve (kernels/accumulate.cl): per-owner sums in
+// queue order, compared bit for bit with the same float sums done on the host, and the same
+// bits wherever a run of the queue sits (so work-group boundaries cannot change an image).
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <cstdint>
+#include <random>
+#include <vector>
+
+#include "cl_fixture.hpp"
+#include "shared/ray.h"
+#include "test_vectors.hpp"
+
+using namespace clrt;
+
+namespace {
+
+// Values spread over six decades, so that summing in another order changes the low bits.
+dev::f4 random_colour(std::mt19937& rng) {
+  std::uniform_real_distribution<float> exponent(-3, 3);
+  const auto v = [&] { return std::pow(10.0f, exponent(rng)); };
+  return {v(), v(), v(), 0};
+}
+
+dev::f4 operator+(const dev::f4& a, const dev::f4& b) {
+  return {a.x + b.x, a.y + b.y, a.z + b.z, a.w + b.w};
+}
+
+bool same_rgb(const dev::f4& a, const dev::f4& b) {
+  return test::same_bits(a.x, b.x) && test::same_bits(a.y, b.y) && test::same_bits(a.z, b.z);
+}
+
+// Run lengths of one owner each; owners 1, 3, 4, 6, ... (some owners have nothing queued).
+// Lengths around the local size (64) make runs cross work-group boundaries.
+const std::vector<std::uint32_t> kRuns = {1, 3, 63, 64, 65, 1, 130, 2, 7, 200, 1, 64};
+
+std::vector<std::uint32_t> run_owners() {
+  std::vector<std::uint32_t> owners;
+  std::uint32_t owner = 1;
+  for (std::size_t r = 0; r < kRuns.size(); ++r) {
+    owners.insert(owners.end(), kRuns[r], owner);
+    owner += r % 3 == 1 ? 2 : 1;
+  }
+  return owners;
+}
+
+// A queue of `owners` preceded by `shift` entries owned by 0.
+std::vector<std::uint32_t> shifted(const std::vector<std::uint32_t>& owners, std::uint32_t shift) {
+  std::vector<std::uint32_t> out(shift, 0u);
+  out.insert(out.end(), owners.begin(), owners.end());
+  return out;
+}
+
+struct Sums {
+  std::vector<dev::f4> values;  // per queue entry
+  std::vector<dev::f4> start;   // per owner, before the launch
+};
+
+Sums random_sums(std::size_t entries, std::size_t owners, std::mt19937& rng) {
+  Sums s;
+  for (std::size_t i = 0; i < entries; ++i) s.values.push_back(random_colour(rng));
+  for (std::size_t i = 0; i < owners; ++i) s.start.push_back(random_colour(rng));
+  return s;
+}
+
+std::vector<dev::f4> gather_on_device(const std::vector<std::uint32_t>& owners, const Sums& s) {
+  std::vector<dev::ShadowRay> shadows(owners.size());
+  for (std::size_t i = 0; i < owners.size(); ++i) shadows[i].owner = owners[i];
+  compute::buffer queue = test::upload(shadows);
+  compute::buffer visible = test::upload(s.values);
+  compute::buffer colour = test::upload(s.start);
+  const auto count = static_cast<std::uint32_t>(owners.size());
+  compute::kernel kernel(test::renderer_program(), "gather_shadows");
+  kernel.set_args(queue, visible, count, colour);
+  test::run(kernel, count);
+  return test::download<dev::f4>(colour, s.start.size());
+}
+
+std::vector<dev::f4> accumulate_on_device(const std::vector<std::uint32_t>& samples, const Sums& s) {
+  std::vector<dev::Ray> rays(samples.size());
+  for (std::size_t i = 0; i < samples.size(); ++i) rays[i].sample = samples[i];
+  compute::buffer queue = test::upload(rays);
+  compute::buffer colour = test::upload(s.values);
+  compute::buffer sample_colour = test::upload(s.start);
+  const auto count = static_cast<std::uint32_t>(samples.size());
+  compute::kernel kernel(test::renderer_program(), "accumulate_samples");
+  kernel.set_args(queue, colour, count, sample_colour);
+  test::run(kernel, count);
+  return test::download<dev::f4>(sample_colour, s.start.size());
+}
+
+// gather_shadows: a ray's colour plus its shadow rays' contributions, one at a time in order.
+std::vector<dev::f4> gather_on_host(const std::vector<std::uint32_t>& owners, const Sums& s) {
+  std::vector<dev::f4> out = s.start;
+  for (std::size_t i = 0; i < owners.size(); ++i) out[owners[i]] = out[owners[i]] + s.values[i];
+  return out;
+}
+
+// accumulate_samples: the pass's colours of one sample summed in order, then added to what the
+// sample gathered in earlier passes.
+std::vector<dev::f4> accumulate_on_host(const std::vector<std::uint32_t>& samples, const Sums& s) {
+  std::vector<dev::f4> out = s.start;
+  for (std::size_t i = 0; i < samples.size();) {
+    dev::f4 run = s.values[i];
+    std::size_t j = i + 1;
+    for (; j < samples.size() && samples[j] == samples[i]; ++j) run = run + s.values[j];
+    out[samples[i]] = out[samples[i]] + run;
+    i = j;
+  }
+  return out;
+}
+
+// The sums of owners 1.. are the same bits for the unshifted queue and shifted ones.
+template <class Device>
+void check_placement_independence(const std::vector<std::uint32_t>& owners, Device on_device,
+                                  std::mt19937& rng) {
+  const std::size_t owner_count = owners.back() + 1;
+  const Sums base = random_sums(owners.size(), owner_count, rng);
+  const std::vector<dev::f4> reference = on_device(owners, base);
+  for (std::uint32_t shift : {1u, 17u, 64u, 100u}) {
+    INFO("shifted by " << shift);
+    Sums moved = random_sums(shift, 0, rng);
+    moved.values.insert(moved.values.end(), base.values.begin(), base.values.end());
+    moved.start = base.start;
+    const std::vector<dev::f4> result = on_device(shifted(owners, shift), moved);
+    for (std::size_t o = 1; o < owner_count; ++o) CHECK(same_rgb(result[o], reference[o]));
+  }
+}
+
+}  // namespace
+
+TEST_CASE("gather_shadows adds each owner's contributions in queue order", "[accumulate]") {
+  std::mt19937 rng(3);
+  const std::vector<std::uint32_t> owners = run_owners();
+  const Sums s = random_sums(owners.size(), owners.back() + 1, rng);
+  const std::vector<dev::f4> device = gather_on_device(owners, s);
+  const std::vector<dev::f4> host = gather_on_host(owners, s);
+  for (std::size_t o = 0; o < host.size(); ++o) {
+    INFO("owner " << o);
+    CHECK(same_rgb(device[o], host[o]));
+  }
+
+  SECTION("the check would see another order") {
+    std::vector<std::uint32_t> reversed_owners(owners.rbegin(), owners.rend());
+    Sums reversed = s;
+    reversed.values.assign(s.values.rbegin(), s.values.rend());
+    const std::vector<dev::f4> other = gather_on_host(reversed_owners, reversed);
+    std::size_t differ = 0;
+    for (std::size_t o = 0; o < host.size(); ++o) differ += !same_rgb(other[o], host[o]);
+    CHECK(differ > 0);
+  }
+}
+
+TEST_CASE("gather_shadows gives the same bits wherever a run sits in the queue", "[accumulate]") {
+  std::mt19937 rng(4);
+  check_placement_independence(run_owners(), gather_on_device, rng);
+}
+
+TEST_CASE("accumulate_samples adds each sample's rays in queue order", "[accumulate]") {
+  std::mt19937 rng(5);
+  const std::vector<std::uint32_t> samples = run_owners();
+  const Sums s = random_sums(samples.size(), samples.back() + 1, rng);
+  const std::vector<dev::f4> device = accumulate_on_device(samples, s);
+  const std::vector<dev::f4> host = accumulate_on_host(samples, s);
+  for (std::size_t o = 0; o < host.size(); ++o) {
+    INFO("sample " << o);
+    CHECK(same_rgb(device[o], host[o]));
+  }
+}
+
+TEST_CASE("accumulate_samples gives the same bits wherever a run sits in the queue",
+          "[accumulate]") {
+  std::mt19937 rng(6);
+  check_placement_independence(run_owners(), accumulate_on_device, rng);
+}
+
+TEST_CASE("resolve is the mean of each pixel's samples", "[accumulate]") {
+  std::mt19937 rng(7);
+  for (std::uint32_t samples : {1u, 4u, 6u}) {
+    const std::uint32_t pixels = 70;
+    std::vector<dev::f4> sample_colour;
+    for (std::uint32_t i = 0; i < pixels * samples; ++i) sample_colour.push_back(random_colour(rng));
+    compute::buffer in = test::upload(sample_colour);
+    compute::buffer out = test::upload(std::vector<dev::f4>(pixels));
+    compute::kernel kernel(test::renderer_program(), "resolve");
+    kernel.set_args(in, samples, pixels, out);
+    test::run(kernel, pixels);
+    const std::vector<dev::f4> result = test::download<dev::f4>(out, pixels);
+    for (std::uint32_t p = 0; p < pixels; ++p) {
+      INFO("samples " << samples << ", pixel " << p);
+      Vec3 mean;
+      for (std::uint32_t k = 0; k < samples; ++k) mean = mean + test::vec_of(sample_colour[p * samples + k]);
+      mean = mean / samples;
+      CHECK(result[p].x == Approx(mean.x).epsilon(1e-6));
+      CHECK(result[p].y == Approx(mean.y).epsilon(1e-6));
+      CHECK(result[p].z == Approx(mean.z).epsilon(1e-6));
+      if (samples == 1) CHECK(same_rgb(result[p], sample_colour[p]));
+    }
+  }
+}

@@ -1,0 +1,71 @@
+#include "render_support.hpp"
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <cstdio>
+#include <fstream>
+#include <iterator>
+#include <stdexcept>
+
+#include "device/device_select.hpp"
+#include "render/render_stats.hpp"
+#include "render/renderer.hpp"
+
+namespace clrt::test {
+
+std::string test_scene(const std::string& name) {
+  return std::string(CLRT_SOURCE_DIR) + "/tests/render/scenes/" + name;
+}
+
+FloatImage render_file(const std::string& path, const std::function<void(RenderOptions&)>& adjust) {
+  const Scene scene = load_scene(path);
+  RenderSetup setup;
+  setup.options = RenderOptions::from_scene(scene);
+  if (adjust) adjust(setup.options);
+  setup.devices = select_devices("cpu");
+  RenderStats stats;
+  return render(scene, setup, stats);
+}
+
+std::array<int, 3> pixel_rgb(const Rgba8Image& image, int i, int j) {
+  const auto at = 4 * (static_cast<std::size_t>(j) * static_cast<std::size_t>(image.width) +
+                       static_cast<std::size_t>(i));
+  const auto& f = image.frames.at(0);
+  return {f[at], f[at + 1], f[at + 2]};
+}
+
+ScratchDir::ScratchDir() {
+  static std::atomic<int> counter{0};
+  path_ = std::filesystem::temp_directory_path() /
+          ("clrt-render-test-" + std::to_string(getpid()) + "-" + std::to_string(counter++));
+  std::filesystem::remove_all(path_);
+  std::filesystem::create_directories(path_);
+}
+
+ScratchDir::~ScratchDir() {
+  std::error_code ignored;
+  std::filesystem::remove_all(path_, ignored);
+}
+
+CommandResult run_clrt(const std::string& arguments, const std::string& environment) {
+  const std::string command =
+      (environment.empty() ? "" : "env " + environment + " ") + "'" CLRT_EXE "' " + arguments + " 2>&1";
+  FILE* pipe = popen(command.c_str(), "r");
+  if (!pipe) throw std::runtime_error("cannot run " + command);
+  CommandResult result;
+  char buffer[4096];
+  std::size_t n;
+  while ((n = fread(buffer, 1, sizeof buffer, pipe)) > 0) result.output.append(buffer, n);
+  const int status = pclose(pipe);
+  result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return result;
+}
+
+std::string file_bytes(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+}  // namespace clrt::test

@@ -1,0 +1,52 @@
+// What the end-to-end tests share: the test scenes, renders through clrt::render(), runs of
+// the clrt executable, and scratch directories.
+#pragma once
+
+#include <array>
+#include <filesystem>
+#include <functional>
+#include <string>
+
+#include "image/image.hpp"
+#include "render/render_options.hpp"
+#include "scene/scene.hpp"
+
+namespace clrt::test {
+
+// tests/render/scenes/NAME
+std::string test_scene(const std::string& name);
+
+// Loads and renders `path` on the CPU device with the scene's own settings, changed by `adjust`.
+FloatImage render_file(const std::string& path,
+                       const std::function<void(RenderOptions&)>& adjust = {});
+
+// Pixel (i, j) of the first frame, rgb.
+std::array<int, 3> pixel_rgb(const Rgba8Image& image, int i, int j);
+
+// A fresh directory, removed with everything in it at the end of the scope.
+class ScratchDir {
+ public:
+  ScratchDir();
+  ~ScratchDir();
+  ScratchDir(const ScratchDir&) = delete;
+  ScratchDir& operator=(const ScratchDir&) = delete;
+  std::string file(const std::string& name) const { return (path_ / name).string(); }
+  const std::filesystem::path& path() const { return path_; }
+
+ private:
+  std::filesystem::path path_;
+};
+
+struct CommandResult {
+  int exit_code = -1;
+  std::string output;  // stdout and stderr together
+};
+
+// Runs the clrt executable with `arguments` (already quoted where needed), with `environment`
+// (e.g. "POCL_MAX_PTHREAD_COUNT=1") added to the inherited environment.
+CommandResult run_clrt(const std::string& arguments, const std::string& environment = "");
+
+// The whole file, or an empty string when it does not exist.
+std::string file_bytes(const std::string& path);
+
+}  // namespace clrt::test

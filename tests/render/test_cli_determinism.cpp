@@ -1,0 +1,85 @@
+// The clrt executable gives the same bytes for the same scene and seed whatever the run: twice
+// over, with other --wavefront sizes (including one small enough that waves restart), on one
+// PoCL thread, and the same as clrt::render() in this process. PFM output holds the unclamped
+// floats, so equal files mean bit-identical renders.
+#include <catch2/catch.hpp>
+
+#include <regex>
+#include <string>
+#include <vector>
+
+#include "render_support.hpp"
+
+using namespace clrt;
+using namespace clrt::test;
+
+namespace {
+
+struct Run {
+  const char* what;
+  std::string options;
+  std::string environment;
+};
+
+const std::vector<Run> kRuns = {
+    {"a second run", "", ""},
+    {"--wavefront 1024", "--wavefront 1024", ""},
+    {"--wavefront 4096", "--wavefront 4096", ""},
+    {"one PoCL thread", "", "POCL_MAX_PTHREAD_COUNT=1"},
+};
+
+// Renders `scene` with `options` once as the reference, then every run of kRuns, and compares
+// the files byte for byte.
+void check_identical_runs(const std::string& scene, const std::string& options) {
+  ScratchDir dir;
+  const std::string base = "'" + test_scene(scene) + "' -q " + options + " ";
+  const std::string reference = dir.file("reference.pfm");
+  const CommandResult first = run_clrt(base + "-o " + reference);
+  INFO(first.output);
+  REQUIRE(first.exit_code == 0);
+  const std::string expected = file_bytes(reference);
+  REQUIRE(!expected.empty());
+  for (std::size_t k = 0; k < kRuns.size(); ++k) {
+    INFO(scene << " " << options << ", " << kRuns[k].what);
+    const std::string out = dir.file("run" + std::to_string(k) + ".pfm");
+    const CommandResult r = run_clrt(base + kRuns[k].options + " -o " + out, kRuns[k].environment);
+    INFO(r.output);
+    REQUIRE(r.exit_code == 0);
+    CHECK(file_bytes(out) == expected);
+  }
+}
+
+}  // namespace
+
+TEST_CASE("reflect.ray renders the same bytes in every run", "[cli][determinism]") {
+  check_identical_runs("reflect.ray", "--resolution 100x60");
+}
+
+TEST_CASE("4 samples per pixel and an area light render the same bytes in every run",
+          "[cli][determinism]") {
+  check_identical_runs("area.ray", "");
+  check_identical_runs("reflect.ray", "--resolution 60x36 --spp 4 --seed 7");
+}
+
+TEST_CASE("glass (kr and kt > 0) renders the same bytes when waves restart", "[cli][determinism]") {
+  ScratchDir dir;
+  // The test is only meaningful if --wavefront 1024 overflows the queue.
+  const CommandResult stats = run_clrt("'" + test_scene("glass.ray") + "' -q --wavefront 1024 --stats=json -o " +
+                                       dir.file("glass.pfm"));
+  INFO(stats.output);
+  REQUIRE(stats.exit_code == 0);
+  std::smatch m;
+  REQUIRE(std::regex_search(stats.output, m, std::regex("\"wave_restarts\": ([0-9]+)")));
+  CHECK(std::stoi(m[1]) > 0);
+  check_identical_runs("glass.ray", "");
+}
+
+TEST_CASE("the executable writes what clrt::render() renders", "[cli][determinism]") {
+  ScratchDir dir;
+  const std::string from_cli = dir.file("cli.pfm"), from_library = dir.file("library.pfm");
+  const CommandResult r = run_clrt("'" + test_scene("area.ray") + "' -q -o " + from_cli);
+  INFO(r.output);
+  REQUIRE(r.exit_code == 0);
+  write_image(from_library, render_file(test_scene("area.ray")));
+  CHECK(file_bytes(from_cli) == file_bytes(from_library));
+}

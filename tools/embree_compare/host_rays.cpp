@@ -1,0 +1,82 @@
+#include "host_rays.hpp"
+
+#include <cmath>
+#include <random>
+
+#include "render/frame_setup.hpp"
+
+namespace clrt::compare {
+namespace {
+
+Vec3 vec3_of(const dev::f4& v) { return {v.x, v.y, v.z}; }
+
+HostRay host_ray(const Vec3& origin, const Vec3& unit_dir, float tmax) {
+  return {
+      {static_cast<float>(origin.x), static_cast<float>(origin.y), static_cast<float>(origin.z)},
+      {static_cast<float>(unit_dir.x), static_cast<float>(unit_dir.y),
+       static_cast<float>(unit_dir.z)},
+      tmax};
+}
+
+// Uniform in [0, 1) from the top 53 bits, the same with every standard library.
+double uniform(std::mt19937_64& bits) { return static_cast<double>(bits() >> 11) * 0x1.0p-53; }
+
+}  // namespace
+
+RaySet camera_rays(const Scene& scene) {
+  const dev::Camera cam = make_camera(scene, RenderOptions::from_scene(scene));
+  const Vec3 eye = vec3_of(cam.eye), corner = vec3_of(cam.corner), dx = vec3_of(cam.pixel_dx),
+             dy = vec3_of(cam.pixel_dy);
+  RaySet set{"camera", {}};
+  set.rays.reserve(static_cast<std::size_t>(cam.width) * cam.height);
+  for (unsigned j = 0; j < cam.height; ++j)
+    for (unsigned i = 0; i < cam.width; ++i)
+      set.rays.push_back(
+          host_ray(eye, normalize(corner + dx * (i + 0.5) + dy * (j + 0.5)), INFINITY));
+  return set;
+}
+
+RaySet random_rays(const Bounds& bounds, std::size_t count, unsigned seed) {
+  std::mt19937_64 bits(seed);
+  RaySet set{"random", {}};
+  set.rays.reserve(count);
+  const Vec3 size = bounds.hi - bounds.lo;
+  for (std::size_t k = 0; k < count; ++k) {
+    const Vec3 origin{bounds.lo.x + size.x * uniform(bits), bounds.lo.y + size.y * uniform(bits),
+                      bounds.lo.z + size.z * uniform(bits)};
+    // Uniform on the sphere: z uniform in [-1, 1] (Archimedes), azimuth uniform.
+    const double z = 1 - 2 * uniform(bits), azimuth = 2 * M_PI * uniform(bits);
+    const double across = std::sqrt(std::max(0.0, 1 - z * z));
+    set.rays.push_back(
+        host_ray(origin, {across * std::cos(azimuth), across * std::sin(azimuth), z}, INFINITY));
+  }
+  return set;
+}
+
+RaySet shadow_rays(const Scene& scene, const RaySet& rays, const std::vector<dev::Hit>& hits) {
+  RaySet set{"shadow", {}};
+  const std::vector<dev::Light> lights = make_lights(scene);
+  if (lights.empty()) return set;
+  const dev::Light& light = lights.front();
+  const Vec3 target =
+      light.kind == CLRT_LIGHT_AREA
+          ? vec3_of(light.position) + (vec3_of(light.edge_u) + vec3_of(light.edge_v)) * 0.5
+          : vec3_of(light.position);
+  for (std::size_t i = 0; i < hits.size(); ++i) {
+    if (hits[i].instance == CLRT_NO_HIT) continue;
+    const HostRay& r = rays.rays[i];
+    const Vec3 o{r.origin[0], r.origin[1], r.origin[2]}, d{r.dir[0], r.dir[1], r.dir[2]};
+    Vec3 normal = vec3_of(hits[i].geometric_normal);
+    if (dot(normal, d) > 0) normal = -normal;
+    const Vec3 p = o + d * hits[i].geometric_normal.w + normal * kTmin;
+    if (light.kind == CLRT_LIGHT_DIRECTIONAL) {
+      set.rays.push_back(host_ray(p, -vec3_of(light.direction), INFINITY));
+    } else {
+      const Vec3 to_light = target - p;
+      set.rays.push_back(host_ray(p, normalize(to_light), static_cast<float>(length(to_light))));
+    }
+  }
+  return set;
+}
+
+}  // namespace clrt::compare

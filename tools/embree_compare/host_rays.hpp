@@ -1,0 +1,44 @@
+// The ray sets both tracers get: camera rays, incoherent rays, and shadow rays from the
+// camera rays' hits towards the first light. Every ray accepts hits with kTmin < t < tmax.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "math/vec3.hpp"
+#include "scene/scene.hpp"
+#include "shared/ray.h"
+
+namespace clrt::compare {
+
+// The contract's epsilon: the smallest accepted t, and the offset of a shadow ray's origin.
+constexpr float kTmin = 1e-4f;
+
+struct HostRay {
+  float origin[3];
+  float dir[3];  // unit
+  float tmax;
+};
+
+struct RaySet {
+  std::string name;
+  std::vector<HostRay> rays;
+};
+
+struct Bounds {
+  Vec3 lo, hi;
+};
+
+// One ray through the centre of every pixel of the scene's camera at its resolution, rows from
+// the top, as the renderer's camera (render/frame_setup.hpp) defines them.
+RaySet camera_rays(const Scene& scene);
+
+// `count` rays from uniform points of `bounds` in uniform directions; the same for a seed.
+RaySet random_rays(const Bounds& bounds, std::size_t count, unsigned seed);
+
+// From each hit of `rays` (offset by kTmin along the normal, to the side the ray came from)
+// towards the scene's first non-ambient light, stopping at the light. Empty when the scene has
+// no such light.
+RaySet shadow_rays(const Scene& scene, const RaySet& rays, const std::vector<dev::Hit>& hits);
+
+}  // namespace clrt::compare

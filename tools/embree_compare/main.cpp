@@ -1,0 +1,55 @@
+// clrt-embree-compare SCENE.ray... [--rays N] [--threads T]: clrt's intersect and shadow
+// kernels against Embree 3 on the same rays (README.md).
+#include <CLI/CLI.hpp>
+#include <cstdio>
+#include <exception>
+#include <string>
+#include <vector>
+
+#include "compare_scene.hpp"
+#include "device/device_context.hpp"
+#include "device/device_select.hpp"
+#include "device/kernel_source.hpp"
+#include "report.hpp"
+
+int main(int argc, char** argv) {
+  CLI::App app{"Compares clrt's intersection kernels with Embree 3 on the same rays."};
+  std::vector<std::string> scenes;
+  clrt::compare::CompareOptions options;
+  std::string quality = "high", device_spec = "cpu";
+  app.add_option("SCENE", scenes, ".ray scenes")->required();
+  app.add_option("--rays", options.random_rays, "random (incoherent) rays per scene")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  app.add_option("--threads", options.threads, "Embree's host threads")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  app.add_option("--runs", options.runs, "timed runs after a warm-up; the best counts")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  app.add_option("--quality", quality, "Embree's BVH build quality")
+      ->check(CLI::IsMember({"medium", "high"}))
+      ->capture_default_str();
+  bool robust = false;
+  app.add_flag("--robust", robust, "RTC_SCENE_FLAG_ROBUST: watertight triangles, as clrt's");
+  app.add_option("--device", device_spec, "clrt's OpenCL device (as clrt --device)")
+      ->capture_default_str();
+  CLI11_PARSE(app, argc, argv);
+  options.quality = quality == "high" ? RTC_BUILD_QUALITY_HIGH : RTC_BUILD_QUALITY_MEDIUM;
+  options.flags = robust ? RTC_SCENE_FLAG_ROBUST : RTC_SCENE_FLAG_NONE;
+  try {
+    clrt::DeviceContext device(clrt::select_devices(device_spec).front());
+    std::fprintf(stderr, "clrt on %s; Embree %s, %d threads, build quality %s, scene flags %s\n",
+                 device.name().c_str(), RTC_VERSION_STRING, options.threads, quality.c_str(),
+                 robust ? "robust" : "none");
+    const clrt::compute::program program = device.build(clrt::renderer_program_source());
+    std::vector<clrt::compare::SceneResult> results;
+    for (const std::string& scene : scenes)
+      results.push_back(clrt::compare::compare_scene(scene, device, program, options));
+    clrt::compare::print_report(results);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "clrt-embree-compare: error: %s\n", e.what());
+    return 1;
+  }
+  return 0;
+}

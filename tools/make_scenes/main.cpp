@@ -1,0 +1,27 @@
+// clrt-make-scenes OUTDIR [--scale S]: writes the large benchmark scenes (README.md).
+#include <CLI/CLI.hpp>
+#include <cstdio>
+#include <exception>
+#include <string>
+
+#include "large_scenes.hpp"
+
+int main(int argc, char** argv) {
+  CLI::App app{"Writes clrt's large procedural benchmark scenes and their meshes."};
+  std::string folder = "build/scenes-large";
+  double scale = 1;
+  app.add_option("OUTDIR", folder, "folder to write into (created if missing)")
+      ->capture_default_str();
+  app.add_option("--scale", scale, "multiplies every sphere, triangle and instance count")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  CLI11_PARSE(app, argc, argv);
+  try {
+    for (const std::string& path : clrt::scenes::write_large_scenes(folder, scale))
+      std::printf("%s\n", path.c_str());
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "clrt-make-scenes: error: %s\n", e.what());
+    return 1;
+  }
+  return 0;
+}
