@@ -68,7 +68,10 @@ __kernel void shade(__global const RenderParams* params, __global const Material
   const float3 p = xyz(ray.origin) + hit.geometric_normal.w * d;
   const bool front = dot(xyz(hit.geometric_normal), d) < 0.0f;
   const float3 ng = front ? xyz(hit.geometric_normal) : -xyz(hit.geometric_normal);
-  const float3 n = front ? xyz(hit.shading_normal) : -xyz(hit.shading_normal);
+  /* Vertex normals may disagree with the winding (NFF patches, many OBJ exports): the shading
+   * normal is first turned into the geometric normal's hemisphere, then faces the ray with it. */
+  const float3 ns = xyz(hit.shading_normal);
+  const float3 n = dot(ns, ng) < 0.0f ? -ns : ns;
   const float3 v = -d;
   __global const Material* m = &materials[hit.material];
   const float3 base = weight * local_share(m);
