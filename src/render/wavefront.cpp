@@ -29,7 +29,8 @@ WavefrontRenderer::WavefrontRenderer(DeviceContext& device, const compute::progr
                                      std::uint32_t wavefront, bool profile)
     : device_(device),
       frame_(frame),
-      capacity_(std::max<std::uint32_t>(wavefront, 1)),
+      // A pixel's samples always share a wave, so a queue holds at least one pixel's worth.
+      capacity_(std::max<std::uint32_t>(wavefront, frame.camera.samples)),
       shade_chunk_(frame.params.shadow_samples == 0
                        ? capacity_
                        : std::max<std::uint32_t>(1, capacity_ / frame.params.shadow_samples)),

@@ -171,6 +171,20 @@ TEST_CASE("generate: stratified samples lie in their pixel, one per cell", "[gen
   }
 }
 
+TEST_CASE("generate: every pixel gets its own jitter", "[generate]") {
+  // 300 pixels: a jitter that repeated across pixels (a pattern) would show as equal offsets.
+  const Scene scene = camera_scene(kEye, kOrigin, kUp, 60);
+  const int width = 100, height = 3, spp = 4;
+  const dev::Camera cam = make_camera(scene, image_options(width, height, spp, 5));
+  const std::vector<dev::Ray> rays = generate(cam, 0, width * height * spp);
+  std::set<std::pair<long, long>> offsets;  // sample 0's place in its pixel, in 1e-6 pixels
+  for (int p = 0; p < width * height; ++p) {
+    const auto [x, y] = contract_camera(scene, width, height).image_point(vec_of(rays[p * spp].dir));
+    offsets.insert({std::lround((x - p % width) * 1e6), std::lround((y - p / width) * 1e6)});
+  }
+  CHECK(offsets.size() == static_cast<std::size_t>(width * height));
+}
+
 TEST_CASE("generate: jitter depends only on pixel, sample and seed", "[generate]") {
   const Scene scene = camera_scene(kEye, kOrigin, kUp, 60);
   const int spp = 4;

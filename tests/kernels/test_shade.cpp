@@ -349,7 +349,18 @@ TEST_CASE("shade: trace mode writes one shadow ray per contributing light sample
   CHECK(out.shadow_flag(0, 4) == 0);  // below the surface: N.L < 0
 }
 
-TEST_CASE("shade: a chunk [first, first + count) of the queue", "[shade]") {
+TEST_CASE("shade: no shadow ray and no term where N.L <= 0", "[shade]") {
+  // A light in the surface's plane (N.L = 0 exactly) and one just below it (N.L = -0.1).
+  const std::vector<LightSpec> lights = {point({1, 1, 1}, {5, 0, 0}),
+                                         directional({1, 1, 1}, {-0.995, 0.0998, 0})};
+  const ShadeOutput traced = shade(standard_hit({kPlastic}, lights));
+  CHECK(traced.shadow_flag(0, 0) == 0);
+  CHECK(traced.shadow_flag(0, 1) == 0);
+  const ShadeOutput cast = shade(standard_hit({kPlastic}, lights, RenderMode::Cast));
+  CHECK_NEAR_VEC(vec_of(cast.colour[0]), Vec3(0, 0, 0), 0);
+}
+
+TEST_CASE("shade: one chunk of the queue, count rays from first", "[shade]") {
   // Ray 1 hits the plane from above, ray 2 from below; rays 0 and 3 are outside the chunk.
   ShadeInput in = input({kPlastic}, {ambient(kAmbient), point({1, 1, 1}, {0, 5, 0}),
                                      point({0.5, 0.5, 0.5}, {0, -5, 0})});

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <limits>
 
 namespace clrt::test {
@@ -123,6 +124,12 @@ Visibility visibility(const RefScene& scene, double x, double y) {
 std::array<int, 3> quantise(const Vec3& colour) {
   const auto q = [](double c) { return static_cast<int>(std::lround(std::clamp(c, 0.0, 1.0) * 255)); };
   return {q(colour.x), q(colour.y), q(colour.z)};
+}
+
+bool within_one(const std::array<int, 3>& a, const std::array<int, 3>& b) {
+  for (int k = 0; k < 3; ++k)
+    if (std::abs(a[k] - b[k]) > 1) return false;
+  return true;
 }
 
 bool robust_pixel(const RefScene& scene, int i, int j, RefMode mode) {

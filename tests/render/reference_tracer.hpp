@@ -71,6 +71,9 @@ Visibility visibility(const RefScene& scene, double x, double y);
 // The contract's quantisation: clamp to [0, 1], times 255, round to nearest.
 std::array<int, 3> quantise(const Vec3& colour);
 
+// Every channel within 1 of the other's: the tolerance of a float render against the reference.
+bool within_one(const std::array<int, 3>& a, const std::array<int, 3>& b);
+
 // Pixel (i, j)'s centre and four points 0.02 pixels around it quantise alike and see alike:
 // a pixel that no rounding in a float renderer can push over an edge.
 bool robust_pixel(const RefScene& scene, int i, int j, RefMode mode);

@@ -137,7 +137,7 @@ TEST_CASE("a bad scene exits 2 with FILE:LINE:COLUMN: error and touches no outpu
     CHECK((name == "out.png" || fs::path(name).extension() == ".ray"));
 }
 
-TEST_CASE("--device with no match exits 1 and lists the devices", "[cli][devices]") {
+TEST_CASE("a --device that matches nothing exits 1 and lists the devices", "[cli][devices]") {
   ScratchDir dir;
   const CommandResult r = run_clrt(render_to(dir.file("out.png")) + " --device nonsense");
   INFO(r.output);
@@ -147,7 +147,7 @@ TEST_CASE("--device with no match exits 1 and lists the devices", "[cli][devices
   CHECK(entries(dir.path()).empty());
 }
 
-TEST_CASE("--list-devices exits 0 and prints the PoCL device", "[cli][devices]") {
+TEST_CASE("listing the devices exits 0 and prints the PoCL device", "[cli][devices]") {
   const CommandResult r = run_clrt("--list-devices");
   INFO(r.output);
   CHECK(r.exit_code == 0);
