@@ -52,9 +52,10 @@ ParseResult parse_command_line(int argc, char** argv) {
   app.add_flag("--list-devices", o.list_devices, "list the OpenCL devices and exit");
   app.add_option("--seed", o.seed, "seed of the random numbers (jitter, area lights)")
       ->capture_default_str();
-  app.add_option("--wavefront", o.wavefront, "rays in flight per queue: device memory grows with it")
-      ->check(CLI::Range(1u << 10, 1u << 26))
-      ->capture_default_str();
+  app.add_option("--wavefront", o.wavefront,
+                 "rays in flight per queue: device memory grows with it "
+                 "(default: 16384 on CPU devices, 1048576 on others)")
+      ->check(CLI::Range(1u << 10, 1u << 26));
   std::string stats;
   app.add_option("--stats", stats, "print statistics to stdout: --stats or --stats=json")
       ->expected(0, 1)

@@ -16,7 +16,7 @@ struct CliOptions {
   std::optional<int> width, height, samples, max_depth;
   std::optional<RenderMode> mode;
   std::uint32_t seed = 0;
-  std::uint32_t wavefront = RenderOptions{}.wavefront;
+  std::uint32_t wavefront = 0;  // 0: per device, see default_wavefront()
   std::string device = "cpu";
   bool list_devices = false;
   StatsFormat stats = StatsFormat::None;

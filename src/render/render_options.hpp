@@ -16,7 +16,8 @@ struct RenderOptions {
   RenderMode mode = RenderMode::Trace;
   std::uint32_t seed = 0;
   // Rays in flight per queue: device memory grows with it, never with the image size.
-  std::uint32_t wavefront = 1u << 18;
+  // 0 picks default_wavefront() for each device.
+  std::uint32_t wavefront = 0;
 
   // The scene's own settings, for fields the command line leaves alone.
   static RenderOptions from_scene(const Scene& scene);

@@ -28,20 +28,21 @@ struct DeviceWorker {
   std::unique_ptr<WavefrontRenderer> renderer;
 };
 
-// Pixel ranges are claimed one at a time from a shared counter: a faster device takes more.
-// Every pixel's colour depends only on the pixel, so the split never changes the image.
+// Pixel ranges are claimed one at a time from a shared counter, each device a wave's worth:
+// a faster device takes more. Every pixel's colour depends only on the pixel, so the split
+// never changes the image.
 class PixelDealer {
  public:
-  PixelDealer(std::uint32_t total, std::uint32_t block) : total_(total), block_(block) {}
-  bool next(std::uint32_t& first, std::uint32_t& count) {
-    first = next_.fetch_add(block_);
+  explicit PixelDealer(std::uint32_t total) : total_(total) {}
+  bool next(std::uint32_t block, std::uint32_t& first, std::uint32_t& count) {
+    first = next_.fetch_add(block);
     if (first >= total_) return false;
-    count = std::min(block_, total_ - first);
+    count = std::min(block, total_ - first);
     return true;
   }
 
  private:
-  std::uint32_t total_, block_;
+  std::uint32_t total_;
   std::atomic<std::uint32_t> next_{0};
 };
 
@@ -61,8 +62,10 @@ FloatImage render(const Scene& scene, const RenderSetup& setup, RenderStats& sta
     DeviceWorker w;
     w.context = std::make_unique<DeviceContext>(entry);
     const compute::program program = w.context->build(source);
+    const std::uint32_t wavefront =
+        options.wavefront ? options.wavefront : default_wavefront(entry.device);
     w.renderer = std::make_unique<WavefrontRenderer>(*w.context, program, frame, geometry,
-                                                     options.wavefront, setup.profile);
+                                                     wavefront, setup.profile);
     workers.push_back(std::move(w));
   }
   stats.build_seconds = seconds_since(start);
@@ -73,16 +76,15 @@ FloatImage render(const Scene& scene, const RenderSetup& setup, RenderStats& sta
   image.height = options.height;
   const auto pixels = static_cast<std::uint32_t>(image.width) * static_cast<std::uint32_t>(image.height);
   image.rgb.assign(3 * std::size_t{pixels}, 0.0f);
-  const std::uint32_t block =
-      std::max<std::uint32_t>(1, options.wavefront / static_cast<std::uint32_t>(options.samples));
-  PixelDealer dealer(pixels, block);
+  PixelDealer dealer(pixels);
   Progress progress(pixels, setup.progress);
   std::vector<std::exception_ptr> errors(workers.size());
   const auto work = [&](std::size_t i) {
     try {
       std::uint32_t first = 0, count = 0;
-      while (dealer.next(first, count)) {
-        workers[i].renderer->render(first, count, image.rgb.data() + 3 * std::size_t{first});
+      WavefrontRenderer& renderer = *workers[i].renderer;
+      while (dealer.next(renderer.pixels_per_wave(), first, count)) {
+        renderer.render(first, count, image.rgb.data() + 3 * std::size_t{first});
         progress.advance(count);
       }
     } catch (...) {

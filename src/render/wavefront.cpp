@@ -24,6 +24,10 @@ compute::buffer upload(DeviceContext& device, const std::vector<T>& data, const 
 
 }  // namespace
 
+std::uint32_t default_wavefront(const compute::device& device) {
+  return (device.type() & CL_DEVICE_TYPE_CPU) ? (1u << 14) : (1u << 20);
+}
+
 WavefrontRenderer::WavefrontRenderer(DeviceContext& device, const compute::program& program,
                                      const FrameData& frame, const GeometryData& geometry,
                                      std::uint32_t wavefront, bool profile)
