@@ -12,4 +12,12 @@
 inline float3 xyz(f4 v) { return v.xyz; }
 inline f4 as_f4(float3 v) { return (f4)(v, 0.0f); }
 
+/* x^y for x >= 0, with 0^0 = 1 as pow() has it. exp2(y log2 x) because PoCL's pow() made the
+ * whole shade kernel 3.5x slower (250 ms against 72 ms on reflect.ray at 1280x720); the
+ * difference is far below what 8-bit output can show. */
+inline float power(float x, float y) {
+  if (x > 0.0f) return exp2(y * log2(x));
+  return y == 0.0f ? 1.0f : 0.0f;
+}
+
 #endif
