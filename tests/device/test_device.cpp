@@ -1,0 +1,70 @@
+// Choosing devices, building programs and allocating buffers: the errors users see.
+#include <catch2/catch.hpp>
+
+#include "cl_fixture.hpp"
+#include "device/device_select.hpp"
+
+using namespace clrt;
+
+TEST_CASE("--device specs choose devices", "[device]") {
+  const std::vector<DeviceEntry> all = enumerate_devices();
+  REQUIRE_FALSE(all.empty());
+  const std::vector<DeviceEntry> cpu = select_devices("cpu");
+  REQUIRE(cpu.size() == 1);
+  CHECK((cpu[0].device.type() & CL_DEVICE_TYPE_CPU) != 0);
+  CHECK(select_devices("all").size() == all.size());
+  const auto by_index = select_devices(std::to_string(all[0].platform_index) + ":" +
+                                       std::to_string(all[0].device_index));
+  REQUIRE(by_index.size() == 1);
+  CHECK(by_index[0].device.get() == all[0].device.get());
+  // Part of the name, in any case.
+  std::string part = all[0].device.name().substr(0, 6);
+  for (char& c : part) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  CHECK_FALSE(select_devices(part).empty());
+}
+
+TEST_CASE("a spec that matches nothing lists the devices that exist", "[device]") {
+  const std::string name = enumerate_devices().front().device.name();
+  CHECK_THROWS_AS(select_devices("no-such-device"), DeviceError);
+  CHECK_THROWS_WITH(select_devices("no-such-device"),
+                    Catch::Contains("--device no-such-device") && Catch::Contains(name));
+  CHECK_THROWS_WITH(select_devices("7:9"), Catch::Contains("0:0"));
+}
+
+TEST_CASE("describe_device names index, device, type, units, memory and OpenCL C", "[device]") {
+  const std::string text = describe_device(select_devices("cpu").front());
+  CHECK(text.rfind("0:", 0) == 0);
+  CHECK(text.find("CPU") != std::string::npos);
+  CHECK(text.find("compute units") != std::string::npos);
+  CHECK(text.find("MiB") != std::string::npos);
+  CHECK(text.find("OpenCL C") != std::string::npos);
+}
+
+TEST_CASE("a kernel build failure carries the whole build log with the real file name",
+          "[device]") {
+  const std::string source = "#line 1 \"kernels/broken.cl\"\n__kernel void f(__global int* x) {\n"
+                             "  x[0] = undefined_name;\n}\n";
+  try {
+    test::device().build(source);
+    FAIL("the build should have failed");
+  } catch (const DeviceError& e) {
+    const std::string message = e.what();
+    CHECK(message.find("kernel build failed") != std::string::npos);
+    CHECK(message.find("build log") != std::string::npos);
+    CHECK(message.find("kernels/broken.cl:2") != std::string::npos);
+    CHECK(message.find("undefined_name") != std::string::npos);
+  }
+}
+
+TEST_CASE("an allocation the device refuses names the buffer and its size", "[device]") {
+  const auto max_alloc = test::device().device().get_info<cl_ulong>(CL_DEVICE_MAX_MEM_ALLOC_SIZE);
+  try {
+    test::device().allocate(static_cast<std::size_t>(max_alloc) + (1u << 20), "giant test");
+    FAIL("the allocation should have been refused");
+  } catch (const DeviceError& e) {
+    const std::string message = e.what();
+    CHECK(message.find("giant test buffer") != std::string::npos);
+    CHECK(message.find("MiB") != std::string::npos);
+    CHECK(message.find("--wavefront") != std::string::npos);
+  }
+}
