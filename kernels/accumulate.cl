@@ -39,9 +39,19 @@ __kernel void resolve(__global const float4* sample_colour, uint samples, uint p
   pixels[p] = sum / (float)samples;
 }
 
-/* Rays of each kind in the queue, for --stats (integer atomics: exact in any order). */
-__kernel void count_kinds(__global const Ray* rays, uint count, __global uint* per_kind) {
+/* Rays of each kind in the queue, for --stats (integer atomics: exact in any order), added to
+ * the current wave's counts: counts[kind]. */
+__kernel void count_kinds(__global const Ray* rays, uint count, __global uint* counts) {
   const uint i = get_global_id(0);
   if (i >= count) return;
-  atomic_inc(&per_kind[rays[i].kind]);
+  atomic_inc(&counts[rays[i].kind]);
+}
+
+/* A finished wave's counts join the render's (counts[3 + kind]) and restart from zero; the
+ * host reads them once per range of pixels instead of waiting for them every pass. */
+__kernel void commit_kind_counts(__global uint* counts) {
+  const uint k = get_global_id(0);
+  if (k >= 3) return;
+  counts[3 + k] += counts[k];
+  counts[k] = 0;
 }

@@ -62,7 +62,7 @@ WavefrontRenderer::WavefrontRenderer(DeviceContext& device, const compute::progr
                         "shadow visibility")),
       sample_colour_(allocate(sizeof(dev::f4) * capacity_, "sample colour")),
       pixels_(allocate(sizeof(dev::f4) * capacity_, "pixel")),
-      kind_counts_(allocate(sizeof(dev::u32) * 3, "ray kind counter")),
+      kind_counts_(allocate(sizeof(dev::u32) * 6, "ray kind counter")),
       generate_(program, "generate"),
       intersect_(program, "intersect"),
       shade_(program, "shade"),
@@ -71,6 +71,7 @@ WavefrontRenderer::WavefrontRenderer(DeviceContext& device, const compute::progr
       accumulate_(program, "accumulate_samples"),
       resolve_(program, "resolve"),
       count_kinds_(program, "count_kinds"),
+      commit_kind_counts_(program, "commit_kind_counts"),
       compactor_(device, program, std::max<std::size_t>(2 * std::size_t{capacity_},
                                                          std::size_t{shade_chunk_} *
                                                              frame.params.shadow_samples)) {
@@ -79,6 +80,15 @@ WavefrontRenderer::WavefrontRenderer(DeviceContext& device, const compute::progr
   stats_.device_bytes += geometry.device_bytes();
   geometry_.bind(intersect_, 0);
   geometry_.bind(shadow_, 0);
+  clear_kind_counts(0, 6);
+  count_kinds_.set_arg(2, kind_counts_);
+  commit_kind_counts_.set_arg(0, kind_counts_);
+}
+
+void WavefrontRenderer::clear_kind_counts(std::size_t first, std::size_t count) {
+  const dev::u32 zero = 0;
+  device_.queue().enqueue_fill_buffer(kind_counts_, &zero, sizeof(zero), first * sizeof(zero),
+                                      count * sizeof(zero));
 }
 
 compute::buffer WavefrontRenderer::allocate(std::size_t bytes, const char* what) {
@@ -143,8 +153,10 @@ bool WavefrontRenderer::render_wave(std::uint32_t first_pixel, std::uint32_t pix
   if (overflow) {
     queue.finish();
     timed_.erase(timed_.begin() + static_cast<std::ptrdiff_t>(timed_mark), timed_.end());
+    if (profile_) clear_kind_counts(0, 3);
     return false;
   }
+  if (profile_) trace("commit_kind_counts", 0, commit_kind_counts_, 3);
   stats_.merge(wave);
   ++stats_.waves;
 
@@ -166,15 +178,9 @@ void WavefrontRenderer::run_pass(std::size_t pass, std::uint32_t count) {
   p.rays += count;
   p.max_queue = std::max<std::uint64_t>(p.max_queue, count);
   if (profile_) {
-    const dev::u32 zeros[3] = {0, 0, 0};
-    device_.queue().enqueue_write_buffer(kind_counts_, 0, sizeof(zeros), zeros);
-    count_kinds_.set_args(rays_, count, kind_counts_);
+    count_kinds_.set_arg(0, rays_);
+    count_kinds_.set_arg(1, count);
     trace("count_kinds", pass, count_kinds_, count);
-    dev::u32 kinds[3];
-    device_.queue().enqueue_read_buffer(kind_counts_, 0, sizeof(kinds), kinds);
-    stats_.camera_rays += kinds[CLRT_RAY_CAMERA];
-    stats_.reflection_rays += kinds[CLRT_RAY_REFLECTION];
-    stats_.refraction_rays += kinds[CLRT_RAY_REFRACTION];
   }
   intersect_.set_arg(kGeometryArgs + 0, params_);
   intersect_.set_arg(kGeometryArgs + 1, rays_);
@@ -216,10 +222,16 @@ void WavefrontRenderer::trace(const char* kernel, std::size_t pass, compute::ker
   if (profile_ && items > 0) timed_.push_back({kernel, pass, e});
 }
 
-// Profiling info is read once per render range, after the queue has drained, so that no
-// launch waits for it.
 void WavefrontRenderer::harvest_timings() {
   device_.queue().finish();
+  if (profile_) {
+    dev::u32 kinds[3];
+    device_.queue().enqueue_read_buffer(kind_counts_, 3 * sizeof(dev::u32), sizeof(kinds), kinds);
+    clear_kind_counts(3, 3);
+    stats_.camera_rays += kinds[CLRT_RAY_CAMERA];
+    stats_.reflection_rays += kinds[CLRT_RAY_REFLECTION];
+    stats_.refraction_rays += kinds[CLRT_RAY_REFRACTION];
+  }
   for (const Timed& t : timed_) {
     const double seconds =
         static_cast<double>(t.event.get_profiling_info<cl_ulong>(CL_PROFILING_COMMAND_END) -

@@ -44,7 +44,9 @@ class WavefrontRenderer {
   void run_pass(std::size_t pass, std::uint32_t count);
   void shade_chunk(std::size_t pass, std::uint32_t first, std::uint32_t count);
   void trace(const char* kernel, std::size_t pass, compute::kernel& k, std::size_t items);
+  // Profiling times and ray-kind counts are read once per render() call, not per pass.
   void harvest_timings();
+  void clear_kind_counts(std::size_t first, std::size_t count);
   compute::buffer allocate(std::size_t bytes, const char* what);
 
   DeviceContext& device_;
@@ -62,7 +64,7 @@ class WavefrontRenderer {
   compute::buffer shadow_slots_, shadow_flags_, shadow_queue_, visible_;
   compute::buffer sample_colour_, pixels_, kind_counts_;
   compute::kernel generate_, intersect_, shade_, shadow_, gather_, accumulate_, resolve_,
-      count_kinds_;
+      count_kinds_, commit_kind_counts_;
   Compactor compactor_;
 };
 
