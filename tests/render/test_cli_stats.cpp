@@ -25,7 +25,7 @@ std::string render_args(const std::string& scene, ScratchDir& dir) {
 
 }  // namespace
 
-TEST_CASE("--stats=json counts rays by kind, passes and kernels", "[cli][stats]") {
+TEST_CASE("the JSON statistics count rays by kind, passes and kernels", "[cli][stats]") {
   ScratchDir dir;
   const CommandResult r = run_clrt(render_args("reflect.ray", dir) + " --spp 4 -q --stats=json");
   REQUIRE(r.exit_code == 0);
@@ -49,7 +49,7 @@ TEST_CASE("--stats=json counts rays by kind, passes and kernels", "[cli][stats]"
   CHECK(r.output.find("}, {\"rays\"") != std::string::npos);
 }
 
-TEST_CASE("--stats prints a table; --quiet alone prints nothing", "[cli][stats]") {
+TEST_CASE("the text statistics are a table, and quiet alone prints nothing", "[cli][stats]") {
   ScratchDir dir;
   const CommandResult table = run_clrt(render_args("test2.ray", dir) + " -q --stats");
   REQUIRE(table.exit_code == 0);
