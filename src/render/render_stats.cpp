@@ -65,6 +65,8 @@ std::string RenderStats::to_text() const {
   out << "time (s):      load " << load_seconds << ", bvh " << bvh_seconds << ", kernel build "
       << build_seconds << ", render " << render_seconds << ", write " << write_seconds
       << ", total " << total_seconds << "\n";
+  out << "bvh:           " << bvh_seconds << " s to build, " << (bvh_bytes >> 10)
+      << " KiB of nodes; scene tables " << (geometry_bytes >> 10) << " KiB in all\n";
   out << "waves:         " << waves << " (restarts after a queue overflow: " << wave_restarts
       << "), wavefront " << wavefront << " rays, device memory " << (device_bytes >> 20)
       << " MiB, peak process memory " << (peak_host_bytes >> 20) << " MiB\n";
@@ -92,7 +94,8 @@ std::string RenderStats::to_json() const {
       << ", \"write\": " << write_seconds << ", \"total\": " << total_seconds
       << "}, \"waves\": " << waves << ", \"wave_restarts\": " << wave_restarts
       << ", \"wavefront\": " << wavefront << ", \"device_bytes\": " << device_bytes
-      << ", \"peak_host_bytes\": " << peak_host_bytes
+      << ", \"peak_host_bytes\": " << peak_host_bytes << ", \"geometry_bytes\": " << geometry_bytes
+      << ", \"bvh_bytes\": " << bvh_bytes
       << ", \"passes\": [";
   for (std::size_t i = 0; i < passes.size(); ++i)
     out << (i ? ", " : "") << "{\"rays\": " << passes[i].rays << ", \"shadow_rays\": "

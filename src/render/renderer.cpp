@@ -53,6 +53,8 @@ FloatImage render(const Scene& scene, const RenderSetup& setup, RenderStats& sta
   auto start = Clock::now();
   const GeometryData geometry = build_geometry(scene);
   stats.bvh_seconds = geometry.build_seconds;
+  stats.geometry_bytes = geometry.device_bytes();
+  stats.bvh_bytes = geometry.nodes.size() * sizeof(dev::BvhNode);
   const FrameData frame = make_frame(scene, options);
 
   start = Clock::now();
