@@ -6,11 +6,7 @@
 
 using clrt::ImageError;
 using clrt::Rgba8Image;
-using clrt::test::concat;
-using clrt::test::read_bytes;
-using clrt::test::TempDir;
-using clrt::test::write_bytes;
-using Bytes = std::vector<std::uint8_t>;
+using namespace clrt::test;
 using Catch::Matchers::Contains;
 
 namespace {
@@ -47,7 +43,7 @@ std::string read_error(const std::string& path) {
 
 TEST_CASE("FSF is written little-endian: magic, width, height, frames, then RGBA from the top",
           "[image][fsf]") {
-  TempDir dir;
+  ScratchDir dir;
   const std::string path = dir.file("a.fsf");
   const Rgba8Image image = two_by_two();
   clrt::write_image(path, image);
@@ -63,7 +59,7 @@ TEST_CASE("FSF is written little-endian: magic, width, height, frames, then RGBA
 }
 
 TEST_CASE("FSF reader accepts a hand-built big-endian file", "[image][fsf]") {
-  TempDir dir;
+  ScratchDir dir;
   const std::string path = dir.file("be.fsf");
   write_bytes(path, {0x00, 0x00, 0x02, 0x3f,  // magic 575
                      0x00, 0x00, 0x00, 0x02,  // width 2
@@ -83,7 +79,7 @@ TEST_CASE("FSF reader accepts a hand-built big-endian file", "[image][fsf]") {
 }
 
 TEST_CASE("FSF round trips an animation frame by frame", "[image][fsf]") {
-  TempDir dir;
+  ScratchDir dir;
   const std::string path = dir.file("anim.fsf");
   const Rgba8Image anim{
       1,
@@ -99,7 +95,7 @@ TEST_CASE("FSF round trips an animation frame by frame", "[image][fsf]") {
 }
 
 TEST_CASE("FSF reader rejects a file shorter or longer than its header says", "[image][fsf]") {
-  TempDir dir;
+  ScratchDir dir;
   const std::string truncated = dir.file("short.fsf"), oversized = dir.file("long.fsf");
   write_bytes(truncated, le_file(2, 2, 1, 15));
   write_bytes(oversized, le_file(2, 2, 1, 17));
@@ -114,7 +110,7 @@ TEST_CASE("FSF reader rejects a file shorter or longer than its header says", "[
 }
 
 TEST_CASE("FSF reader rejects a bad magic, a short header and zero sizes", "[image][fsf]") {
-  TempDir dir;
+  ScratchDir dir;
   const std::string path = dir.file("bad.fsf");
   Bytes png_like = le_file(1, 1, 1, 4);
   png_like[0] = 0x89, png_like[1] = 'P', png_like[2] = 'N', png_like[3] = 'G';
@@ -131,7 +127,7 @@ TEST_CASE("FSF reader rejects a bad magic, a short header and zero sizes", "[ima
 }
 
 TEST_CASE("FSF reader rejects absurd sizes without overflowing or allocating", "[image][fsf]") {
-  TempDir dir;
+  ScratchDir dir;
   const std::string path = dir.file("huge.fsf");
   // 65536 * 65536 * 4 bytes wraps a 32-bit product to exactly 0, and with 2^30 frames the whole
   // file size wraps 64 bits to 16 bytes: a naive check would accept this bare header.
@@ -144,7 +140,7 @@ TEST_CASE("FSF reader rejects absurd sizes without overflowing or allocating", "
 }
 
 TEST_CASE("FSF header summary lists width, height, frames, byte order and bytes", "[image][fsf]") {
-  TempDir dir;
+  ScratchDir dir;
   const std::string path = dir.file("anim.fsf");
   clrt::write_image(path, Rgba8Image{3, 2, {Bytes(24, 7), Bytes(24, 8)}});
   const clrt::FsfHeader header = clrt::read_fsf_header(path);

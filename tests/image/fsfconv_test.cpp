@@ -9,9 +9,7 @@
 #include "test_files.hpp"
 
 using clrt::Rgba8Image;
-using clrt::test::read_bytes;
-using clrt::test::TempDir;
-using Bytes = std::vector<std::uint8_t>;
+using namespace clrt::test;
 using Catch::Matchers::Contains;
 
 namespace {
@@ -22,7 +20,7 @@ struct RunResult {
 };
 
 // Runs clrt-fsfconv with `args` (already shell-quoted where needed), capturing both streams.
-RunResult run_fsfconv(const TempDir& dir, const std::string& args) {
+RunResult run_fsfconv(const ScratchDir& dir, const std::string& args) {
   const std::string out_path = dir.file("stdout.txt"), err_path = dir.file("stderr.txt");
   const std::string command =
       "'" CLRT_FSFCONV "' " + args + " >'" + out_path + "' 2>'" + err_path + "'";
@@ -46,7 +44,7 @@ const Rgba8Image kAnimation{3,
 }  // namespace
 
 TEST_CASE("clrt-fsfconv: FSF -> PNG -> FSF gives back the same file", "[image][fsfconv]") {
-  TempDir dir;
+  ScratchDir dir;
   const std::string fsf = dir.file("in.fsf"), png = dir.file("mid.png"),
                     back = dir.file("back.fsf");
   const Rgba8Image still{3, 2, {kAnimation.frames[0]}};
@@ -58,7 +56,7 @@ TEST_CASE("clrt-fsfconv: FSF -> PNG -> FSF gives back the same file", "[image][f
 }
 
 TEST_CASE("clrt-fsfconv: PPM both ways and --frame picks a frame", "[image][fsfconv]") {
-  TempDir dir;
+  ScratchDir dir;
   const std::string anim = dir.file("anim.fsf"), ppm = dir.file("f1.ppm"), fsf = dir.file("f1.fsf");
   clrt::write_image(anim, kAnimation);
   REQUIRE(run_fsfconv(dir, quoted(anim) + " " + quoted(ppm) + " --frame 1").status == 0);
@@ -73,7 +71,7 @@ TEST_CASE("clrt-fsfconv: PPM both ways and --frame picks a frame", "[image][fsfc
 }
 
 TEST_CASE("clrt-fsfconv --info prints the header summary", "[image][fsfconv]") {
-  TempDir dir;
+  ScratchDir dir;
   const std::string anim = dir.file("anim.fsf");
   clrt::write_image(anim, kAnimation);
   const RunResult result = run_fsfconv(dir, "--info " + quoted(anim));
@@ -83,7 +81,7 @@ TEST_CASE("clrt-fsfconv --info prints the header summary", "[image][fsfconv]") {
 }
 
 TEST_CASE("clrt-fsfconv fails with status 1 on bad files and 2 on bad usage", "[image][fsfconv]") {
-  TempDir dir;
+  ScratchDir dir;
   const std::string anim = dir.file("anim.fsf"), missing = dir.file("missing.fsf"),
                     out = dir.file("out.png");
   clrt::write_image(anim, kAnimation);

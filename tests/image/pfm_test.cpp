@@ -4,15 +4,11 @@
 #include "image/image.hpp"
 #include "test_files.hpp"
 
-using clrt::test::bytes_of;
-using clrt::test::concat;
-using clrt::test::read_bytes;
-using clrt::test::TempDir;
-using Bytes = std::vector<std::uint8_t>;
+using namespace clrt::test;
 
 TEST_CASE("PFM is colour PF, scale -1.0 (little-endian), rows bottom to top, unclamped",
           "[image][pfm]") {
-  TempDir dir;
+  ScratchDir dir;
   const std::string path = dir.file("a.pfm");
   // Row 0 (top): 1, 2, -3. Row 1 (bottom): 0.5, 100, -0.25.
   clrt::write_image(path, clrt::FloatImage{1, 2, {1.0f, 2.0f, -3.0f, 0.5f, 100.0f, -0.25f}});
@@ -26,7 +22,7 @@ TEST_CASE("PFM is colour PF, scale -1.0 (little-endian), rows bottom to top, unc
 }
 
 TEST_CASE("PFM of an 8-bit image holds value / 255 and drops alpha", "[image][pfm]") {
-  TempDir dir;
+  ScratchDir dir;
   const std::string path = dir.file("a.pfm");
   clrt::write_image(path, clrt::Rgba8Image{1, 1, {{255, 0, 255, 7}}});
   CHECK(read_bytes(path) ==

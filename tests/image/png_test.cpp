@@ -6,10 +6,7 @@
 
 using clrt::ImageError;
 using clrt::Rgba8Image;
-using clrt::test::read_bytes;
-using clrt::test::TempDir;
-using clrt::test::write_bytes;
-using Bytes = std::vector<std::uint8_t>;
+using namespace clrt::test;
 using Catch::Matchers::Contains;
 
 namespace {
@@ -27,7 +24,7 @@ Rgba8Image read_fixture(const std::string& name) { return clrt::read_png(fixture
 }  // namespace
 
 TEST_CASE("PNG round trips translucent RGBA exactly", "[image][png]") {
-  TempDir dir;
+  ScratchDir dir;
   const std::string path = dir.file("a.png");
   const Rgba8Image image{3, 2, {{0,  0,  0,  0,  255, 128, 1,  1,   9, 99, 199, 254,  //
                                  17, 34, 51, 68, 200, 100, 50, 255, 3, 2,  1,   127}}};
@@ -43,7 +40,7 @@ TEST_CASE("PNG round trips translucent RGBA exactly", "[image][png]") {
 }
 
 TEST_CASE("PNG of an opaque image is 8-bit RGB and reads back with alpha 255", "[image][png]") {
-  TempDir dir;
+  ScratchDir dir;
   const std::string path = dir.file("rendered.PNG");  // the extension is matched case-insensitively
   clrt::write_image(path, clrt::FloatImage{2, 1, {0.5f, 1.5f, -1.0f, 0.2f, 0.0f, 1.0f}});
   const Bytes file = read_bytes(path);
@@ -56,7 +53,7 @@ TEST_CASE("PNG of an opaque image is 8-bit RGB and reads back with alpha 255", "
 }
 
 TEST_CASE("PNG writer takes frame 0 of an animation", "[image][png]") {
-  TempDir dir;
+  ScratchDir dir;
   const std::string path = dir.file("anim.png");
   clrt::write_image(path, Rgba8Image{1, 1, {{1, 2, 3, 255}, {4, 5, 6, 255}}});
   CHECK(clrt::read_png(path).frames == std::vector<Bytes>{{1, 2, 3, 255}});
@@ -90,9 +87,9 @@ TEST_CASE("PNG reader converts other bit depths and colour types to 8-bit RGBA",
 
 TEST_CASE("PNG reader rejects a file that is not a PNG or is cut short, naming it",
           "[image][png]") {
-  TempDir dir;
+  ScratchDir dir;
   const std::string path = dir.file("bad.png");
-  write_bytes(path, clrt::test::bytes_of("P6\n1 1\n255\nabc"));
+  write_bytes(path, bytes_of("P6\n1 1\n255\nabc"));
   CHECK_THROWS_WITH(clrt::read_png(path), Contains(path));
 
   const Bytes good = read_bytes(fixture("rgb16.png"));

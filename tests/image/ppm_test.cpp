@@ -6,11 +6,7 @@
 
 using clrt::ImageError;
 using clrt::Rgba8Image;
-using clrt::test::bytes_of;
-using clrt::test::read_bytes;
-using clrt::test::TempDir;
-using clrt::test::write_bytes;
-using Bytes = std::vector<std::uint8_t>;
+using namespace clrt::test;
 using Catch::Matchers::Contains;
 
 namespace {
@@ -21,7 +17,7 @@ Bytes with_raster(const std::string& header, const Bytes& raster) {
   return file;
 }
 
-Rgba8Image read_ppm_bytes(const TempDir& dir, const Bytes& bytes) {
+Rgba8Image read_ppm_bytes(const ScratchDir& dir, const Bytes& bytes) {
   const std::string path = dir.file("in.ppm");
   write_bytes(path, bytes);
   return clrt::read_ppm(path);
@@ -30,7 +26,7 @@ Rgba8Image read_ppm_bytes(const TempDir& dir, const Bytes& bytes) {
 }  // namespace
 
 TEST_CASE("PPM is binary P6, maxval 255, RGB without alpha", "[image][ppm]") {
-  TempDir dir;
+  ScratchDir dir;
   const std::string path = dir.file("a.ppm");
   clrt::write_image(path, Rgba8Image{2, 1, {{255, 0, 10, 255, 1, 2, 3, 128}}});
   CHECK(read_bytes(path) ==
@@ -38,7 +34,7 @@ TEST_CASE("PPM is binary P6, maxval 255, RGB without alpha", "[image][ppm]") {
 }
 
 TEST_CASE("PPM reader reads back what the writer wrote, opaque", "[image][ppm]") {
-  TempDir dir;
+  ScratchDir dir;
   const std::string path = dir.file("a.ppm");
   clrt::write_image(path, Rgba8Image{1, 2, {{9, 8, 7, 255, 6, 5, 4, 255}}});
   const Rgba8Image back = clrt::read_ppm(path);
@@ -48,7 +44,7 @@ TEST_CASE("PPM reader reads back what the writer wrote, opaque", "[image][ppm]")
 }
 
 TEST_CASE("PPM reader accepts comments, plain P3 and other maxvals", "[image][ppm]") {
-  TempDir dir;
+  ScratchDir dir;
   SECTION("P6 with comments in the header") {
     const Rgba8Image image =
         read_ppm_bytes(dir, with_raster("P6 # made by hand\n1 1\n# maxval next\n255\n", {1, 2, 3}));
@@ -69,7 +65,7 @@ TEST_CASE("PPM reader accepts comments, plain P3 and other maxvals", "[image][pp
 }
 
 TEST_CASE("PPM reader rejects malformed files, naming them", "[image][ppm]") {
-  TempDir dir;
+  ScratchDir dir;
   const std::string path = dir.file("in.ppm");
   const auto rejects = [&](const Bytes& bytes, const std::string& reason) {
     write_bytes(path, bytes);

@@ -16,8 +16,7 @@
 using Catch::Matchers::Contains;
 using clrt::ImageError;
 using clrt::Rgba8Image;
-using clrt::test::read_bytes;
-using clrt::test::TempDir;
+using namespace clrt::test;
 using Entries = std::set<std::string>;
 
 namespace {
@@ -55,7 +54,7 @@ std::string error_under_limit(int resource, rlim_t limit, const std::function<vo
 
 TEST_CASE("a write into a directory that does not exist fails and creates nothing",
           "[image][write]") {
-  TempDir dir;
+  ScratchDir dir;
   for (const char* name : {"a.fsf", "a.png", "a.ppm", "a.pfm"}) {
     const std::string path = dir.file(std::string("missing/") + name);
     CHECK_THAT(error_of([&] { clrt::write_image(path, kImage); }),
@@ -65,7 +64,7 @@ TEST_CASE("a write into a directory that does not exist fails and creates nothin
 }
 
 TEST_CASE("a write over an existing directory fails and leaves no temporary", "[image][write]") {
-  TempDir dir;
+  ScratchDir dir;
   const std::string path = dir.file("out.fsf");
   std::filesystem::create_directory(path);
   CHECK_THAT(error_of([&] { clrt::write_image(path, kImage); }),
@@ -81,11 +80,11 @@ TEST_CASE("a write into /proc fails, naming the path", "[image][write]") {
 }
 
 TEST_CASE("a failed write leaves the previous file intact and no temporary", "[image][write]") {
-  TempDir dir;
+  ScratchDir dir;
   const std::string path = dir.file("out.fsf");
   clrt::write_image(path, kImage);
-  const std::vector<std::uint8_t> first = read_bytes(path);
-  const Rgba8Image second{4, 4, {std::vector<std::uint8_t>(64, 9)}};
+  const Bytes first = read_bytes(path);
+  const Rgba8Image second{4, 4, {Bytes(64, 9)}};
 
   SECTION("failing mid-write: the file size limit stops the temporary after 20 bytes") {
     const std::string message =
@@ -108,7 +107,7 @@ TEST_CASE("a failed write leaves the previous file intact and no temporary", "[i
 
 TEST_CASE("a new file gets the permissions the umask allows, like any created file",
           "[image][write]") {
-  TempDir dir;
+  ScratchDir dir;
   const std::string path = dir.file("out.ppm");
   const mode_t old_mask = ::umask(022);
   clrt::write_image(path, kImage);
@@ -120,7 +119,7 @@ TEST_CASE("a new file gets the permissions the umask allows, like any created fi
 
 TEST_CASE("an unknown extension or an invalid image is refused before any file is touched",
           "[image][write]") {
-  TempDir dir;
+  ScratchDir dir;
   const std::string unknown = dir.file("out.jpg");
   CHECK_THAT(error_of([&] { clrt::write_image(unknown, kImage); }),
              Contains(unknown) && Contains(".jpg") && Contains(".fsf, .png, .ppm, .pfm"));

@@ -64,30 +64,31 @@ Sums random_sums(std::size_t entries, std::size_t owners, std::mt19937& rng) {
   return s;
 }
 
+// Both kernels take (queue, a value per queue entry, entry count, a sum per owner) and add the
+// values into the sums; returns the sums after the launch.
+template <class Entry>
+std::vector<dev::f4> sum_on_device(const char* kernel_name, const std::vector<Entry>& entries,
+                                   const Sums& s) {
+  compute::buffer queue = test::upload(entries);
+  compute::buffer values = test::upload(s.values);
+  compute::buffer sums = test::upload(s.start);
+  const auto count = static_cast<std::uint32_t>(entries.size());
+  compute::kernel kernel(test::renderer_program(), kernel_name);
+  kernel.set_args(queue, values, count, sums);
+  test::run(kernel, count);
+  return test::download<dev::f4>(sums, s.start.size());
+}
+
 std::vector<dev::f4> gather_on_device(const std::vector<std::uint32_t>& owners, const Sums& s) {
   std::vector<dev::ShadowRay> shadows(owners.size());
   for (std::size_t i = 0; i < owners.size(); ++i) shadows[i].owner = owners[i];
-  compute::buffer queue = test::upload(shadows);
-  compute::buffer visible = test::upload(s.values);
-  compute::buffer colour = test::upload(s.start);
-  const auto count = static_cast<std::uint32_t>(owners.size());
-  compute::kernel kernel(test::renderer_program(), "gather_shadows");
-  kernel.set_args(queue, visible, count, colour);
-  test::run(kernel, count);
-  return test::download<dev::f4>(colour, s.start.size());
+  return sum_on_device("gather_shadows", shadows, s);
 }
 
 std::vector<dev::f4> accumulate_on_device(const std::vector<std::uint32_t>& samples, const Sums& s) {
   std::vector<dev::Ray> rays(samples.size());
   for (std::size_t i = 0; i < samples.size(); ++i) rays[i].sample = samples[i];
-  compute::buffer queue = test::upload(rays);
-  compute::buffer colour = test::upload(s.values);
-  compute::buffer sample_colour = test::upload(s.start);
-  const auto count = static_cast<std::uint32_t>(samples.size());
-  compute::kernel kernel(test::renderer_program(), "accumulate_samples");
-  kernel.set_args(queue, colour, count, sample_colour);
-  test::run(kernel, count);
-  return test::download<dev::f4>(sample_colour, s.start.size());
+  return sum_on_device("accumulate_samples", rays, s);
 }
 
 // gather_shadows: a ray's colour plus its shadow rays' contributions, one at a time in order.

@@ -58,33 +58,29 @@ MaterialSpec material(const Vec3& color, double ka, double kd, double ks, double
   return m;
 }
 
-LightSpec ambient(const Vec3& colour) {
+LightSpec light(LightKind kind, const Vec3& colour) {
   LightSpec l;
-  l.kind = LightKind::Ambient;
+  l.kind = kind;
   l.color = colour;
   return l;
 }
 
+LightSpec ambient(const Vec3& colour) { return light(LightKind::Ambient, colour); }
+
 LightSpec point(const Vec3& colour, const Vec3& position) {
-  LightSpec l;
-  l.kind = LightKind::Point;
-  l.color = colour;
+  LightSpec l = light(LightKind::Point, colour);
   l.position = position;
   return l;
 }
 
 LightSpec directional(const Vec3& colour, const Vec3& travel) {
-  LightSpec l;
-  l.kind = LightKind::Directional;
-  l.color = colour;
+  LightSpec l = light(LightKind::Directional, colour);
   l.direction = travel;
   return l;
 }
 
 LightSpec spot(const Vec3& colour, const Vec3& position, const Vec3& axis, double angle, double exp) {
-  LightSpec l;
-  l.kind = LightKind::Spot;
-  l.color = colour;
+  LightSpec l = light(LightKind::Spot, colour);
   l.position = position;
   l.direction = axis;
   l.angle_degrees = angle;
@@ -93,9 +89,7 @@ LightSpec spot(const Vec3& colour, const Vec3& position, const Vec3& axis, doubl
 }
 
 LightSpec area(const Vec3& colour, const Vec3& corner, const Vec3& u, const Vec3& v, int samples) {
-  LightSpec l;
-  l.kind = LightKind::Area;
-  l.color = colour;
+  LightSpec l = light(LightKind::Area, colour);
   l.position = corner;
   l.edge_u = u;
   l.edge_v = v;

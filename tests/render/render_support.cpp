@@ -1,9 +1,7 @@
 #include "render_support.hpp"
 
 #include <sys/wait.h>
-#include <unistd.h>
 
-#include <atomic>
 #include <cstdio>
 #include <fstream>
 #include <iterator>
@@ -36,18 +34,7 @@ std::array<int, 3> pixel_rgb(const Rgba8Image& image, int i, int j) {
   return {f[at], f[at + 1], f[at + 2]};
 }
 
-ScratchDir::ScratchDir() {
-  static std::atomic<int> counter{0};
-  path_ = std::filesystem::temp_directory_path() /
-          ("clrt-render-test-" + std::to_string(getpid()) + "-" + std::to_string(counter++));
-  std::filesystem::remove_all(path_);
-  std::filesystem::create_directories(path_);
-}
-
-ScratchDir::~ScratchDir() {
-  std::error_code ignored;
-  std::filesystem::remove_all(path_, ignored);
-}
+std::string quoted(const std::string& path) { return "'" + path + "'"; }
 
 CommandResult run_clrt(const std::string& arguments, const std::string& environment) {
   const std::string command =

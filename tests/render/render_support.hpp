@@ -1,9 +1,8 @@
-// What the end-to-end tests share: the test scenes, renders through clrt::render(), runs of
-// the clrt executable, and scratch directories.
+// What the end-to-end tests share: the test scenes, renders through clrt::render(), and runs of
+// the clrt executable.
 #pragma once
 
 #include <array>
-#include <filesystem>
 #include <functional>
 #include <string>
 
@@ -23,19 +22,8 @@ FloatImage render_file(const std::string& path,
 // Pixel (i, j) of the first frame, rgb.
 std::array<int, 3> pixel_rgb(const Rgba8Image& image, int i, int j);
 
-// A fresh directory, removed with everything in it at the end of the scope.
-class ScratchDir {
- public:
-  ScratchDir();
-  ~ScratchDir();
-  ScratchDir(const ScratchDir&) = delete;
-  ScratchDir& operator=(const ScratchDir&) = delete;
-  std::string file(const std::string& name) const { return (path_ / name).string(); }
-  const std::filesystem::path& path() const { return path_; }
-
- private:
-  std::filesystem::path path_;
-};
+// `path` in single quotes, as run_clrt's arguments need it.
+std::string quoted(const std::string& path);
 
 struct CommandResult {
   int exit_code = -1;

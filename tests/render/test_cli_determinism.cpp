@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "render_support.hpp"
+#include "scratch_dir.hpp"
 
 using namespace clrt;
 using namespace clrt::test;
@@ -34,7 +35,7 @@ const std::vector<Run> kRuns = {
 // the files byte for byte.
 void check_identical_runs(const std::string& scene, const std::string& options) {
   ScratchDir dir;
-  const std::string base = "'" + test_scene(scene) + "' -q " + options + " ";
+  const std::string base = quoted(test_scene(scene)) + " -q " + options + " ";
   const std::string reference = dir.file("reference.pfm");
   const CommandResult first = run_clrt(base + "-o " + reference);
   INFO(first.output);
@@ -66,8 +67,8 @@ TEST_CASE("4 samples per pixel and an area light render the same bytes in every 
 TEST_CASE("glass (kr and kt > 0) renders the same bytes when waves restart", "[cli][determinism]") {
   ScratchDir dir;
   // The test is only meaningful if --wavefront 1024 overflows the queue.
-  const CommandResult stats = run_clrt("'" + test_scene("glass.ray") + "' -q --wavefront 1024 --stats=json -o " +
-                                       dir.file("glass.pfm"));
+  const CommandResult stats = run_clrt(quoted(test_scene("glass.ray")) + " -q --wavefront 1024" +
+                                       " --stats=json -o " + dir.file("glass.pfm"));
   INFO(stats.output);
   REQUIRE(stats.exit_code == 0);
   std::smatch m;
@@ -79,7 +80,7 @@ TEST_CASE("glass (kr and kt > 0) renders the same bytes when waves restart", "[c
 TEST_CASE("the executable writes what clrt::render() renders", "[cli][determinism]") {
   ScratchDir dir;
   const std::string from_cli = dir.file("cli.pfm"), from_library = dir.file("library.pfm");
-  const CommandResult r = run_clrt("'" + test_scene("area.ray") + "' -q -o " + from_cli);
+  const CommandResult r = run_clrt(quoted(test_scene("area.ray")) + " -q -o " + from_cli);
   INFO(r.output);
   REQUIRE(r.exit_code == 0);
   write_image(from_library, render_file(test_scene("area.ray")));
@@ -88,7 +89,7 @@ TEST_CASE("the executable writes what clrt::render() renders", "[cli][determinis
 
 TEST_CASE("more samples per pixel than a queue holds", "[cli][determinism]") {
   ScratchDir dir;
-  const std::string base = "'" + test_scene("area.ray") + "' -q --resolution 6x4 --spp 1500 ";
+  const std::string base = quoted(test_scene("area.ray")) + " -q --resolution 6x4 --spp 1500 ";
   const CommandResult small = run_clrt(base + "--wavefront 1024 -o " + dir.file("small.pfm"));
   INFO(small.output);
   // The contract is silent here: the render either works, and is then the same image as with a

@@ -2,16 +2,15 @@
 // scene errors, and device selection.
 #include <catch2/catch.hpp>
 
-#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <filesystem>
-#include <fstream>
 #include <regex>
+#include <set>
 #include <string>
-#include <vector>
 
 #include "render_support.hpp"
+#include "scratch_dir.hpp"
 
 using namespace clrt;
 using namespace clrt::test;
@@ -22,25 +21,13 @@ namespace {
 constexpr int kWidth = 40, kHeight = 24;
 
 std::string render_to(const std::string& out) {
-  return "'" + test_scene("test2.ray") + "' -q --resolution 40x24 -o '" + out + "'";
-}
-
-void write_text(const std::string& path, const std::string& text) {
-  std::ofstream(path, std::ios::binary) << text;
+  return quoted(test_scene("test2.ray")) + " -q --resolution 40x24 -o " + quoted(out);
 }
 
 std::uint32_t le32(const std::string& bytes, std::size_t at) {
   std::uint32_t v = 0;
   for (int k = 3; k >= 0; --k) v = v << 8 | static_cast<unsigned char>(bytes[at + static_cast<std::size_t>(k)]);
   return v;
-}
-
-// The names in `dir`, to show that a failed run left nothing behind.
-std::vector<std::string> entries(const fs::path& dir) {
-  std::vector<std::string> names;
-  for (const auto& e : fs::directory_iterator(dir)) names.push_back(e.path().filename().string());
-  std::sort(names.begin(), names.end());
-  return names;
 }
 
 }  // namespace
@@ -83,12 +70,12 @@ TEST_CASE("every output format is written, holding the same picture", "[cli][fil
 TEST_CASE("an output that cannot be written fails and leaves nothing behind", "[cli][files]") {
   ScratchDir dir;
   SECTION("its folder is a file") {
-    write_text(dir.file("file"), "x");
+    dir.write("file", "x");
     const CommandResult r = run_clrt(render_to(dir.file("file") + "/out.png"));
     INFO(r.output);
     CHECK(r.exit_code != 0);
     CHECK(r.output.find("error") != std::string::npos);
-    CHECK(entries(dir.path()) == std::vector<std::string>{"file"});
+    CHECK(dir.entries() == std::set<std::string>{"file"});
     CHECK(file_bytes(dir.file("file")) == "x");
   }
   SECTION("it is a directory") {
@@ -97,43 +84,40 @@ TEST_CASE("an output that cannot be written fails and leaves nothing behind", "[
     INFO(r.output);
     CHECK(r.exit_code != 0);
     CHECK(r.output.find("error") != std::string::npos);
-    CHECK(entries(dir.path()) == std::vector<std::string>{"taken.png"});
+    CHECK(dir.entries() == std::set<std::string>{"taken.png"});
     CHECK(fs::is_empty(dir.file("taken.png")));
   }
   SECTION("its extension names no format") {
     const CommandResult r = run_clrt(render_to(dir.file("out.xyz")));
     INFO(r.output);
     CHECK(r.exit_code != 0);
-    CHECK(entries(dir.path()).empty());
+    CHECK(dir.entries().empty());
   }
 }
 
 TEST_CASE("a bad scene exits 2 with FILE:LINE:COLUMN: error and touches no output", "[cli][files]") {
   ScratchDir dir;
-  const std::string out = dir.file("out.png");
-  write_text(out, "keep");
-  SECTION("a wrong argument count") {
-    write_text(dir.file("bad.ray"), "eye 0 0 5\nsphere\nfov 60 1\n");
-    const CommandResult r = run_clrt("'" + dir.file("bad.ray") + "' -q -o '" + out + "'");
+  const std::string out = dir.write("out.png", "keep");
+  // Renders `scene` to `out`: it must exit 2 with an error whose start matches `where`.
+  const auto rejects = [&](const std::string& scene, const std::string& where) {
+    const CommandResult r = run_clrt(quoted(scene) + " -q -o " + quoted(out));
     INFO(r.output);
     CHECK(r.exit_code == 2);
-    CHECK(std::regex_search(r.output, std::regex("bad\\.ray:3:8: error: ")));
+    CHECK(std::regex_search(r.output, std::regex(where)));
+  };
+  SECTION("a wrong argument count") {
+    rejects(dir.write("bad.ray", "eye 0 0 5\nsphere\nfov 60 1\n"), "bad\\.ray:3:8: error: ");
   }
   SECTION("the lecture's unrepaired light line") {
-    write_text(dir.file("lecture.ray"), "sphere\nlight 1 1 1 ambient\nlight 0 6 0 6 0 6 point 3 3 3\n");
-    const CommandResult r = run_clrt("'" + dir.file("lecture.ray") + "' -q -o '" + out + "'");
-    INFO(r.output);
-    CHECK(r.exit_code == 2);
-    CHECK(std::regex_search(r.output, std::regex("lecture\\.ray:3:[0-9]+: error: ")));
+    rejects(dir.write("lecture.ray",
+                      "sphere\nlight 1 1 1 ambient\nlight 0 6 0 6 0 6 point 3 3 3\n"),
+            "lecture\\.ray:3:[0-9]+: error: ");
   }
   SECTION("a scene file that does not exist") {
-    const CommandResult r = run_clrt("'" + dir.file("missing.ray") + "' -q -o '" + out + "'");
-    INFO(r.output);
-    CHECK(r.exit_code == 2);
-    CHECK(std::regex_search(r.output, std::regex("missing\\.ray:1:1: error: ")));
+    rejects(dir.file("missing.ray"), "missing\\.ray:1:1: error: ");
   }
   CHECK(file_bytes(out) == "keep");
-  for (const std::string& name : entries(dir.path()))
+  for (const std::string& name : dir.entries())
     CHECK((name == "out.png" || fs::path(name).extension() == ".ray"));
 }
 
@@ -144,7 +128,7 @@ TEST_CASE("a --device that matches nothing exits 1 and lists the devices", "[cli
   CHECK(r.exit_code == 1);
   CHECK(r.output.find("nonsense") != std::string::npos);
   CHECK(r.output.find("Portable Computing Language") != std::string::npos);
-  CHECK(entries(dir.path()).empty());
+  CHECK(dir.entries().empty());
 }
 
 TEST_CASE("listing the devices exits 0 and prints the PoCL device", "[cli][devices]") {

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "render_support.hpp"
+#include "scratch_dir.hpp"
 
 using namespace clrt::test;
 
@@ -20,7 +21,7 @@ double json_number(const std::string& json, const std::string& key) {
 }
 
 std::string render_args(const std::string& scene, ScratchDir& dir) {
-  return "'" + test_scene(scene) + "' --resolution 40x30 -o " + dir.file("out.png");
+  return quoted(test_scene(scene)) + " --resolution 40x30 -o " + dir.file("out.png");
 }
 
 }  // namespace

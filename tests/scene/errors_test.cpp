@@ -5,11 +5,11 @@
 using clrt::test::load_error;
 using clrt::test::load_error_of_file;
 using clrt::test::require_error;
-using clrt::test::TempFolder;
+using clrt::test::ScratchDir;
 
 TEST_CASE("the error text is FILE:LINE:COLUMN: error: MESSAGE", "[scene][errors]") {
-  TempFolder folder;
-  const std::string path = folder.write("bad.ray", "sphere\n  frobnicate 1 2\n");
+  ScratchDir dir;
+  const std::string path = dir.write("bad.ray", "sphere\n  frobnicate 1 2\n");
   const clrt::SceneError e = load_error_of_file(path);
   CHECK(std::string(e.what()) == path + ":2:3: error: unknown command 'frobnicate'");
   CHECK(e.where().file == path);
@@ -49,15 +49,15 @@ TEST_CASE("too few arguments: the error points just past the last word", "[scene
 }
 
 TEST_CASE("a scene file that cannot be read is reported at 1:1", "[scene][errors]") {
-  TempFolder folder;
-  const std::string missing = folder.path("no-such-scene.ray");
+  ScratchDir dir;
+  const std::string missing = dir.file("no-such-scene.ray");
   const clrt::SceneError e = load_error_of_file(missing);
   CHECK(e.where().file == missing);
   CHECK(e.where().line == 1);
   CHECK(e.where().column == 1);
   CHECK_THAT(e.message(), Catch::Contains("cannot read"));
 
-  const clrt::SceneError folder_error = load_error_of_file(folder.path(""));
+  const clrt::SceneError folder_error = load_error_of_file(dir.path().string());
   CHECK(folder_error.where().line == 1);
   CHECK(folder_error.where().column == 1);
   CHECK_THAT(folder_error.message(), Catch::Contains("folder"));

@@ -23,7 +23,7 @@ std::vector<int> columns(const Line& line) {
 
 }  // namespace
 
-TEST_CASE("words carry their 1-based columns; runs of spaces and tabs separate them", "[lexer]") {
+TEST_CASE("words carry their 1-based columns, runs of spaces and tabs separate them", "[lexer]") {
   const auto lines = split_into_lines("eye  1\t\t-2 .5\n", "f");
   REQUIRE(lines.size() == 1);
   CHECK(lines[0].number == 1);

@@ -55,7 +55,7 @@ TEST_CASE("an ior <= 0 means 1", "[scene][material]") {
   CHECK(s.materials[2].ior == 1);
 }
 
-TEST_CASE("objects take the current material; each material command appends one",
+TEST_CASE("objects take the current material, each material command appends one",
           "[scene][material]") {
   const clrt::Scene s = load_text(
       "sphere\nmaterial 1 0 0 .2 .8 0 1 0 0\nplane\ncube\nmaterial 0 1 0 .2 .8 0 1 0 0\n"

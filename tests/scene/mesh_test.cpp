@@ -6,7 +6,7 @@ using clrt::load_scene;
 using clrt::ShapeKind;
 using clrt::Vec3;
 using clrt::test::load_error_of_file;
-using clrt::test::TempFolder;
+using clrt::test::ScratchDir;
 
 namespace {
 
@@ -24,20 +24,26 @@ Vec3 face_normal(const clrt::MeshData& m, std::size_t t) {
   return cross(b - a, c - a);
 }
 
+// Writes `obj_text` to `obj_name` and `scene_text` to scene.ray beside it, and loads the scene.
+clrt::Scene load_with_obj(const std::string& obj_name, const std::string& obj_text,
+                          const std::string& scene_text) {
+  ScratchDir dir;
+  dir.write(obj_name, obj_text);
+  return load_scene(dir.write("scene.ray", scene_text));
+}
+
 // Writes `obj_text` to m.obj, loads a scene whose line 2 is "  mesh m.obj", returns the error.
 clrt::SceneError mesh_error(const std::string& obj_text) {
-  TempFolder folder;
-  folder.write("m.obj", obj_text);
-  return load_error_of_file(folder.write("scene.ray", "\n  mesh m.obj\n"));
+  ScratchDir dir;
+  dir.write("m.obj", obj_text);
+  return load_error_of_file(dir.write("scene.ray", "\n  mesh m.obj\n"));
 }
 
 }  // namespace
 
 TEST_CASE("a mesh with vertex normals: polygons triangulated, normals kept", "[scene][mesh]") {
-  TempFolder folder;
-  folder.write("quad.obj", kQuadWithNormals);
   const clrt::Scene s =
-      load_scene(folder.write("scene.ray", "material 1 0 0 .2 .8 0 1 0 0\nmesh quad.obj\n"));
+      load_with_obj("quad.obj", kQuadWithNormals, "material 1 0 0 .2 .8 0 1 0 0\nmesh quad.obj\n");
   REQUIRE(s.meshes.size() == 1);
   const clrt::MeshData& m = s.meshes[0];
   CHECK(m.positions.size() == 4);
@@ -60,9 +66,7 @@ TEST_CASE("a mesh with vertex normals: polygons triangulated, normals kept", "[s
 }
 
 TEST_CASE("a mesh without normals leaves normals and corner_normals empty", "[scene][mesh]") {
-  TempFolder folder;
-  folder.write("tris.obj", kTwoTrianglesNoNormals);
-  const clrt::Scene s = load_scene(folder.write("scene.ray", "mesh tris.obj\n"));
+  const clrt::Scene s = load_with_obj("tris.obj", kTwoTrianglesNoNormals, "mesh tris.obj\n");
   const clrt::MeshData& m = s.meshes.at(0);
   CHECK(m.corners == std::vector<std::uint32_t>{0, 1, 2, 1, 3, 2});
   CHECK(m.normals.empty());
@@ -70,26 +74,25 @@ TEST_CASE("a mesh without normals leaves normals and corner_normals empty", "[sc
 }
 
 TEST_CASE("normals are dropped unless every corner has one", "[scene][mesh]") {
-  TempFolder folder;
-  folder.write("partial.obj",
-               "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nvn 0 0 1\nf 1//1 2//1 3//1\nf 2 4 3\n");
-  const clrt::Scene s = load_scene(folder.write("scene.ray", "mesh partial.obj\n"));
+  const clrt::Scene s = load_with_obj(
+      "partial.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nvn 0 0 1\nf 1//1 2//1 3//1\nf 2 4 3\n",
+      "mesh partial.obj\n");
   CHECK(s.meshes.at(0).corners.size() == 6);
   CHECK(s.meshes.at(0).normals.empty());
   CHECK(s.meshes.at(0).corner_normals.empty());
 }
 
 TEST_CASE("one mesh file is loaded once and shared by every instance", "[scene][mesh]") {
-  TempFolder folder;
-  folder.write("scenes/models/quad.obj", kQuadWithNormals);
-  folder.write("scenes/models/tris.obj", kTwoTrianglesNoNormals);
-  const clrt::Scene s = load_scene(folder.write(
+  ScratchDir dir;
+  dir.write("scenes/models/quad.obj", kQuadWithNormals);
+  dir.write("scenes/models/tris.obj", kTwoTrianglesNoNormals);
+  const clrt::Scene s = load_scene(dir.write(
       "scenes/many.ray",
       "mesh models/quad.obj\ntranslate 2 0 0\nmesh ./models/quad.obj\nmesh models/tris.obj\n"
       "reset\nmesh models/../models/quad.obj\n"));
   REQUIRE(s.meshes.size() == 2);
-  CHECK(s.meshes[0].path == folder.path("scenes/models/quad.obj"));
-  CHECK(s.meshes[1].path == folder.path("scenes/models/tris.obj"));
+  CHECK(s.meshes[0].path == dir.file("scenes/models/quad.obj"));
+  CHECK(s.meshes[1].path == dir.file("scenes/models/tris.obj"));
   REQUIRE(s.instances.size() == 4);
   CHECK(s.instances[0].mesh == 0);
   CHECK(s.instances[1].mesh == 0);
@@ -100,21 +103,19 @@ TEST_CASE("one mesh file is loaded once and shared by every instance", "[scene][
 }
 
 TEST_CASE("a quoted mesh path may contain spaces", "[scene][mesh]") {
-  TempFolder folder;
-  folder.write("my models/quad #1.obj", kQuadWithNormals);
-  const clrt::Scene s =
-      load_scene(folder.write("scene.ray", "mesh \"my models/quad #1.obj\" # quoted\n"));
+  const clrt::Scene s = load_with_obj("my models/quad #1.obj", kQuadWithNormals,
+                                      "mesh \"my models/quad #1.obj\" # quoted\n");
   CHECK(s.meshes.at(0).corners.size() == 6);
 }
 
 TEST_CASE("a missing mesh file is an error at the mesh command naming the file",
           "[scene][mesh][errors]") {
-  TempFolder folder;
+  ScratchDir dir;
   const clrt::SceneError e =
-      load_error_of_file(folder.write("scene.ray", "sphere\n\tmesh gone.obj\n"));
+      load_error_of_file(dir.write("scene.ray", "sphere\n\tmesh gone.obj\n"));
   CHECK(e.where().line == 2);
   CHECK(e.where().column == 2);
-  CHECK_THAT(e.message(), Catch::Contains(folder.path("gone.obj") + ": cannot be read"));
+  CHECK_THAT(e.message(), Catch::Contains(dir.file("gone.obj") + ": cannot be read"));
 }
 
 TEST_CASE("bad OBJ indices are errors at the mesh command naming the OBJ line",
@@ -127,30 +128,27 @@ TEST_CASE("bad OBJ indices are errors at the mesh command naming the OBJ line",
     CHECK_THAT(e.message(),
                Catch::Contains("m.obj:5: vertex index 4 is out of range (the file has 3)"));
   }
-  SECTION("index 0") {
-    CHECK_THAT(mesh_error(verts + "f 0 1 2\n").message(),
-               Catch::Contains("m.obj:4: vertex index 0"));
-  }
-  SECTION("relative index before the first vertex") {
-    CHECK_THAT(mesh_error(verts + "f -1 -2 -4\n").message(),
-               Catch::Contains("m.obj:4: relative vertex index -4"));
-  }
-  SECTION("normal index past the end") {
-    CHECK_THAT(mesh_error(verts + "vn 0 0 1\nf 1//1 2//1 3//2\n").message(),
-               Catch::Contains("m.obj:5: normal index 2 is out of range (the file has 1)"));
-  }
-  SECTION("a corner that is not an index") {
-    CHECK_THAT(mesh_error(verts + "f 1 2 x\n").message(),
-               Catch::Contains("m.obj:4: bad face corner 'x'"));
-  }
-  SECTION("a face with two corners") {
-    CHECK_THAT(mesh_error(verts + "f 1 2\n").message(),
-               Catch::Contains("m.obj:4: a face needs at least 3"));
-  }
+  struct BadLines {
+    const char* what;
+    const char* lines;  // after the three vertices
+    const char* message;
+  };
+  const BadLines cases[] = {
+      {"index 0", "f 0 1 2\n", "m.obj:4: vertex index 0"},
+      {"relative index before the first vertex", "f -1 -2 -4\n",
+       "m.obj:4: relative vertex index -4"},
+      {"normal index past the end", "vn 0 0 1\nf 1//1 2//1 3//2\n",
+       "m.obj:5: normal index 2 is out of range (the file has 1)"},
+      {"a corner that is not an index", "f 1 2 x\n", "m.obj:4: bad face corner 'x'"},
+      {"a face with two corners", "f 1 2\n", "m.obj:4: a face needs at least 3"},
+  };
+  for (const BadLines& c : cases)
+    DYNAMIC_SECTION(c.what) {
+      CHECK_THAT(mesh_error(verts + c.lines).message(), Catch::Contains(c.message));
+    }
   SECTION("a vertex defined after the face that uses it is fine") {
-    TempFolder folder;
-    folder.write("m.obj", "v 0 0 0\nv 1 0 0\nf 1 2 3\nv 0 1 0\n");
-    CHECK(load_scene(folder.write("scene.ray", "mesh m.obj\n")).meshes.at(0).corners.size() == 3);
+    const std::string obj = "v 0 0 0\nv 1 0 0\nf 1 2 3\nv 0 1 0\n";
+    CHECK(load_with_obj("m.obj", obj, "mesh m.obj\n").meshes.at(0).corners.size() == 3);
   }
 }
 

@@ -51,7 +51,7 @@ TEST_CASE("translate then rotate moves the object around the world origin", "[sc
   CHECK(b.y == Approx(1));
 }
 
-TEST_CASE("reset returns to the identity; objects keep the transform they were made with",
+TEST_CASE("reset returns to the identity, objects keep the transform they were made with",
           "[scene][transform]") {
   const clrt::Scene s = load_text("translate 1 2 3\nsphere\nreset\nsphere\nscale 2 2 2\nplane\n");
   REQUIRE(s.instances.size() == 3);
