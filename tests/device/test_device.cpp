@@ -6,7 +6,7 @@
 
 using namespace clrt;
 
-TEST_CASE("--device specs choose devices", "[device]") {
+TEST_CASE("device specs choose devices", "[device]") {
   const std::vector<DeviceEntry> all = enumerate_devices();
   REQUIRE_FALSE(all.empty());
   const std::vector<DeviceEntry> cpu = select_devices("cpu");
