@@ -5,10 +5,12 @@
  * sizes or how many samples share a wave. */
 #include "render/common.h"
 
-/* colour[owner] += the visible contributions of its shadow rays, in light-sample order. */
+/* colour[owner] += the visible contributions of its shadow rays, in light-sample order. The
+ * queue's length *count is the one compaction left on the device (see shadow.cl). */
 __kernel void gather_shadows(__global const ShadowRay* shadows, __global const float4* visible,
-                             uint count, __global float4* colour) {
+                             __global const uint* count_on_device, __global float4* colour) {
   const uint i = get_global_id(0);
+  const uint count = *count_on_device;
   if (i >= count) return;
   const uint owner = shadows[i].owner;
   if (i > 0 && shadows[i - 1].owner == owner) return;

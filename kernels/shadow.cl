@@ -1,13 +1,16 @@
 /* shadow: an any-hit test of every shadow ray of the compacted queue.
- * In: shadows[0, count). Out: visible[i] = the ray's contribution when nothing lies between
- * epsilon and the light (origin.w), else zero. gather_shadows (accumulate.cl) adds them up. */
+ * In: shadows[0, *count); the count stays on the device where compaction wrote it, so the host
+ * launches over an upper bound instead of waiting to read it. Out: visible[i] = the ray's
+ * contribution when nothing lies between epsilon and the light (origin.w), else zero.
+ * gather_shadows (accumulate.cl) adds them up. */
 #include "render/common.h"
 #include "geometry/scene_intersect.h"
 
 __kernel void shadow(SCENE_PARAMS, __global const RenderParams* params,
-                     __global const ShadowRay* shadows, uint count, __global float4* visible) {
+                     __global const ShadowRay* shadows, __global const uint* count,
+                     __global float4* visible) {
   const uint i = get_global_id(0);
-  if (i >= count) return;
+  if (i >= *count) return;
   const ShadowRay s = shadows[i];
   const bool blocked =
       scene_any_hit(SCENE_ARGS, xyz(s.origin), xyz(s.dir), params->epsilon, s.origin.w);

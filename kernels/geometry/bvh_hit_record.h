@@ -2,6 +2,7 @@
  * once the search is over (normals and materials are only worth computing for the winner). */
 #ifndef CLRT_GEOMETRY_BVH_HIT_RECORD_H
 #define CLRT_GEOMETRY_BVH_HIT_RECORD_H
+#include "shared/bvh.h"
 #include "shared/ray.h"
 #include "shared/scene.h"
 #include "geometry/instance.h"
@@ -10,16 +11,16 @@
 typedef struct HitRecord {
   float t;
   u32 instance;      /* CLRT_NO_HIT while nothing was hit */
-  u32 triangle;      /* absolute index into the triangle table (meshes only) */
+  int packet, lane;  /* meshes: the hit triangle's packet (block) and lane */
   float u, v;        /* barycentrics of the hit triangle */
-  float3 object_normal; /* canonical shapes: outward normal in object space */
+  float3 object_normal; /* canonical shapes but spheres: outward normal in object space */
 } HitRecord;
 
 inline HitRecord hit_record_none(float tmax) {
   HitRecord r;
   r.t = tmax;
   r.instance = CLRT_NO_HIT;
-  r.triangle = 0;
+  r.packet = r.lane = 0;
   r.u = r.v = 0.0f;
   r.object_normal = (float3)(0.0f);
   return r;
@@ -33,8 +34,18 @@ inline float3 bvh_world_normal(__global const Instance* inst, float3 n, float3 f
   return dot(n, n) > 0.0f ? instance_normal_to_world(inst, n) : fallback;
 }
 
-inline void hit_record_resolve(const HitRecord* r, __global const Instance* instances,
-                               __global const Mesh* meshes, __global const Triangle* triangles,
+/* Vertex j of lane `lane` of a triangle packet. */
+inline float3 bvh_packet_vertex(__global const BvhTrianglePacket* p, int j, int lane) {
+  __global const float* v = (__global const float*)(p->v + 3 * j);
+  return (float3)(v[lane], v[4 + lane], v[8 + lane]);
+}
+
+/* The hit of the world ray o + t d that *r records, as the renderer's Hit. A sphere's object-space
+ * normal is its hit point in object space (the sphere tests in world space leave none); a
+ * triangle's vertices come from its packet, which the search has just read, rather than from
+ * the triangle table. */
+inline void hit_record_resolve(const HitRecord* r, float3 o, float3 d, __global const Instance* instances,
+                               __global const Mesh* meshes, __global const BvhBlock* bvh,
                                __global const TriangleNormals* triangle_normals,
                                __global const u32* triangle_materials, Hit* hit) {
   hit->instance = r->instance;
@@ -49,24 +60,28 @@ inline void hit_record_resolve(const HitRecord* r, __global const Instance* inst
   __global const Instance* inst = instances + r->instance;
   float3 geometric, shading;
   if (inst->shape != CLRT_SHAPE_MESH) {
-    geometric = shading = bvh_world_normal(inst, r->object_normal, (float3)(0.0f, 1.0f, 0.0f));
+    const float3 object_normal = inst->shape == CLRT_SHAPE_SPHERE
+                                     ? instance_point_to_object(inst, o + r->t * d) : r->object_normal;
+    geometric = shading = bvh_world_normal(inst, object_normal, (float3)(0.0f, 1.0f, 0.0f));
     hit->primitive = 0u;
     hit->material = inst->material;
   } else {
     __global const Mesh* mesh = meshes + inst->mesh;
-    const Triangle tri = triangles[r->triangle];
-    const float3 v0 = bvh_float3(tri.v0), v1 = bvh_float3(tri.v1), v2 = bvh_float3(tri.v2);
+    __global const BvhTrianglePacket* packet = (__global const BvhTrianglePacket*)(bvh + r->packet);
+    const u32 triangle = packet->triangle[r->lane];
+    const float3 v0 = bvh_packet_vertex(packet, 0, r->lane), v1 = bvh_packet_vertex(packet, 1, r->lane),
+                 v2 = bvh_packet_vertex(packet, 2, r->lane);
     geometric = bvh_world_normal(inst, triangle_normal(v0, v1, v2), (float3)(0.0f, 1.0f, 0.0f));
     shading = geometric;
     if (mesh->has_normals) {
-      const TriangleNormals n = triangle_normals[r->triangle];
+      const TriangleNormals n = triangle_normals[triangle];
       const float3 interpolated = (1.0f - r->u - r->v) * bvh_float3(n.n0) +
                                   r->u * bvh_float3(n.n1) + r->v * bvh_float3(n.n2);
       shading = bvh_world_normal(inst, interpolated, geometric);
     }
-    hit->primitive = r->triangle - mesh->first_triangle;
+    hit->primitive = triangle - mesh->first_triangle;
     hit->material = inst->material == CLRT_MATERIAL_PER_TRIANGLE
-                        ? triangle_materials[r->triangle] : inst->material;
+                        ? triangle_materials[triangle] : inst->material;
   }
   hit->geometric_normal = (float4)(geometric, r->t);
   hit->shading_normal = (float4)(shading, 0.0f);

@@ -5,21 +5,46 @@
 #include "shared/bvh.h"
 #include "geometry/bvh_ray.h"
 
+/* A reference to visit: BvhNode.child's encoding with its count, or BVH_LEAVE_MESH. */
+typedef struct BvhEntry {
+  int ref;
+  u32 count;
+  float t; /* entry distance */
+} BvhEntry;
+
 /* An entry that is no node or leaf: the ray leaves a mesh's bottom level for the top level. */
 #define BVH_LEAVE_MESH INT_MIN
 
+/* Entries are stored as (ref, count, t, unused) in one int4, which moves with one instruction. */
 typedef struct BvhStack {
-  int ref[CLRT_BVH_STACK_SIZE];   /* BvhNode.child encoding, or BVH_LEAVE_MESH */
-  u32 count[CLRT_BVH_STACK_SIZE]; /* leaf item count */
-  float t[CLRT_BVH_STACK_SIZE];   /* entry distance */
+  int4 entry[CLRT_BVH_STACK_SIZE];
   int size;
 } BvhStack;
 
-inline void bvh_push(BvhStack* s, int ref, u32 count, float t) {
-  s->ref[s->size] = ref;
-  s->count[s->size] = count;
-  s->t[s->size] = t;
-  ++s->size;
+inline BvhEntry bvh_entry(int ref, u32 count, float t) {
+  BvhEntry e;
+  e.ref = ref;
+  e.count = count;
+  e.t = t;
+  return e;
+}
+
+inline int4 bvh_pack(int ref, u32 count, float t) { return (int4)(ref, (int)count, as_int(t), 0); }
+
+inline BvhEntry bvh_unpack(int4 v) { return bvh_entry(v.x, (u32)v.y, as_float(v.z)); }
+
+inline void bvh_push(BvhStack* s, BvhEntry e) { s->entry[s->size++] = bvh_pack(e.ref, e.count, e.t); }
+
+/* Pops the next entry the ray enters before t_limit into *e; false when none is left. */
+inline bool bvh_pop(BvhStack* s, float t_limit, BvhEntry* e) {
+  while (s->size > 0) {
+    const int4 top = s->entry[--s->size];
+    if (as_float(top.z) < t_limit) {
+      *e = bvh_unpack(top);
+      return true;
+    }
+  }
+  return false;
 }
 
 /* Starts loading a node that is about to be pushed: traversal is bound by memory latency, and
@@ -34,31 +59,48 @@ inline void bvh_prefetch(__global const BvhNode* node) {
 #endif
 }
 
-/* Pushes the children of `node` that the ray enters in [tmin, tmax]. When `ordered`, they go
- * on sorted so that the nearest is popped first: closest-hit searches then find near hits
- * early and skip what lies behind them. */
-inline void bvh_push_children(BvhStack* s, __global const BvhNode* nodes, int index,
-                              const BvhRay* ray, float tmin, float tmax, bool ordered) {
-  __global const BvhNode* node = nodes + index;
+inline __global const BvhNode* bvh_node(__global const BvhBlock* table, int block) {
+  return (__global const BvhNode*)(table + block);
+}
+
+/* Child k of `node` entered at t, as a stack entry; an inner node's loading is started. */
+inline int4 bvh_child(__global const BvhBlock* table, __global const BvhNode* node, int k, float t) {
+  const int child = node->child[k];
+  if (child >= 0) bvh_prefetch(bvh_node(table, child));
+  return bvh_pack(child, node->count[k], t);
+}
+
+/* Visits the node of *e: the children the ray enters in [tmin, tmax] are to be visited, and *e
+ * becomes the first of them while the others are pushed. When `ordered`, that is the nearest
+ * and the others are pushed so that they pop nearest first: closest-hit searches then find
+ * near hits early and skip what lies behind them. False when the ray enters no child. */
+inline bool bvh_descend(BvhStack* s, __global const BvhBlock* table, const BvhRay* ray,
+                        float tmin, float tmax, bool ordered, BvhEntry* e) {
+  __global const BvhNode* node = bvh_node(table, e->ref);
   BvhLanes t_enter;
-  int mask = bvh_node_test(node, ray, tmin, tmax, &t_enter);
+  BvhMask mask = bvh_node_test(node, ray, tmin, tmax, &t_enter);
+  if (mask == 0) return false;
   float t[CLRT_BVH_WIDTH];
   bvh_store_lanes(t_enter, 0, t);
-  const int base = s->size;
-  while (mask != 0) {
-    const int k = 31 - clz(mask & -mask);
-    mask &= mask - 1;
-    int i = s->size++;
-    for (; ordered && i > base && s->t[i - 1] < t[k]; --i) {
-      s->ref[i] = s->ref[i - 1];
-      s->count[i] = s->count[i - 1];
-      s->t[i] = s->t[i - 1];
-    }
-    if (node->child[k] >= 0) bvh_prefetch(nodes + node->child[k]);
-    s->ref[i] = node->child[k];
-    s->count[i] = node->count[k];
-    s->t[i] = t[k];
+  int k = bvh_first_lane(mask);
+  mask &= mask - 1;
+  if (mask == 0) {
+    *e = bvh_entry(node->child[k], node->count[k], t[k]);
+    return true;
   }
+  /* Two or more: the first goes on the stack, the others are sorted in above it. */
+  const int base = s->size;
+  s->entry[s->size++] = bvh_child(table, node, k, t[k]);
+  do {
+    k = bvh_first_lane(mask);
+    mask &= mask - 1;
+    const int4 entry = bvh_child(table, node, k, t[k]);
+    int i = s->size++;
+    for (; ordered && i > base && as_float(s->entry[i - 1].z) < t[k]; --i) s->entry[i] = s->entry[i - 1];
+    s->entry[i] = entry;
+  } while (mask != 0);
+  *e = bvh_unpack(s->entry[--s->size]);
+  return true;
 }
 
 #endif

@@ -4,16 +4,27 @@
 
 #include "shared/scene.h"
 
-/* The world ray mapped by M^-1 (rows of inst->world_to_object). The direction is not
- * normalised, so a t found in object space is the world t. */
+/* A world point or vector (w = 1 or 0) mapped by the rows of M^-1. */
+inline float3 transform_to_object(__global const f4* rows, float4 p) {
+  return (float3)(dot(rows[0], p), dot(rows[1], p), dot(rows[2], p));
+}
+
+/* A world point mapped by M^-1 (rows of inst->world_to_object). */
+inline float3 instance_point_to_object(__global const Instance* inst, float3 p) {
+  return transform_to_object(inst->world_to_object, (float4)(p, 1.0f));
+}
+
+/* The world ray mapped by the rows of M^-1. The direction is not normalised, so a t found in
+ * object space is the world t. */
+inline void ray_to_object(__global const f4* rows, float3 o, float3 d, float3* object_o,
+                          float3* object_d) {
+  *object_o = transform_to_object(rows, (float4)(o, 1.0f));
+  *object_d = transform_to_object(rows, (float4)(d, 0.0f));
+}
+
 inline void instance_ray_to_object(__global const Instance* inst, float3 o, float3 d,
                                    float3* object_o, float3* object_d) {
-  const float4 point = (float4)(o, 1.0f), vector = (float4)(d, 0.0f);
-  *object_o = (float3)(dot(inst->world_to_object[0], point), dot(inst->world_to_object[1], point),
-                       dot(inst->world_to_object[2], point));
-  *object_d = (float3)(dot(inst->world_to_object[0], vector),
-                       dot(inst->world_to_object[1], vector),
-                       dot(inst->world_to_object[2], vector));
+  ray_to_object(inst->world_to_object, o, d, object_o, object_d);
 }
 
 /* An object-space normal mapped by (M^-1)^T and normalised. */

@@ -15,11 +15,12 @@
 #include "geometry/triangle.h"
 #include "geometry/instance.h"
 #include "geometry/bvh_hit_record.h"
+#include "geometry/bvh_packets.h"
 #include "geometry/bvh_ray.h"
 #include "geometry/bvh_stack.h"
 
-#define SCENE_PARAMS u32 instance_count, u32 plane_count, __global const Instance* instances, __global const Mesh* meshes, __global const Triangle* triangles, __global const TriangleNormals* triangle_normals, __global const u32* triangle_materials, __global const BvhNode* nodes
-#define SCENE_ARGS instance_count, plane_count, instances, meshes, triangles, triangle_normals, triangle_materials, nodes
+#define SCENE_PARAMS u32 instance_count, u32 plane_count, __global const Instance* instances, __global const Mesh* meshes, __global const Triangle* triangles, __global const TriangleNormals* triangle_normals, __global const u32* triangle_materials, __global const BvhBlock* bvh
+#define SCENE_ARGS instance_count, plane_count, instances, meshes, triangles, triangle_normals, triangle_materials, bvh
 
 /* Canonical shape instance `index` against the world ray; updates *best on a hit in
  * (tmin, best->t). */
@@ -35,27 +36,6 @@ inline bool bvh_test_shape(__global const Instance* instances, u32 index, float3
   return true;
 }
 
-/* Triangles [first, first + count) of mesh instance `instance` against its object-space ray. */
-inline bool bvh_test_triangles(__global const Triangle* triangles, u32 first, u32 count,
-                               u32 instance, const BvhRay* ray, float tmin, bool any,
-                               HitRecord* best) {
-  bool found = false;
-  for (u32 k = first; k < first + count; ++k) {
-    const Triangle tri = triangles[k];
-    float u, v;
-    if (!intersect_triangle(bvh_float3(tri.v0), bvh_float3(tri.v1), bvh_float3(tri.v2), ray->o,
-                            ray->d, tmin, &best->t, &u, &v))
-      continue;
-    best->instance = instance;
-    best->triangle = k;
-    best->u = u;
-    best->v = v;
-    found = true;
-    if (any) break;
-  }
-  return found;
-}
-
 /* The search behind both queries: hits in (tmin, best->t) go into *best; `any` stops at the
  * first one. Returns whether anything was hit. */
 inline bool scene_search(SCENE_PARAMS, float3 o, float3 d, float tmin, bool any, HitRecord* best) {
@@ -66,37 +46,33 @@ inline bool scene_search(SCENE_PARAMS, float3 o, float3 d, float tmin, bool any,
   u32 mesh_instance = CLRT_NO_HIT; /* the instance whose bottom level is being traversed */
   BvhStack stack;
   stack.size = 0;
-  if (instance_count > plane_count) bvh_push(&stack, 0, 0u, -INFINITY);
-  while (stack.size > 0) {
-    const int top = --stack.size;
-    const int ref = stack.ref[top];
-    if (ref == BVH_LEAVE_MESH) {
+  BvhEntry e = bvh_entry(0, 0u, -INFINITY);
+  if (instance_count == plane_count) return best->instance != CLRT_NO_HIT;
+  for (;;) {
+    bool hit = false;
+    if (e.ref == BVH_LEAVE_MESH) {
       ray = world;
       mesh_instance = CLRT_NO_HIT;
-      continue;
-    }
-    if (stack.t[top] >= best->t) continue;
-    if (ref >= 0) {
-      bvh_push_children(&stack, nodes, ref, &ray, tmin, best->t, !any);
-      continue;
-    }
-    const u32 first = ~(u32)ref;
-    bool hit;
-    if (mesh_instance != CLRT_NO_HIT) {
-      hit = bvh_test_triangles(triangles, first, stack.count[top], mesh_instance, &ray, tmin, any,
-                               best);
-    } else if (instances[first].shape != CLRT_SHAPE_MESH) {
-      hit = bvh_test_shape(instances, first, o, d, tmin, best);
-    } else {
+    } else if (e.ref >= 0) {
+      if (bvh_descend(&stack, bvh, &ray, tmin, best->t, !any, &e)) continue;
+    } else if (e.count & CLRT_BVH_SPHERE_LEAF) {
+      hit = bvh_test_spheres(bvh, ~e.ref, e.count & ~CLRT_BVH_SPHERE_LEAF, o, d, tmin, any, best);
+    } else if (e.count & CLRT_BVH_INSTANCE_LEAF) {
+      hit = bvh_test_shape(instances, ~e.ref, o, d, tmin, best);
+    } else if (e.count & CLRT_BVH_MESH_LEAF) {
+      __global const BvhMeshInstancePacket* entry = (__global const BvhMeshInstancePacket*)(bvh + ~e.ref);
       float3 oo, od;
-      instance_ray_to_object(instances + first, o, d, &oo, &od);
+      ray_to_object(entry->world_to_object, o, d, &oo, &od);
       ray = bvh_ray(oo, od);
-      mesh_instance = first;
-      bvh_push(&stack, BVH_LEAVE_MESH, 0u, 0.0f);
-      bvh_push(&stack, (int)meshes[instances[first].mesh].root_node, 0u, stack.t[top]);
+      mesh_instance = entry->instance;
+      bvh_push(&stack, bvh_entry(BVH_LEAVE_MESH, 0u, -INFINITY));
+      e = bvh_entry((int)entry->root, 0u, e.t);
       continue;
+    } else {
+      hit = bvh_test_triangles(bvh, ~e.ref, e.count, mesh_instance, &ray, tmin, any, best);
     }
     if (hit && any) return true;
+    if (!bvh_pop(&stack, best->t, &e)) break;
   }
   return best->instance != CLRT_NO_HIT;
 }
@@ -110,7 +86,7 @@ inline bool scene_search(SCENE_PARAMS, float3 o, float3 d, float tmin, bool any,
 inline bool scene_closest_hit(SCENE_PARAMS, float3 o, float3 d, float tmin, float tmax, Hit* hit) {
   HitRecord best = hit_record_none(tmax);
   const bool found = scene_search(SCENE_ARGS, o, d, tmin, false, &best);
-  hit_record_resolve(&best, instances, meshes, triangles, triangle_normals, triangle_materials, hit);
+  hit_record_resolve(&best, o, d, instances, meshes, bvh, triangle_normals, triangle_materials, hit);
   return found;
 }
 

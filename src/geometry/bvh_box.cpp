@@ -33,4 +33,15 @@ Box transformed_box(const Box& box, const Mat4& m) {
   return padded_world_box(lo, hi);
 }
 
+Box lane_box(const dev::BvhNode& node, int k) {
+  Box b;
+  b.lo[0] = node.min_x.lane[k];
+  b.lo[1] = node.min_y.lane[k];
+  b.lo[2] = node.min_z.lane[k];
+  b.hi[0] = node.max_x.lane[k];
+  b.hi[1] = node.max_y.lane[k];
+  b.hi[2] = node.max_z.lane[k];
+  return b;
+}
+
 }  // namespace clrt

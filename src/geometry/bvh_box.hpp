@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "math/mat4.hpp"
+#include "shared/bvh.h"
 
 namespace clrt {
 
@@ -49,5 +50,8 @@ Box padded_world_box(const Vec3& lo, const Vec3& hi);
 // The padded world box of `box` (in object space) after the affine transform `m`, from its eight
 // corners.
 Box transformed_box(const Box& box, const Mat4& m);
+
+// The box of lane `k` of a device node (empty for an empty lane).
+Box lane_box(const dev::BvhNode& node, int k);
 
 }  // namespace clrt

@@ -9,8 +9,13 @@ namespace {
 constexpr int kBins = 32;
 
 struct Bin {
-  std::uint32_t count = 0;
+  std::uint32_t count = 0, alone = 0;
   Box bounds;
+  void add(const Bin& b) {
+    count += b.count;
+    alone += b.alone;
+    bounds.grow(b.bounds);
+  }
 };
 
 struct Binning {
@@ -34,36 +39,36 @@ float sah_area(const Box& b) { return b.half_area(); }
 
 struct Candidate {
   int axis = -1, last_left_bin = 0;
-  float weighted = 0;  // area(left) * count(left) + area(right) * count(right)
+  float weighted = 0;  // area(left) * leaf_cost(left) + area(right) * leaf_cost(right)
 };
 
 // Sweeps the bins of one axis from both ends and keeps the cheapest boundary in `best`.
-void sweep(const std::array<Bin, kBins>& bins, int axis, Candidate& best) {
+void sweep(const std::array<Bin, kBins>& bins, int axis, const SahCosts& costs, Candidate& best) {
   std::array<Bin, kBins> right;
   Bin acc;
   for (int b = kBins - 1; b > 0; --b) {
-    acc.count += bins[b].count;
-    acc.bounds.grow(bins[b].bounds);
+    acc.add(bins[b]);
     right[b] = acc;
   }
   Bin left;
   for (int b = 0; b + 1 < kBins; ++b) {
-    left.count += bins[b].count;
-    left.bounds.grow(bins[b].bounds);
+    left.add(bins[b]);
     const Bin& r = right[b + 1];
     if (left.count == 0 || r.count == 0) continue;
-    const float weighted = sah_area(left.bounds) * left.count + sah_area(r.bounds) * r.count;
+    const float weighted = sah_area(left.bounds) * costs.leaf_cost(left.count, left.alone) +
+                           sah_area(r.bounds) * costs.leaf_cost(r.count, r.alone);
     if (best.axis < 0 || weighted < best.weighted) best = {axis, b, weighted};
   }
 }
 
 }  // namespace
 
-BuildItems make_build_items(const std::vector<Box>& boxes) {
+BuildItems make_build_items(const std::vector<Box>& boxes, const std::vector<bool>& alone) {
   BuildItems items(boxes.size());
   for (std::size_t i = 0; i < boxes.size(); ++i) {
     items[i].box = boxes[i];
     items[i].index = static_cast<std::uint32_t>(i);
+    items[i].alone = !alone.empty() && alone[i];
     // An empty box (a mesh without triangles) has no centre; any finite stand-in will do.
     for (int a = 0; a < 3; ++a) items[i].center[a] = boxes[i].empty() ? 0.0f : boxes[i].center(a);
   }
@@ -77,23 +82,25 @@ Range make_range(const BuildItems& items, std::uint32_t begin, std::uint32_t end
   for (std::uint32_t i = begin; i < end; ++i) {
     r.bounds.grow(items[i].box);
     r.centroids.grow(items[i].center[0], items[i].center[1], items[i].center[2]);
+    r.alone += items[i].alone;
   }
   return r;
 }
 
-std::optional<Split> split_sah(BuildItems& items, const Range& range, float node_cost) {
+std::optional<Split> split_sah(BuildItems& items, const Range& range, const SahCosts& costs) {
   const Binning binning(range.centroids);
   std::array<std::array<Bin, kBins>, 3> bins;
   for (std::uint32_t i = range.begin; i < range.end; ++i) {
     for (int a = 0; a < 3; ++a) {
       Bin& bin = bins[a][binning.bin(items[i].center[a], a)];
       ++bin.count;
+      bin.alone += items[i].alone;
       bin.bounds.grow(items[i].box);
     }
   }
   Candidate best;
   for (int a = 0; a < 3; ++a)
-    if (binning.scale[a] > 0) sweep(bins[a], a, best);
+    if (binning.scale[a] > 0) sweep(bins[a], a, costs, best);
   if (best.axis < 0) return std::nullopt;
 
   const auto middle = std::partition(items.begin() + range.begin, items.begin() + range.end,
@@ -105,7 +112,7 @@ std::optional<Split> split_sah(BuildItems& items, const Range& range, float node
   Split split;
   split.left = make_range(items, range.begin, mid);
   split.right = make_range(items, mid, range.end);
-  split.cost = area > 0 ? node_cost + best.weighted / area : node_cost + range.size();
+  split.cost = costs.node_cost + (area > 0 ? best.weighted / area : costs.leaf_cost(range.size(), range.alone));
   return split;
 }
 

@@ -16,17 +16,20 @@ struct BuildItem {
   Box box;
   float center[3];
   std::uint32_t index;  // of the box the build was given
+  bool alone;           // may only be a leaf by itself
 };
 
 // The items in tree order: ranges are slices of it, partitioned in place.
 using BuildItems = std::vector<BuildItem>;
 
-BuildItems make_build_items(const std::vector<Box>& boxes);
+// `alone[i]` says whether boxes[i] must be alone in its leaf (empty: none must).
+BuildItems make_build_items(const std::vector<Box>& boxes, const std::vector<bool>& alone);
 
 struct Range {
   std::uint32_t begin = 0, end = 0;  // into BuildItems
   Box bounds;                        // of the items' boxes
   Box centroids;                     // of the items' centres
+  std::uint32_t alone = 0;           // items that must be alone in their leaf
   std::uint32_t size() const { return end - begin; }
 };
 
@@ -34,12 +37,22 @@ Range make_range(const BuildItems& items, std::uint32_t begin, std::uint32_t end
 
 struct Split {
   Range left, right;
-  float cost = 0;  // SAH cost of the two halves relative to testing the range's items as a leaf
+  float cost = 0;  // SAH cost of the two halves, comparable with SahCosts::leaf_cost
+};
+
+// The SAH's costs, relative to testing one packet of items.
+struct SahCosts {
+  float node_cost = 1;       // of visiting one more node
+  unsigned packet_size = 1;  // items tested at once
+  // Of leaves holding `items`, `alone` of which are each a leaf by themselves.
+  float leaf_cost(std::uint32_t items, std::uint32_t alone = 0) const {
+    return static_cast<float>((items - alone + packet_size - 1) / packet_size + alone);
+  }
 };
 
 // The cheapest split of `range` at a bin boundary of its centroid box, with items[begin, end)
 // partitioned accordingly; nothing (and the items untouched) when every centre coincides.
-std::optional<Split> split_sah(BuildItems& items, const Range& range, float node_cost);
+std::optional<Split> split_sah(BuildItems& items, const Range& range, const SahCosts& costs);
 
 // Halves `range` by count along the axis where the centres spread most.
 Split split_median(BuildItems& items, const Range& range);

@@ -68,4 +68,17 @@ Box shape_world_box(const InstanceSpec& spec) {
   return padded_world_box(e.lo, e.hi);
 }
 
+std::optional<WorldSphere> world_sphere(const InstanceSpec& spec) {
+  if (spec.shape != ShapeKind::Sphere) return std::nullopt;
+  const Mat4& m = spec.transform;
+  // A similarity's columns are orthogonal and of one length, the scale.
+  const Vec3 c[3] = {column(m, 0), column(m, 1), column(m, 2)};
+  const double scale2 = (dot(c[0], c[0]) + dot(c[1], c[1]) + dot(c[2], c[2])) / 3;
+  const double tolerance = 1e-6 * scale2;
+  for (int i = 0; i < 3; ++i)
+    for (int j = i; j < 3; ++j)
+      if (std::fabs(dot(c[i], c[j]) - (i == j ? scale2 : 0.0)) > tolerance) return std::nullopt;
+  return WorldSphere{m.transform_point({0, 0, 0}), std::sqrt(scale2)};
+}
+
 }  // namespace clrt

@@ -17,6 +17,13 @@ std::uint32_t Compactor::compact(const compute::buffer& in, const compute::buffe
                                  std::size_t slots, std::size_t record_bytes,
                                  const compute::buffer& out, std::size_t capacity) {
   if (slots == 0) return 0;
+  enqueue(in, flags, slots, record_bytes, out, capacity);
+  return read_total();
+}
+
+void Compactor::enqueue(const compute::buffer& in, const compute::buffer& flags, std::size_t slots,
+                        std::size_t record_bytes, const compute::buffer& out,
+                        std::size_t capacity) {
   auto& queue = device_.queue();
   const auto n = static_cast<std::uint32_t>(slots);
   const std::uint32_t chunks = (n + kChunk - 1) / kChunk;
@@ -27,8 +34,11 @@ std::uint32_t Compactor::compact(const compute::buffer& in, const compute::buffe
   scatter_.set_args(in, flags, n, kChunk, static_cast<std::uint32_t>(record_bytes / 16),
                     chunk_counts_, out, static_cast<std::uint32_t>(capacity));
   events_[2] = launch(queue, scatter_, chunks);
+}
+
+std::uint32_t Compactor::read_total() {
   std::uint32_t total = 0;
-  queue.enqueue_read_buffer(total_, 0, sizeof(total), &total);
+  device_.queue().enqueue_read_buffer(total_, 0, sizeof(total), &total);
   return total;
 }
 

@@ -20,6 +20,14 @@ class Compactor {
                         std::size_t record_bytes, const compute::buffer& out,
                         std::size_t capacity);
 
+  // The same, without waiting: the count is left in total() for kernels that read it there.
+  void enqueue(const compute::buffer& in, const compute::buffer& flags, std::size_t slots,
+               std::size_t record_bytes, const compute::buffer& out, std::size_t capacity);
+  std::uint32_t read_total();
+
+  // One uint on the device: the flagged count of the last call.
+  const compute::buffer& total() const { return total_; }
+
   // Slots per work-item: large enough that each work-item streams a long run (no barriers or
   // atomics needed), small enough that 2 cores still get many work-items per launch.
   static constexpr std::uint32_t kChunk = 256;

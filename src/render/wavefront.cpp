@@ -197,23 +197,25 @@ void WavefrontRenderer::shade_chunk(std::size_t pass, std::uint32_t first, std::
   trace("shade", pass, shade_, count);
   const std::size_t slots = std::size_t{count} * frame_.params.shadow_samples;
   if (frame_.params.mode != CLRT_MODE_TRACE || slots == 0) return;
-  const std::uint32_t shadows = compactor_.compact(shadow_slots_, shadow_flags_, slots,
-                                                   sizeof(dev::ShadowRay), shadow_queue_, slots);
+  // The shadow queue's length stays on the device: shadow and gather_shadows are launched over
+  // all the slots and read it there, so the host never waits in the middle of a pass.
+  compactor_.enqueue(shadow_slots_, shadow_flags_, slots, sizeof(dev::ShadowRay), shadow_queue_,
+                     slots);
   if (profile_) {
     timed_.push_back({"compact_count", pass, compactor_.count_event()});
     timed_.push_back({"compact_scan", pass, compactor_.scan_event()});
     timed_.push_back({"compact_scatter", pass, compactor_.scatter_event()});
+    const std::uint32_t shadows = compactor_.read_total();
+    stats_.shadow_rays += shadows;
+    stats_.passes[pass].shadow_rays += shadows;
   }
-  stats_.shadow_rays += shadows;
-  stats_.passes[pass].shadow_rays += shadows;
-  if (shadows == 0) return;
   shadow_.set_arg(kGeometryArgs + 0, params_);
   shadow_.set_arg(kGeometryArgs + 1, shadow_queue_);
-  shadow_.set_arg(kGeometryArgs + 2, shadows);
+  shadow_.set_arg(kGeometryArgs + 2, compactor_.total());
   shadow_.set_arg(kGeometryArgs + 3, visible_);
-  trace("shadow", pass, shadow_, shadows);
-  gather_.set_args(shadow_queue_, visible_, shadows, colour_);
-  trace("gather_shadows", pass, gather_, shadows);
+  trace("shadow", pass, shadow_, slots);
+  gather_.set_args(shadow_queue_, visible_, compactor_.total(), colour_);
+  trace("gather_shadows", pass, gather_, slots);
 }
 
 void WavefrontRenderer::trace(const char* kernel, std::size_t pass, compute::kernel& k,

@@ -43,6 +43,12 @@ Mat4 random_transform(std::mt19937& rng, double spread) {
          Mat4::rotate(uniform(rng, 0, 360), random_direction(rng)) * Mat4::scale(scale);
 }
 
+Mat4 random_similarity(std::mt19937& rng, double spread, double min_scale, double max_scale) {
+  const double scale = uniform(rng, min_scale, max_scale);
+  return Mat4::translate(random_point(rng, spread)) *
+         Mat4::rotate(uniform(rng, 0, 360), random_direction(rng)) * Mat4::scale({scale, scale, scale});
+}
+
 MeshData ball_mesh(int rings, int segments, bool with_normals) {
   MeshData mesh;
   mesh.path = "ball";
@@ -92,6 +98,22 @@ Scene random_scene(std::mt19937& rng, int count, int triangles) {
     scene.triangles.push_back({c + random_point(rng, 1.5), c + random_point(rng, 1.5),
                                c + random_point(rng, 1.5), t % 4});
   }
+  return scene;
+}
+
+Scene sphere_scene(std::mt19937& rng, int count) {
+  Scene scene;
+  scene.materials.resize(3);
+  const double spread = std::cbrt(static_cast<double>(count));
+  for (int i = 0; i < count; ++i) {
+    const double size = std::pow(10.0, uniform(rng, -2, 0.5));
+    scene.instances.push_back(placed(ShapeKind::Sphere, random_similarity(rng, spread, size, size), i % 3));
+  }
+  for (int i = 0; i < 5; ++i) scene.instances.push_back(placed(ShapeKind::Sphere, random_transform(rng, spread)));
+  scene.meshes.push_back(ball_mesh(6, 8, false));
+  InstanceSpec ball = placed(ShapeKind::Mesh, random_transform(rng, spread), 1);
+  ball.mesh = 0;
+  scene.instances.push_back(ball);
   return scene;
 }
 

@@ -14,6 +14,9 @@ InstanceSpec placed(ShapeKind shape, const Mat4& m, int material = 0);
 // A random rotation, non-uniform scale (0.3 to 2 per axis) and translation within +-`spread`.
 Mat4 random_transform(std::mt19937& rng, double spread);
 
+// A random rotation, uniform scale in [min_scale, max_scale] and translation within +-`spread`.
+Mat4 random_similarity(std::mt19937& rng, double spread, double min_scale, double max_scale);
+
 // A closed mesh: a sphere-like ball of `rings` x `segments` quads split into triangles, with
 // per-vertex normals when `with_normals`.
 MeshData ball_mesh(int rings, int segments, bool with_normals);
@@ -21,6 +24,11 @@ MeshData ball_mesh(int rings, int segments, bool with_normals);
 // `count` spheres, cubes, cylinders and cones under random transforms, one plane, `triangles`
 // random loose triangles with cycling materials, and two instances of a small ball mesh.
 Scene random_scene(std::mt19937& rng, int count, int triangles);
+
+// `count` spheres under similarities (which the BVH tests in world space, in packets) with
+// radii over three orders of magnitude, so that many overlap, a few of them within others; a
+// few ellipsoids; one instance of a small ball mesh.
+Scene sphere_scene(std::mt19937& rng, int count);
 
 struct TestRay {
   Vec3 o, d;

@@ -3,12 +3,15 @@
 
 #include <cmath>
 #include <random>
+#include <set>
 
 #include "bvh_test_scenes.hpp"
 #include "bvh_tree_check.hpp"
 #include "geometry/bvh_builder.hpp"
+#include "geometry/bvh_layout.hpp"
 #include "geometry/instance_bounds.hpp"
 #include "geometry/geometry_data.hpp"
+#include "shared/ray.h"
 
 using namespace clrt;
 using namespace clrt::bvhtest;
@@ -60,21 +63,63 @@ std::vector<Vec3> instance_points(const Scene& scene, const GeometryData& g, std
   return points;
 }
 
-void check_scene_bvh(const Scene& scene, const GeometryData& g) {
+bool identity_rows(const dev::Instance& inst) {
+  for (int r = 0; r < 3; ++r) {
+    const dev::f4& row = inst.world_to_object[r];
+    const float want[4] = {r == 0 ? 1.0f : 0.0f, r == 1 ? 1.0f : 0.0f, r == 2 ? 1.0f : 0.0f, 0.0f};
+    if (row.x != want[0] || row.y != want[1] || row.z != want[2] || row.w != want[3]) return false;
+  }
+  return true;
+}
+
+// The meshes the top level leads straight into: each one's packets name the instance, the
+// only one to place that mesh, with the identity transform.
+std::set<std::uint32_t> merged_mesh_roots(const GeometryData& g, std::vector<std::string>& errors) {
+  std::set<std::uint32_t> roots;
+  for (std::size_t m = 0; m < g.meshes.size(); ++m) {
+    const std::uint32_t instance = packets_instance(g.nodes, g.meshes[m].root_node, errors);
+    if (instance == CLRT_NO_HIT) continue;
+    roots.insert(g.meshes[m].root_node);
+    int users = 0;
+    for (const dev::Instance& inst : g.instances) users += inst.shape == CLRT_SHAPE_MESH && inst.mesh == m;
+    const dev::Instance& inst = g.instances.at(instance);
+    if (inst.shape != CLRT_SHAPE_MESH || inst.mesh != m || users != 1 || !identity_rows(inst))
+      errors.push_back("mesh " + std::to_string(m) + " is merged into the top level for instance " +
+                       std::to_string(instance) + ", which is not its only identity instance");
+  }
+  return roots;
+}
+
+TreeShape check_scene_bvh(const Scene& scene, const GeometryData& g) {
   std::vector<std::string> errors;
   const auto instance_count = static_cast<std::uint32_t>(g.instances.size());
-  const TreeShape top = check_tree(g.nodes, 0, g.plane_count, instance_count - g.plane_count,
-                                   [&](std::uint32_t i) { return instance_points(scene, g, i); }, errors);
-  CHECK(top.max_leaf <= 1);
+  const std::set<std::uint32_t> merged = merged_mesh_roots(g, errors);
+  const TreeShape top = check_tree(g.nodes, 0, Level::Top, g.plane_count, instance_count - g.plane_count,
+                                   [&](std::uint32_t i) { return instance_points(scene, g, i); }, errors, merged);
+  CHECK(top.max_leaf <= CLRT_BVH_MAX_SPHERES);
+  // A mesh instance's packet holds its transform and leads to its mesh's root.
+  for (const dev::BvhMeshInstancePacket& p : top.mesh_instances) {
+    const dev::Instance& inst = g.instances.at(p.instance);
+    REQUIRE(inst.shape == CLRT_SHAPE_MESH);
+    CHECK(p.root == g.meshes.at(inst.mesh).root_node);
+    for (int r = 0; r < 3; ++r) {
+      CHECK(p.world_to_object[r].x == inst.world_to_object[r].x);
+      CHECK(p.world_to_object[r].y == inst.world_to_object[r].y);
+      CHECK(p.world_to_object[r].z == inst.world_to_object[r].z);
+      CHECK(p.world_to_object[r].w == inst.world_to_object[r].w);
+    }
+  }
   CHECK(top.depth <= CLRT_BVH_MAX_DEPTH);
   for (const dev::Mesh& mesh : g.meshes) {
-    const TreeShape bottom = check_tree(g.nodes, mesh.root_node, mesh.first_triangle, mesh.triangle_count,
-                                        [&](std::uint32_t t) { return triangle_points(g, t); }, errors);
-    CHECK(bottom.max_leaf <= CLRT_BVH_MAX_LEAF);
+    const TreeShape bottom = check_tree(g.nodes, mesh.root_node, Level::Mesh, mesh.first_triangle,
+                                        mesh.triangle_count, [&](std::uint32_t t) { return triangle_points(g, t); },
+                                        errors);
+    CHECK(bottom.max_leaf <= CLRT_BVH_MAX_TRIANGLES);
     CHECK(bottom.depth <= CLRT_BVH_MAX_DEPTH);
   }
   INFO((errors.empty() ? std::string() : errors.front()));
   CHECK(errors.empty());
+  return top;
 }
 
 }  // namespace
@@ -144,6 +189,51 @@ TEST_CASE("BVH invariants hold on random scenes", "[bvh]") {
   }
 }
 
+TEST_CASE("spheres under similarities share leaves, other instances are leaves of their own", "[bvh]") {
+  for (unsigned seed : {4u, 5u}) {
+    std::mt19937 rng(seed);
+    const Scene scene = sphere_scene(rng, 500);
+    const TreeShape top = check_scene_bvh(scene, build_geometry(scene));
+    CHECK(top.max_leaf > 1);
+    CHECK(top.leaves * 2 < static_cast<int>(scene.instances.size()));
+  }
+}
+
+TEST_CASE("meshes placed once with the identity transform are part of the top level", "[bvh]") {
+  Scene scene;
+  for (int m = 0; m < 3; ++m) scene.meshes.push_back(ball_mesh(4, 6, false));
+  const auto add = [&](int mesh, const Mat4& transform) {
+    scene.instances.push_back(placed(ShapeKind::Mesh, transform));
+    scene.instances.back().mesh = mesh;
+  };
+  add(0, Mat4::identity());                  // merged
+  add(1, Mat4::identity());                  // placed twice: not merged
+  add(1, Mat4::translate({3, 0, 0}));
+  add(2, Mat4::translate({0, 3, 0}));        // not the identity: not merged
+  scene.triangles.push_back({{0, 0, 5}, {1, 0, 5}, {0, 1, 5}, 0});  // the loose mesh: merged
+  const GeometryData g = build_geometry(scene);
+  std::vector<std::string> errors;
+  const std::set<std::uint32_t> merged = merged_mesh_roots(g, errors);
+  CHECK(merged == std::set<std::uint32_t>{g.meshes[0].root_node, g.meshes[3].root_node});
+  check_scene_bvh(scene, g);
+}
+
+TEST_CASE("world spheres: the centre and radius of spheres under similarities only", "[bvh]") {
+  const Mat4 similarity = Mat4::translate({1, -2, 3}) * Mat4::rotate(33, normalize(Vec3{1, 1, 0})) *
+                          Mat4::scale({0.5, 0.5, 0.5});
+  const std::optional<WorldSphere> s = world_sphere(placed(ShapeKind::Sphere, similarity));
+  REQUIRE(s);
+  CHECK(s->center.x == Approx(1));
+  CHECK(s->center.y == Approx(-2));
+  CHECK(s->center.z == Approx(3));
+  CHECK(s->radius == Approx(0.5));
+  // Mirrored is still a similarity.
+  CHECK(world_sphere(placed(ShapeKind::Sphere, Mat4::scale({-2, 2, 2}))));
+  CHECK_FALSE(world_sphere(placed(ShapeKind::Sphere, Mat4::scale({2, 2, 2.001}))));
+  CHECK_FALSE(world_sphere(placed(ShapeKind::Sphere, Mat4::rotate(20, {0, 0, 1}) * Mat4::scale({1, 2, 1}))));
+  CHECK_FALSE(world_sphere(placed(ShapeKind::Cube, similarity)));
+}
+
 TEST_CASE("a scene of planes only has an empty top level", "[bvh]") {
   Scene scene;
   scene.instances.push_back(placed(ShapeKind::Plane, Mat4::identity()));
@@ -166,16 +256,27 @@ TEST_CASE("nested boxes that the SAH peels one by one stay within the depth limi
     boxes[i].grow(0, 0, 0);
     boxes[i].grow(size, size, size);
   }
-  for (unsigned leaf_size : {1u, 4u}) {
+  for (unsigned leaf_size : {1u, 4u, 8u}) {
     BvhBuildSettings settings;
     settings.max_leaf_size = leaf_size;
-    const BvhTree tree = build_bvh(boxes, settings, 0);
+    const BvhTree tree = build_bvh(boxes, settings);
+    // Laid out as a mesh of degenerate triangles from each box's low to its high corner, whose
+    // boxes are the boxes.
+    std::vector<dev::Triangle> triangles;
+    for (std::uint32_t i : tree.order) {
+      const Box& b = boxes[i];
+      const dev::f4 lo{b.lo[0], b.lo[1], b.lo[2], 0}, hi{b.hi[0], b.hi[1], b.hi[2], 0};
+      triangles.push_back({lo, hi, lo});
+    }
+    std::vector<dev::BvhNode> table;
+    const std::uint32_t root = append_mesh_level(tree, triangles.data(), 0, CLRT_NO_HIT, table);
     std::vector<std::string> errors;
-    const TreeShape shape = check_tree(tree.nodes, 0, 0, static_cast<std::uint32_t>(boxes.size()),
+    const TreeShape shape = check_tree(table, root, Level::Mesh, 0, static_cast<std::uint32_t>(boxes.size()),
                                        [&](std::uint32_t i) {
-                                         const Box& b = boxes[tree.order[i]];
-                                         return std::vector<Vec3>{{b.lo[0], b.lo[1], b.lo[2]},
-                                                                  {b.hi[0], b.hi[1], b.hi[2]}};
+                                         const dev::Triangle& t = triangles[i];
+                                         return std::vector<Vec3>{{t.v0.x, t.v0.y, t.v0.z},
+                                                                  {t.v1.x, t.v1.y, t.v1.z},
+                                                                  {t.v2.x, t.v2.y, t.v2.z}};
                                        },
                                        errors);
     INFO("leaf size " << leaf_size << ": " << (errors.empty() ? std::string() : errors.front()));

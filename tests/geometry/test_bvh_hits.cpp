@@ -47,6 +47,27 @@ TEST_CASE("a sphere hit reports t, the outward world normal and the instance's m
   check_near(xyz(side.geometric_normal), normalize(Vec3{0.25, 0, z}));
 }
 
+TEST_CASE("a sphere under a similarity (tested in world space) reports t and the normal at its hit", "[bvh][device]") {
+  Scene scene;
+  // Radius 2 about (0, 0, -5), turned (which must change nothing), material 2.
+  const Mat4 m = Mat4::translate({0, 0, -5}) * Mat4::rotate(40, normalize(Vec3{1, 2, 3})) * Mat4::scale({2, 2, 2});
+  scene.instances.push_back(placed(ShapeKind::Sphere, m, 2));
+  const dev::Hit front = closest(scene, {{0, 0, 0}, {0, 0, -1}, 1e-4, 1e30});
+  REQUIRE(front.instance == 0);
+  CHECK(front.geometric_normal.w == Approx(3.0));
+  check_near(xyz(front.geometric_normal), {0, 0, 1});
+  CHECK(front.material == 2);
+  // At x = 1 the sphere's near side is at z = -5 + sqrt(3), where the normal is (1, 0, sqrt(3)) / 2.
+  const dev::Hit side = closest(scene, {{1, 0, 0}, {0, 0, -1}, 1e-4, 1e30});
+  CHECK(side.geometric_normal.w == Approx(5 - std::sqrt(3.0)));
+  check_near(xyz(side.geometric_normal), {0.5, 0, std::sqrt(3.0) / 2});
+  // From the centre, a ray (not unit) leaves through the far side.
+  const dev::Hit inside = closest(scene, {{0, 0, -5}, {0, 4, 0}, 1e-4, 1e30});
+  CHECK(inside.geometric_normal.w == Approx(0.5));
+  check_near(xyz(inside.geometric_normal), {0, 1, 0});
+  CHECK(closest(scene, {{0, 0, 0}, {0, 0, -1}, 1e-4, 2.9}).instance == CLRT_NO_HIT);
+}
+
 TEST_CASE("a miss reports no instance, and a ray from inside finds the way out", "[bvh][device]") {
   Scene scene;
   scene.instances.push_back(placed(ShapeKind::Cube, Mat4::identity()));

@@ -109,3 +109,15 @@ TEST_CASE("any hits through the BVH match a brute force on random scenes", "[bvh
     compare_any(scene, rays);
   }
 }
+
+TEST_CASE("closest and any hits through sphere packets match a brute force", "[bvh][device]") {
+  for (unsigned seed : {31u, 32u}) {
+    std::mt19937 rng(seed);
+    const Scene scene = sphere_scene(rng, 400);
+    INFO("seed " << seed);
+    std::vector<TestRay> rays = random_rays(rng, scene, 3000);
+    compare_closest(scene, rays);
+    for (std::size_t i = 0; i < rays.size(); i += 3) rays[i].tmin = 1e-4;
+    compare_any(scene, rays);
+  }
+}

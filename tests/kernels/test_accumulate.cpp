@@ -65,30 +65,42 @@ Sums random_sums(std::size_t entries, std::size_t owners, std::mt19937& rng) {
 }
 
 // Both kernels take (queue, a value per queue entry, entry count, a sum per owner) and add the
-// values into the sums; returns the sums after the launch.
+// values into the sums; returns the sums after the launch. gather_shadows reads its count from a
+// device buffer (where compaction leaves it) and is launched, as in the renderer, over more
+// work-items than that.
+enum class Count { Argument, OnDevice };
+
 template <class Entry>
 std::vector<dev::f4> sum_on_device(const char* kernel_name, const std::vector<Entry>& entries,
-                                   const Sums& s) {
+                                   const Sums& s, Count how) {
   compute::buffer queue = test::upload(entries);
   compute::buffer values = test::upload(s.values);
   compute::buffer sums = test::upload(s.start);
   const auto count = static_cast<std::uint32_t>(entries.size());
+  compute::buffer count_on_device = test::upload(std::vector<std::uint32_t>{count});
   compute::kernel kernel(test::renderer_program(), kernel_name);
-  kernel.set_args(queue, values, count, sums);
-  test::run(kernel, count);
+  kernel.set_arg(0, queue);
+  kernel.set_arg(1, values);
+  if (how == Count::OnDevice) {
+    kernel.set_arg(2, count_on_device);
+  } else {
+    kernel.set_arg(2, count);
+  }
+  kernel.set_arg(3, sums);
+  test::run(kernel, how == Count::OnDevice ? count + 100 : count);
   return test::download<dev::f4>(sums, s.start.size());
 }
 
 std::vector<dev::f4> gather_on_device(const std::vector<std::uint32_t>& owners, const Sums& s) {
   std::vector<dev::ShadowRay> shadows(owners.size());
   for (std::size_t i = 0; i < owners.size(); ++i) shadows[i].owner = owners[i];
-  return sum_on_device("gather_shadows", shadows, s);
+  return sum_on_device("gather_shadows", shadows, s, Count::OnDevice);
 }
 
 std::vector<dev::f4> accumulate_on_device(const std::vector<std::uint32_t>& samples, const Sums& s) {
   std::vector<dev::Ray> rays(samples.size());
   for (std::size_t i = 0; i < samples.size(); ++i) rays[i].sample = samples[i];
-  return sum_on_device("accumulate_samples", rays, s);
+  return sum_on_device("accumulate_samples", rays, s, Count::Argument);
 }
 
 // gather_shadows: a ray's colour plus its shadow rays' contributions, one at a time in order.

@@ -58,12 +58,17 @@ ClrtBatch ClrtTracer::occlusion_batch(const RaySet& set) {
   for (const HostRay& r : set.rays)
     rays.push_back({f4_of(r.origin, r.tmax), f4_of(r.dir, 0), {1, 1, 1, 0}, 0, {0, 0, 0}});
   return {&shadow_, upload(device_, rays, "shadow rays"),
-          device_.allocate(sizeof(dev::f4) * rays.size(), "visibility"), rays.size()};
+          device_.allocate(sizeof(dev::f4) * rays.size(), "visibility"), rays.size(),
+          upload(device_, std::vector<dev::u32>{static_cast<dev::u32>(rays.size())}, "count")};
 }
 
 double ClrtTracer::launch(ClrtBatch& batch) {
   batch.kernel->set_arg(9, batch.rays);
-  batch.kernel->set_arg(10, static_cast<cl_uint>(batch.count));
+  if (batch.count_on_device.get()) {
+    batch.kernel->set_arg(10, batch.count_on_device);
+  } else {
+    batch.kernel->set_arg(10, static_cast<cl_uint>(batch.count));
+  }
   batch.kernel->set_arg(11, batch.results);
   compute::event done = clrt::launch(device_.queue(), *batch.kernel, batch.count);
   if (batch.count == 0) return 0;

@@ -15,6 +15,7 @@ struct ClrtBatch {
   compute::kernel* kernel;
   compute::buffer rays, results;
   std::size_t count;
+  compute::buffer count_on_device;  // the shadow kernel reads its count from the device
 };
 
 class ClrtTracer {

@@ -1,0 +1,230 @@
+#include "geometry/bvh_layout.hpp"
+
+#include <algorithm>
+#include <cstring>
+#include <stdexcept>
+#include <string>
+
+#include "shared/ray.h"
+
+namespace clrt {
+namespace {
+
+constexpr std::size_t kBlock = sizeof(dev::BvhBlock);
+constexpr std::size_t kSlotBlocks = CLRT_BVH_NODE_BLOCKS;  // a slot of the table is one node
+constexpr std::uint32_t kPacket = CLRT_BVH_PACKET;
+
+static_assert(sizeof(dev::BvhNode) == CLRT_BVH_NODE_BLOCKS * kBlock, "node blocks");
+static_assert(sizeof(dev::BvhTrianglePacket) == CLRT_BVH_PACKET_BLOCKS * kBlock, "packet blocks");
+static_assert(sizeof(dev::BvhSpherePacket) == CLRT_BVH_SPHERE_BLOCKS * kBlock, "packet blocks");
+
+std::uint32_t packets_for(std::uint32_t items) { return (items + kPacket - 1) / kPacket; }
+
+std::size_t slots_for_blocks(std::size_t blocks) { return (blocks + kSlotBlocks - 1) / kSlotBlocks; }
+
+std::uint32_t checked_block(std::size_t block) {
+  if (block > static_cast<std::size_t>(INT32_MAX)) throw std::length_error("BVH: table too large");
+  return static_cast<std::uint32_t>(block);
+}
+
+// The leaves of `tree` in item order: they cover the items in slices.
+std::vector<const BvhLane*> leaves_in_order(const BvhTree& tree) {
+  std::vector<const BvhLane*> leaves;
+  for (const BvhTreeNode& node : tree.nodes)
+    for (const BvhLane& lane : node.lane)
+      if (lane.leaf()) leaves.push_back(&lane);
+  std::sort(leaves.begin(), leaves.end(), [](const BvhLane* a, const BvhLane* b) { return a->first < b->first; });
+  return leaves;
+}
+
+// A leaf's reference and count, as BvhNode stores them.
+struct LeafRef {
+  dev::i32 child;
+  dev::u32 count;
+};
+
+// Writes the tree's nodes from slot `first_slot` of `table`; `leaf_ref(lane)` gives a leaf lane's
+// reference. Returns the root's block.
+template <class LeafRefOf>
+std::uint32_t write_nodes(const BvhTree& tree, std::size_t first_slot, std::vector<dev::BvhNode>& table,
+                          LeafRefOf leaf_ref) {
+  const std::uint32_t root = checked_block(first_slot * kSlotBlocks);
+  checked_block((first_slot + tree.nodes.size()) * kSlotBlocks);
+  for (std::size_t n = 0; n < tree.nodes.size(); ++n) {
+    dev::BvhNode& out = table.at(first_slot + n);
+    for (int k = 0; k < CLRT_BVH_WIDTH; ++k) {
+      const BvhLane& lane = tree.nodes[n].lane[k];
+      out.min_x.lane[k] = lane.box.lo[0];
+      out.min_y.lane[k] = lane.box.lo[1];
+      out.min_z.lane[k] = lane.box.lo[2];
+      out.max_x.lane[k] = lane.box.hi[0];
+      out.max_y.lane[k] = lane.box.hi[1];
+      out.max_z.lane[k] = lane.box.hi[2];
+      out.child[k] = CLRT_BVH_EMPTY_LANE;
+      out.count[k] = 0;
+      if (lane.node >= 0) {
+        out.child[k] = static_cast<dev::i32>(root + static_cast<std::uint32_t>(lane.node) * kSlotBlocks);
+      } else if (lane.leaf()) {
+        const LeafRef ref = leaf_ref(lane);
+        out.child[k] = ref.child;
+        out.count[k] = ref.count;
+      }
+    }
+  }
+  return root;
+}
+
+// Appends packets (each `Packet`, whole blocks) from block `block` on, within the table.
+template <class Packet>
+void write_packet(std::vector<dev::BvhNode>& table, std::size_t block, const Packet& p) {
+  if ((block * kBlock + sizeof p) > table.size() * sizeof(dev::BvhNode)) throw std::logic_error("BVH: packet outside the table");
+  std::memcpy(reinterpret_cast<unsigned char*>(table.data()) + block * kBlock, &p, sizeof p);
+}
+
+template <class Packet>
+Packet read_packet(const std::vector<dev::BvhNode>& table, std::uint32_t block) {
+  if ((static_cast<std::size_t>(block) * kBlock + sizeof(Packet)) > table.size() * sizeof(dev::BvhNode))
+    throw std::out_of_range("BVH: no packet at block " + std::to_string(block));
+  Packet p;
+  std::memcpy(&p, reinterpret_cast<const unsigned char*>(table.data()) + block * kBlock, sizeof p);
+  return p;
+}
+
+void set_lane(dev::f4& v, std::uint32_t lane, float value) { (&v.x)[lane] = value; }
+
+dev::BvhTrianglePacket triangle_packet(const dev::Triangle* triangles, std::uint32_t first, std::uint32_t count,
+                                       std::uint32_t first_triangle, std::uint32_t only_instance) {
+  dev::BvhTrianglePacket p{};
+  p.instance = only_instance;
+  for (std::uint32_t k = 0; k < kPacket; ++k) {
+    p.triangle[k] = k < count ? first_triangle + first + k : CLRT_NO_HIT;
+    if (k >= count) continue;
+    const dev::Triangle& t = triangles[first + k];
+    const dev::f4* vertex[3] = {&t.v0, &t.v1, &t.v2};
+    for (int j = 0; j < 3; ++j) {
+      set_lane(p.v[3 * j + 0], k, vertex[j]->x);
+      set_lane(p.v[3 * j + 1], k, vertex[j]->y);
+      set_lane(p.v[3 * j + 2], k, vertex[j]->z);
+    }
+  }
+  return p;
+}
+
+dev::BvhSpherePacket sphere_packet(const TopLevelItems& top, std::uint32_t first, std::uint32_t count) {
+  dev::BvhSpherePacket p{};
+  for (std::uint32_t k = 0; k < kPacket; ++k) {
+    p.instance[k] = k < count ? top.first_instance + first + k : CLRT_NO_HIT;
+    if (k >= count) continue;
+    const WorldSphere& s = *top.items.at(first + k).sphere;
+    set_lane(p.center_x, k, static_cast<float>(s.center.x));
+    set_lane(p.center_y, k, static_cast<float>(s.center.y));
+    set_lane(p.center_z, k, static_cast<float>(s.center.z));
+    set_lane(p.radius, k, static_cast<float>(s.radius));
+  }
+  return p;
+}
+
+dev::BvhMeshInstancePacket mesh_instance_packet(const TopLevelItems& top, std::uint32_t item) {
+  const TopLevelItem& it = top.items.at(item);
+  dev::BvhMeshInstancePacket p{};
+  for (int r = 0; r < 3; ++r) p.world_to_object[r] = it.world_to_object[r];
+  p.root = static_cast<std::uint32_t>(it.mesh_root);
+  p.instance = top.first_instance + item;
+  return p;
+}
+
+// The blocks of packets a top-level leaf needs.
+std::size_t packet_blocks(const TopLevelItems& top, const BvhLane& leaf) {
+  const TopLevelItem& first = top.items.at(leaf.first);
+  if (first.sphere) return packets_for(leaf.count) * std::size_t{CLRT_BVH_SPHERE_BLOCKS};
+  return first.mesh_root >= 0 && !first.merged ? CLRT_BVH_MESH_INSTANCE_BLOCKS : 0;
+}
+
+// Writes the packets of a top-level leaf from `block` on; returns its reference.
+LeafRef write_top_leaf(const TopLevelItems& top, const BvhLane& leaf, std::size_t block,
+                       std::vector<dev::BvhNode>& table) {
+  const TopLevelItem& first = top.items.at(leaf.first);
+  const auto ref = ~static_cast<dev::i32>(checked_block(block));
+  if (first.sphere) {
+    for (std::uint32_t done = 0; done < leaf.count; done += kPacket, block += CLRT_BVH_SPHERE_BLOCKS)
+      write_packet(table, block, sphere_packet(top, leaf.first + done, std::min(kPacket, leaf.count - done)));
+    return {ref, CLRT_BVH_SPHERE_LEAF | packets_for(leaf.count)};
+  }
+  if (leaf.count != 1) throw std::logic_error("BVH: a top-level leaf of several instances that are not spheres");
+  if (first.mesh_root >= 0 && first.merged) return {static_cast<dev::i32>(first.mesh_root), 0};
+  if (first.mesh_root >= 0) {
+    write_packet(table, block, mesh_instance_packet(top, leaf.first));
+    return {ref, CLRT_BVH_MESH_LEAF};
+  }
+  return {~static_cast<dev::i32>(top.first_instance + leaf.first), CLRT_BVH_INSTANCE_LEAF};
+}
+
+}  // namespace
+
+std::size_t top_level_slots(const BvhTree& tree, const TopLevelItems& top) {
+  std::size_t blocks = 0;
+  for (const BvhLane* leaf : leaves_in_order(tree)) blocks += packet_blocks(top, *leaf);
+  return tree.nodes.size() + slots_for_blocks(blocks);
+}
+
+void write_top_level(const BvhTree& tree, const TopLevelItems& top, std::vector<dev::BvhNode>& table) {
+  const std::vector<const BvhLane*> leaves = leaves_in_order(tree);
+  std::size_t block = tree.nodes.size() * kSlotBlocks;  // the next packet's
+  std::vector<LeafRef> refs;
+  for (const BvhLane* leaf : leaves) {
+    refs.push_back(write_top_leaf(top, *leaf, block, table));
+    block += packet_blocks(top, *leaf);
+  }
+  write_nodes(tree, 0, table, [&](const BvhLane& lane) {
+    const auto it = std::lower_bound(leaves.begin(), leaves.end(), &lane,
+                                     [](const BvhLane* a, const BvhLane* b) { return a->first < b->first; });
+    return refs[static_cast<std::size_t>(it - leaves.begin())];
+  });
+}
+
+std::uint32_t append_mesh_level(const BvhTree& tree, const dev::Triangle* triangles,
+                                std::uint32_t first_triangle, std::uint32_t only_instance,
+                                std::vector<dev::BvhNode>& table) {
+  const std::vector<const BvhLane*> leaves = leaves_in_order(tree);
+  const std::size_t first_slot = table.size();
+  const std::size_t packets_block = (first_slot + tree.nodes.size()) * kSlotBlocks;
+  std::vector<LeafRef> refs;
+  std::size_t block = packets_block;
+  for (const BvhLane* leaf : leaves) {
+    const std::uint32_t packets = packets_for(leaf->count);
+    refs.push_back({~static_cast<dev::i32>(checked_block(block)), packets});
+    block += packets * CLRT_BVH_PACKET_BLOCKS;
+  }
+  table.resize(first_slot + tree.nodes.size() + slots_for_blocks(block - packets_block));
+  const std::uint32_t root = write_nodes(tree, first_slot, table, [&](const BvhLane& lane) {
+    const auto it = std::lower_bound(leaves.begin(), leaves.end(), &lane,
+                                     [](const BvhLane* a, const BvhLane* b) { return a->first < b->first; });
+    return refs[static_cast<std::size_t>(it - leaves.begin())];
+  });
+  block = packets_block;
+  for (const BvhLane* leaf : leaves)
+    for (std::uint32_t done = 0; done < leaf->count; done += kPacket, block += CLRT_BVH_PACKET_BLOCKS)
+      write_packet(table, block, triangle_packet(triangles, leaf->first + done, std::min(kPacket, leaf->count - done),
+                                                 first_triangle, only_instance));
+  return root;
+}
+
+dev::BvhNode node_at(const std::vector<dev::BvhNode>& table, std::uint32_t block) {
+  if (block % kSlotBlocks != 0 || block / kSlotBlocks >= table.size())
+    throw std::out_of_range("BVH: no node at block " + std::to_string(block));
+  return table[block / kSlotBlocks];
+}
+
+dev::BvhTrianglePacket triangle_packet_at(const std::vector<dev::BvhNode>& table, std::uint32_t block) {
+  return read_packet<dev::BvhTrianglePacket>(table, block);
+}
+
+dev::BvhSpherePacket sphere_packet_at(const std::vector<dev::BvhNode>& table, std::uint32_t block) {
+  return read_packet<dev::BvhSpherePacket>(table, block);
+}
+
+dev::BvhMeshInstancePacket mesh_instance_packet_at(const std::vector<dev::BvhNode>& table, std::uint32_t block) {
+  return read_packet<dev::BvhMeshInstancePacket>(table, block);
+}
+
+}  // namespace clrt

@@ -1,0 +1,18 @@
+# Fails when a Catch2 test name cannot be passed through CTest: BINARIES is a '|'-separated
+# list of test executables.
+string(REPLACE "|" ";" BINARIES "${BINARIES}")
+set(bad "")
+foreach(binary IN LISTS BINARIES)
+  execute_process(COMMAND ${binary} --list-test-names-only OUTPUT_VARIABLE names)
+  string(REPLACE "\n" "|" names "${names}")
+  string(REPLACE ";" "<semicolon>" names "${names}")
+  string(REPLACE "|" ";" names "${names}")
+  foreach(name IN LISTS names)
+    if(name MATCHES "^-" OR name MATCHES "<semicolon>")
+      string(APPEND bad "  ${binary}: ${name}\n")
+    endif()
+  endforeach()
+endforeach()
+if(bad)
+  message(FATAL_ERROR "test names that CTest cannot pass to Catch (leading '-' or ';'):\n${bad}")
+endif()
