@@ -43,9 +43,13 @@ ParseResult parse_command_line(int argc, char** argv) {
       ->check(CLI::Range(1, 1 << 16));
   app.add_option("--max-depth", o.max_depth, "deepest reflection/refraction bounce (overrides `maxdepth`)")
       ->check(CLI::Range(0, 1 << 16));
-  std::map<std::string, RenderMode> modes{{"trace", RenderMode::Trace}, {"cast", RenderMode::Cast}};
-  app.add_option("--mode", o.mode, "trace (shadows, reflection, refraction) or cast (local shading only)")
-      ->transform(CLI::CheckedTransformer(modes, CLI::ignore_case));
+  app.add_option_function<std::string>(
+         "--mode",
+         [&](const std::string& mode) {
+           o.mode = CLI::detail::to_lower(mode) == "cast" ? RenderMode::Cast : RenderMode::Trace;
+         },
+         "trace (shadows, reflection, refraction) or cast (local shading only)")
+      ->check(CLI::IsMember({"trace", "cast"}, CLI::ignore_case));
   app.add_option("--device", o.device,
                  "cpu, gpu, all, P:D (platform:device index) or part of a device name")
       ->capture_default_str();
