@@ -87,6 +87,25 @@ TEST_CASE("the executable writes what clrt::render() renders", "[cli][determinis
   CHECK(file_bytes(from_cli) == file_bytes(from_library));
 }
 
+TEST_CASE("the executable's options reach the render", "[cli][determinism]") {
+  ScratchDir dir;
+  const std::string from_cli = dir.file("cli.pfm"), from_library = dir.file("library.pfm");
+  const CommandResult r =
+      run_clrt(quoted(test_scene("shadows.ray")) +
+               " -q --mode CAST --resolution 33x21 --spp 2 --max-depth 1 --seed 7 -o " + from_cli);
+  INFO(r.output);
+  REQUIRE(r.exit_code == 0);
+  write_image(from_library, render_file(test_scene("shadows.ray"), [](RenderOptions& o) {
+                o.mode = RenderMode::Cast;
+                o.width = 33;
+                o.height = 21;
+                o.samples = 2;
+                o.max_depth = 1;
+                o.seed = 7;
+              }));
+  CHECK(file_bytes(from_cli) == file_bytes(from_library));
+}
+
 TEST_CASE("more samples per pixel than a queue holds", "[cli][determinism]") {
   ScratchDir dir;
   const std::string base = quoted(test_scene("area.ray")) + " -q --resolution 6x4 --spp 1500 ";
