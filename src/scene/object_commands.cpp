@@ -18,12 +18,7 @@ bool all_finite(const Mat4& m) {
 // Appends an instance of a canonical shape placed by `to_world`.
 InstanceSpec& add_instance(LoaderState& s, const CommandArgs& a, ShapeKind shape,
                            const Mat4& to_world) {
-  InstanceSpec instance;
-  instance.shape = shape;
-  instance.material = s.material;
-  instance.transform = to_world;
-  instance.inverse = to_world.inverse();
-  instance.normal_matrix = instance.inverse.transposed();
+  InstanceSpec instance = place_instance(shape, to_world, s.material);
   instance.where = a.command_location();
   // Extreme scale factors can overflow the product or make it numerically singular.
   if (!all_finite(instance.transform) || !all_finite(instance.inverse))

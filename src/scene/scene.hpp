@@ -51,6 +51,9 @@ struct InstanceSpec {
   SourceLocation where;
 };
 
+// An instance of `shape` placed by `to_world`, with M^-1 and (M^-1)^T computed once.
+InstanceSpec place_instance(ShapeKind shape, const Mat4& to_world, int material = 0);
+
 // A triangle mesh in its own object space, loaded once however many instances use it.
 struct MeshData {
   std::string path;                  // as resolved against the scene's folder

@@ -23,21 +23,12 @@ namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-InstanceSpec placed(ShapeKind shape, const Mat4& transform) {
-  InstanceSpec spec;
-  spec.shape = shape;
-  spec.transform = transform;
-  spec.inverse = transform.inverse();
-  spec.normal_matrix = spec.inverse.transposed();
-  return spec;
-}
-
 Scene blocker_scene() {
   Scene scene;
   scene.materials.resize(1);
   scene.instances.push_back(
-      placed(ShapeKind::Sphere, Mat4::translate({0, 2, 0}) * Mat4::scale({0.5, 0.5, 0.5})));
-  scene.instances.push_back(placed(ShapeKind::Plane, Mat4::translate({0, -5, 0})));
+      place_instance(ShapeKind::Sphere, Mat4::translate({0, 2, 0}) * Mat4::scale({0.5, 0.5, 0.5})));
+  scene.instances.push_back(place_instance(ShapeKind::Plane, Mat4::translate({0, -5, 0})));
   return scene;
 }
 

@@ -6,15 +6,6 @@
 namespace clrt::benchbvh {
 namespace {
 
-InstanceSpec placed(ShapeKind shape, const Mat4& m) {
-  InstanceSpec s;
-  s.shape = shape;
-  s.transform = m;
-  s.inverse = m.inverse();
-  s.normal_matrix = s.inverse.transposed();
-  return s;
-}
-
 // A displaced UV sphere: rings x segments quads, two triangles each.
 MeshData lumpy_ball(int triangles) {
   const int segments = std::max(4, static_cast<int>(std::sqrt(triangles)));
@@ -54,7 +45,7 @@ Scene mesh_scene(int triangles) {
   Scene scene;
   scene.materials.resize(1);
   scene.meshes.push_back(lumpy_ball(triangles));
-  scene.instances.push_back(placed(ShapeKind::Mesh, Mat4::identity()));
+  scene.instances.push_back(place_instance(ShapeKind::Mesh, Mat4::identity()));
   scene.instances.back().mesh = 0;
   return scene;
 }
@@ -65,8 +56,8 @@ Scene shapes_scene(int count) {
   std::mt19937 rng(1);
   const ShapeKind kinds[] = {ShapeKind::Sphere, ShapeKind::Cylinder, ShapeKind::Cone, ShapeKind::Cube};
   for (int i = 0; i < count; ++i)
-    scene.instances.push_back(placed(kinds[i % 4], random_placement(rng, spread_for(count))));
-  scene.instances.push_back(placed(ShapeKind::Plane, Mat4::translate({0, -spread_for(count) - 2, 0})));
+    scene.instances.push_back(place_instance(kinds[i % 4], random_placement(rng, spread_for(count))));
+  scene.instances.push_back(place_instance(ShapeKind::Plane, Mat4::translate({0, -spread_for(count) - 2, 0})));
   return scene;
 }
 
@@ -76,7 +67,7 @@ Scene mesh_instances_scene(int count) {
   scene.meshes.push_back(lumpy_ball(1000));
   std::mt19937 rng(2);
   for (int i = 0; i < count; ++i) {
-    scene.instances.push_back(placed(ShapeKind::Mesh, random_placement(rng, spread_for(count))));
+    scene.instances.push_back(place_instance(ShapeKind::Mesh, random_placement(rng, spread_for(count))));
     scene.instances.back().mesh = 0;
   }
   return scene;

@@ -20,12 +20,8 @@ using clrt::Vec3;
 using clrt::compare::HostRay;
 
 clrt::InstanceSpec placed(ShapeKind shape, const Mat4& m, int mesh = -1) {
-  clrt::InstanceSpec i;
-  i.shape = shape;
+  clrt::InstanceSpec i = clrt::place_instance(shape, m);
   i.mesh = mesh;
-  i.transform = m;
-  i.inverse = m.inverse();
-  i.normal_matrix = i.inverse.transposed();
   return i;
 }
 
