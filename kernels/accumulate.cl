@@ -41,12 +41,17 @@ __kernel void resolve(__global const float4* sample_colour, uint samples, uint p
   pixels[p] = sum / (float)samples;
 }
 
-/* Rays of each kind in the queue, for --stats (integer atomics: exact in any order), added to
- * the current wave's counts: counts[kind]. */
-__kernel void count_kinds(__global const Ray* rays, uint count, __global uint* counts) {
-  const uint i = get_global_id(0);
-  if (i >= count) return;
-  atomic_inc(&counts[rays[i].kind]);
+/* Rays of each kind in the queue, for --stats, added to the current wave's counts[kind]. Each
+ * work-item counts a run of `chunk` rays and adds its three totals with integer atomics (exact
+ * in any order): one atomic per ray made this kernel cost as much as shading. */
+__kernel void count_kinds(__global const Ray* rays, uint count, uint chunk, __global uint* counts) {
+  const uint begin = get_global_id(0) * chunk;
+  if (begin >= count) return;
+  const uint end = min(begin + chunk, count);
+  uint per_kind[3] = {0u, 0u, 0u};
+  for (uint i = begin; i < end; ++i) ++per_kind[rays[i].kind];
+  for (uint k = 0; k < 3; ++k)
+    if (per_kind[k]) atomic_add(&counts[k], per_kind[k]);
 }
 
 /* A finished wave's counts join the render's (counts[3 + kind]) and restart from zero; the

@@ -81,7 +81,7 @@ WavefrontRenderer::WavefrontRenderer(DeviceContext& device, const compute::progr
   geometry_.bind(intersect_, 0);
   geometry_.bind(shadow_, 0);
   clear_kind_counts(0, 6);
-  count_kinds_.set_arg(2, kind_counts_);
+  count_kinds_.set_arg(3, kind_counts_);
   commit_kind_counts_.set_arg(0, kind_counts_);
 }
 
@@ -178,9 +178,11 @@ void WavefrontRenderer::run_pass(std::size_t pass, std::uint32_t count) {
   p.rays += count;
   p.max_queue = std::max<std::uint64_t>(p.max_queue, count);
   if (profile_) {
+    constexpr std::uint32_t kRaysPerItem = 256;
     count_kinds_.set_arg(0, rays_);
     count_kinds_.set_arg(1, count);
-    trace("count_kinds", pass, count_kinds_, count);
+    count_kinds_.set_arg(2, kRaysPerItem);
+    trace("count_kinds", pass, count_kinds_, (count + kRaysPerItem - 1) / kRaysPerItem);
   }
   intersect_.set_arg(kGeometryArgs + 0, params_);
   intersect_.set_arg(kGeometryArgs + 1, rays_);
