@@ -21,10 +21,12 @@ typedef struct BvhRay {
 #define bvh_store_lanes vstore8
 typedef ulong BvhMask;
 inline BvhMask bvh_lane_mask(int8 b) { return as_ulong(convert_uchar8(b)) & 0x0101010101010101ul; }
+#define bvh_load_lanes(p) vload8(0, p)
 #else
 #define bvh_store_lanes vstore4
 typedef uint BvhMask;
 inline BvhMask bvh_lane_mask(int4 b) { return as_uint(convert_uchar4(b)) & 0x01010101u; }
+#define bvh_load_lanes(p) vload4(0, p)
 #endif
 
 /* The lowest lane of a non-zero mask. */

@@ -63,11 +63,10 @@ inline __global const BvhNode* bvh_node(__global const BvhBlock* table, int bloc
   return (__global const BvhNode*)(table + block);
 }
 
-/* Child k of `node` entered at t, as a stack entry; an inner node's loading is started. */
-inline int4 bvh_child(__global const BvhBlock* table, __global const BvhNode* node, int k, float t) {
-  const int child = node->child[k];
-  if (child >= 0) bvh_prefetch(bvh_node(table, child));
-  return bvh_pack(child, node->count[k], t);
+/* Child k entered at t, as a stack entry; an inner node's loading is started. */
+inline int4 bvh_child(__global const BvhBlock* table, const int* child, const u32* count, int k, float t) {
+  if (child[k] >= 0) bvh_prefetch(bvh_node(table, child[k]));
+  return bvh_pack(child[k], count[k], t);
 }
 
 /* Visits the node of *e: the children the ray enters in [tmin, tmax] are to be visited, and *e
@@ -77,6 +76,12 @@ inline int4 bvh_child(__global const BvhBlock* table, __global const BvhNode* no
 inline bool bvh_descend(BvhStack* s, __global const BvhBlock* table, const BvhRay* ray,
                         float tmin, float tmax, bool ordered, BvhEntry* e) {
   __global const BvhNode* node = bvh_node(table, e->ref);
+  /* The references are read before the box test, not once it has chosen a lane: their cache
+   * line then loads alongside the boxes' instead of after them. */
+  int child[CLRT_BVH_WIDTH];
+  u32 count[CLRT_BVH_WIDTH];
+  bvh_store_lanes(bvh_load_lanes(node->child), 0, child);
+  bvh_store_lanes(bvh_load_lanes(node->count), 0, count);
   BvhLanes t_enter;
   BvhMask mask = bvh_node_test(node, ray, tmin, tmax, &t_enter);
   if (mask == 0) return false;
@@ -85,16 +90,16 @@ inline bool bvh_descend(BvhStack* s, __global const BvhBlock* table, const BvhRa
   int k = bvh_first_lane(mask);
   mask &= mask - 1;
   if (mask == 0) {
-    *e = bvh_entry(node->child[k], node->count[k], t[k]);
+    *e = bvh_entry(child[k], count[k], t[k]);
     return true;
   }
   /* Two or more: the first goes on the stack, the others are sorted in above it. */
   const int base = s->size;
-  s->entry[s->size++] = bvh_child(table, node, k, t[k]);
+  s->entry[s->size++] = bvh_child(table, child, count, k, t[k]);
   do {
     k = bvh_first_lane(mask);
     mask &= mask - 1;
-    const int4 entry = bvh_child(table, node, k, t[k]);
+    const int4 entry = bvh_child(table, child, count, k, t[k]);
     int i = s->size++;
     for (; ordered && i > base && as_float(s->entry[i - 1].z) < t[k]; --i) s->entry[i] = s->entry[i - 1];
     s->entry[i] = entry;

@@ -1,11 +1,19 @@
 /* Ray queries against the whole scene: the closest hit and the any-hit (shadow) test.
  *
  * The planes are tested in a loop first (they are unbounded); everything else is found through
- * the two-level BVH of kernels/shared/bvh.h: the top level's leaves are single instances, and a
- * mesh instance's leaf continues into its mesh's bottom level with the ray mapped into object
- * space. One stack serves both levels: entering a mesh pushes a marker under the mesh's root,
+ * the two-level BVH of kernels/shared/bvh.h. A top-level leaf is a run of sphere packets
+ * (spheres under similarities, tested in world space), a canonical shape (tested through its
+ * instance), or a mesh instance, whose leaf continues into its mesh's bottom level with the ray
+ * mapped into object space. A mesh placed once and as it is needs no mapping: the top level
+ * leads straight into its nodes (and a scene of just that mesh has the mesh's level as its top
+ * level). One stack serves both levels: entering a mesh pushes a marker under the mesh's root,
  * and popping the marker brings the world ray back. t is the same on both levels because the
- * mapped direction is not normalised. */
+ * mapped direction is not normalised.
+ *
+ * Closest-hit searches visit a node's children nearest first; any-hit searches take them in
+ * lane order, which measured faster for shadow rays than sorting (they stop at any hit). The
+ * triangle table is not read here: the packets in the BVH hold the triangles the search tests,
+ * and the hit's normal comes from the packet too. */
 #ifndef CLRT_GEOMETRY_SCENE_INTERSECT_H
 #define CLRT_GEOMETRY_SCENE_INTERSECT_H
 #include "shared/bvh.h"
@@ -41,35 +49,38 @@ inline bool bvh_test_shape(__global const Instance* instances, u32 index, float3
 inline bool scene_search(SCENE_PARAMS, float3 o, float3 d, float tmin, bool any, HitRecord* best) {
   for (u32 p = 0; p < plane_count; ++p)
     if (bvh_test_shape(instances, p, o, d, tmin, best) && any) return true;
+  if (instance_count == plane_count) return best->instance != CLRT_NO_HIT;
   const BvhRay world = bvh_ray(o, d);
-  BvhRay ray = world;
+  BvhRay object;                /* the ray in the object space of mesh_instance */
+  const BvhRay* ray = &world;   /* the one the current level uses */
   u32 mesh_instance = CLRT_NO_HIT; /* the instance whose bottom level is being traversed */
   BvhStack stack;
   stack.size = 0;
   BvhEntry e = bvh_entry(0, 0u, -INFINITY);
-  if (instance_count == plane_count) return best->instance != CLRT_NO_HIT;
   for (;;) {
     bool hit = false;
     if (e.ref == BVH_LEAVE_MESH) {
-      ray = world;
+      ray = &world;
       mesh_instance = CLRT_NO_HIT;
     } else if (e.ref >= 0) {
-      if (bvh_descend(&stack, bvh, &ray, tmin, best->t, !any, &e)) continue;
+      if (bvh_descend(&stack, bvh, ray, tmin, best->t, !any, &e)) continue;
     } else if (e.count & CLRT_BVH_SPHERE_LEAF) {
       hit = bvh_test_spheres(bvh, ~e.ref, e.count & ~CLRT_BVH_SPHERE_LEAF, o, d, tmin, any, best);
     } else if (e.count & CLRT_BVH_INSTANCE_LEAF) {
       hit = bvh_test_shape(instances, ~e.ref, o, d, tmin, best);
     } else if (e.count & CLRT_BVH_MESH_LEAF) {
-      __global const BvhMeshInstancePacket* entry = (__global const BvhMeshInstancePacket*)(bvh + ~e.ref);
+      __global const BvhMeshInstancePacket* entry =
+          (__global const BvhMeshInstancePacket*)(bvh + ~e.ref);
       float3 oo, od;
       ray_to_object(entry->world_to_object, o, d, &oo, &od);
-      ray = bvh_ray(oo, od);
+      object = bvh_ray(oo, od);
+      ray = &object;
       mesh_instance = entry->instance;
       bvh_push(&stack, bvh_entry(BVH_LEAVE_MESH, 0u, -INFINITY));
       e = bvh_entry((int)entry->root, 0u, e.t);
       continue;
     } else {
-      hit = bvh_test_triangles(bvh, ~e.ref, e.count, mesh_instance, &ray, tmin, any, best);
+      hit = bvh_test_triangles(bvh, ~e.ref, e.count, mesh_instance, ray, tmin, any, best);
     }
     if (hit && any) return true;
     if (!bvh_pop(&stack, best->t, &e)) break;

@@ -1,10 +1,10 @@
 /* The BVH table shared by the host builder (src/geometry) and the traversal kernels
  * (kernels/geometry/bvh_*.h): an array of node-sized slots, addressed in 64-byte blocks (one
- * cache line each). It holds wide nodes, each filling one slot, and the leaves' packets of
- * triangles (bottom levels) and spheres (top level), each spanning whole blocks of slots set
- * aside for them.
- * References are block indices. One table holds the top level over the instances (root at
- * block 0) and every mesh's bottom level (root at Mesh.root_node). */
+ * cache line each). It holds wide nodes, each filling one slot, and the leaves' packets
+ * (triangles in the bottom levels; spheres and mesh instances in the top level), each spanning
+ * whole blocks of slots set aside for them. References are block indices. One table holds the
+ * top level over the instances (root at block 0) and every mesh's bottom level (root at
+ * Mesh.root_node; for a scene of one mesh placed as it is, the mesh's level is the top level). */
 #ifndef CLRT_SHARED_BVH_H
 #define CLRT_SHARED_BVH_H
 #include "common.h"

@@ -18,19 +18,36 @@ Box padded_world_box(const Vec3& lo, const Vec3& hi) {
   return out;
 }
 
-Box transformed_box(const Box& box, const Mat4& m) {
-  if (box.empty()) return box;
-  const double inf = std::numeric_limits<double>::infinity();
-  Vec3 lo{inf, inf, inf}, hi = -lo;
-  for (int corner = 0; corner < 8; ++corner) {
-    const Vec3 p{box.lo[0] + (box.hi[0] - box.lo[0]) * (corner & 1),
-                 box.lo[1] + (box.hi[1] - box.lo[1]) * ((corner >> 1) & 1),
-                 box.lo[2] + (box.hi[2] - box.lo[2]) * ((corner >> 2) & 1)};
-    const Vec3 w = m.transform_point(p);
-    lo = min(lo, w);
-    hi = max(hi, w);
+BoxSet::BoxSet(const std::vector<Box>& boxes) {
+  for (const Box& b : boxes) {
+    if (b.empty()) continue;
+    for (int a = 0; a < 3; ++a) {
+      centre[a].push_back(0.5 * (double(b.lo[a]) + b.hi[a]));
+      half[a].push_back(0.5 * (double(b.hi[a]) - b.lo[a]));
+    }
   }
-  return padded_world_box(lo, hi);
+}
+
+Box transformed_box(const BoxSet& boxes, const Mat4& m) {
+  const std::size_t n = boxes.centre[0].size();
+  if (n == 0) return Box{};
+  double lo[3], hi[3];
+  for (int r = 0; r < 3; ++r) {
+    // A box's centre goes where M puts it; its half-size along world axis r is the sum of its
+    // half-sizes scaled by |M_rc|: the reach of its farthest corner, without visiting all eight.
+    const double* m_r = m.m[r];
+    const double abs_r[3] = {std::fabs(m_r[0]), std::fabs(m_r[1]), std::fabs(m_r[2])};
+    double low = std::numeric_limits<double>::infinity(), high = -low;
+    for (std::size_t i = 0; i < n; ++i) {
+      const double c = m_r[0] * boxes.centre[0][i] + m_r[1] * boxes.centre[1][i] + m_r[2] * boxes.centre[2][i];
+      const double reach = abs_r[0] * boxes.half[0][i] + abs_r[1] * boxes.half[1][i] + abs_r[2] * boxes.half[2][i];
+      low = std::min(low, c - reach);
+      high = std::max(high, c + reach);
+    }
+    lo[r] = low + m_r[3];
+    hi[r] = high + m_r[3];
+  }
+  return padded_world_box({lo[0], lo[1], lo[2]}, {hi[0], hi[1], hi[2]});
 }
 
 Box lane_box(const dev::BvhNode& node, int k) {

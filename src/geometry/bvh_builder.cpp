@@ -32,7 +32,11 @@ class Builder {
  public:
   // `sure_leaf_size` items fit in any leaf: the depth limit's capacity counts with it.
   Builder(BuildItems& items, const BvhBuildSettings& settings, unsigned sure_leaf_size)
-      : items_(items), settings_(settings), sure_leaf_size_(sure_leaf_size) {}
+      : items_(items), settings_(settings), sure_leaf_size_(sure_leaf_size) {
+    if (settings.packet_size == 0 || (settings.packet_size & (settings.packet_size - 1)) != 0)
+      throw std::invalid_argument("BVH: the packet size must be a power of two");
+    while ((1u << packet_shift_) < settings.packet_size) ++packet_shift_;
+  }
 
   void build_root(const Range& all) {
     if (all.size() > capacity(0)) throw std::length_error("BVH: too many items for its depth limit");
@@ -63,7 +67,7 @@ class Builder {
       p.split = split_median(items_, r);
       return p;
     }
-    const SahCosts costs{settings_.node_cost, settings_.packet_size};
+    const SahCosts costs{settings_.node_cost, packet_shift_};
     const std::optional<Split> sah = split_sah(items_, r, costs);
     // On the deepest level allowed, whatever fits in a leaf must become one.
     const bool last_level = depth + 1 >= CLRT_BVH_MAX_DEPTH;
@@ -151,6 +155,7 @@ class Builder {
   BuildItems& items_;
   BvhBuildSettings settings_;
   unsigned sure_leaf_size_;
+  unsigned packet_shift_ = 0;
   std::vector<BvhTreeNode> nodes_;
   int max_depth_ = 0;
 };

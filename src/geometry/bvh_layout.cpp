@@ -1,6 +1,7 @@
 #include "geometry/bvh_layout.hpp"
 
 #include <algorithm>
+#include <cstdint>
 #include <cstring>
 #include <stdexcept>
 #include <string>
@@ -17,6 +18,7 @@ constexpr std::uint32_t kPacket = CLRT_BVH_PACKET;
 static_assert(sizeof(dev::BvhNode) == CLRT_BVH_NODE_BLOCKS * kBlock, "node blocks");
 static_assert(sizeof(dev::BvhTrianglePacket) == CLRT_BVH_PACKET_BLOCKS * kBlock, "packet blocks");
 static_assert(sizeof(dev::BvhSpherePacket) == CLRT_BVH_SPHERE_BLOCKS * kBlock, "packet blocks");
+static_assert(sizeof(dev::BvhMeshInstancePacket) == CLRT_BVH_MESH_INSTANCE_BLOCKS * kBlock, "packet blocks");
 
 std::uint32_t packets_for(std::uint32_t items) { return (items + kPacket - 1) / kPacket; }
 
@@ -27,15 +29,26 @@ std::uint32_t checked_block(std::size_t block) {
   return static_cast<std::uint32_t>(block);
 }
 
-// The leaves of `tree` in item order: they cover the items in slices.
-std::vector<const BvhLane*> leaves_in_order(const BvhTree& tree) {
-  std::vector<const BvhLane*> leaves;
-  for (const BvhTreeNode& node : tree.nodes)
-    for (const BvhLane& lane : node.lane)
-      if (lane.leaf()) leaves.push_back(&lane);
-  std::sort(leaves.begin(), leaves.end(), [](const BvhLane* a, const BvhLane* b) { return a->first < b->first; });
-  return leaves;
-}
+// The leaves of `tree` in item order (they cover the items in slices), found by their first
+// items without a sort.
+struct Leaves {
+  std::vector<const BvhLane*> in_order;
+  std::vector<std::uint32_t> index_at;  // of the leaf that starts at item i, in in_order
+
+  explicit Leaves(const BvhTree& tree) : index_at(tree.order.size(), 0) {
+    std::vector<const BvhLane*> starting_at(tree.order.size(), nullptr);
+    for (const BvhTreeNode& node : tree.nodes)
+      for (const BvhLane& lane : node.lane)
+        if (lane.leaf()) starting_at.at(lane.first) = &lane;
+    for (const BvhLane* leaf : starting_at)
+      if (leaf) {
+        index_at[leaf->first] = static_cast<std::uint32_t>(in_order.size());
+        in_order.push_back(leaf);
+      }
+  }
+
+  std::uint32_t index(const BvhLane& leaf) const { return index_at[leaf.first]; }
+};
 
 // A leaf's reference and count, as BvhNode stores them.
 struct LeafRef {
@@ -74,10 +87,11 @@ std::uint32_t write_nodes(const BvhTree& tree, std::size_t first_slot, std::vect
   return root;
 }
 
-// Appends packets (each `Packet`, whole blocks) from block `block` on, within the table.
+// Writes packet p (whole blocks) at block `block`, within the table.
 template <class Packet>
 void write_packet(std::vector<dev::BvhNode>& table, std::size_t block, const Packet& p) {
-  if ((block * kBlock + sizeof p) > table.size() * sizeof(dev::BvhNode)) throw std::logic_error("BVH: packet outside the table");
+  if ((block * kBlock + sizeof p) > table.size() * sizeof(dev::BvhNode))
+    throw std::logic_error("BVH: packet outside the table");
   std::memcpy(reinterpret_cast<unsigned char*>(table.data()) + block * kBlock, &p, sizeof p);
 }
 
@@ -163,49 +177,46 @@ LeafRef write_top_leaf(const TopLevelItems& top, const BvhLane& leaf, std::size_
 
 std::size_t top_level_slots(const BvhTree& tree, const TopLevelItems& top) {
   std::size_t blocks = 0;
-  for (const BvhLane* leaf : leaves_in_order(tree)) blocks += packet_blocks(top, *leaf);
+  for (const BvhLane* leaf : Leaves(tree).in_order) blocks += packet_blocks(top, *leaf);
   return tree.nodes.size() + slots_for_blocks(blocks);
 }
 
 void write_top_level(const BvhTree& tree, const TopLevelItems& top, std::vector<dev::BvhNode>& table) {
-  const std::vector<const BvhLane*> leaves = leaves_in_order(tree);
+  const Leaves leaves(tree);
   std::size_t block = tree.nodes.size() * kSlotBlocks;  // the next packet's
   std::vector<LeafRef> refs;
-  for (const BvhLane* leaf : leaves) {
+  for (const BvhLane* leaf : leaves.in_order) {
     refs.push_back(write_top_leaf(top, *leaf, block, table));
     block += packet_blocks(top, *leaf);
   }
   write_nodes(tree, 0, table, [&](const BvhLane& lane) {
-    const auto it = std::lower_bound(leaves.begin(), leaves.end(), &lane,
-                                     [](const BvhLane* a, const BvhLane* b) { return a->first < b->first; });
-    return refs[static_cast<std::size_t>(it - leaves.begin())];
+    return refs[leaves.index(lane)];
   });
 }
 
 std::uint32_t append_mesh_level(const BvhTree& tree, const dev::Triangle* triangles,
                                 std::uint32_t first_triangle, std::uint32_t only_instance,
                                 std::vector<dev::BvhNode>& table) {
-  const std::vector<const BvhLane*> leaves = leaves_in_order(tree);
+  const Leaves leaves(tree);
   const std::size_t first_slot = table.size();
   const std::size_t packets_block = (first_slot + tree.nodes.size()) * kSlotBlocks;
   std::vector<LeafRef> refs;
   std::size_t block = packets_block;
-  for (const BvhLane* leaf : leaves) {
+  for (const BvhLane* leaf : leaves.in_order) {
     const std::uint32_t packets = packets_for(leaf->count);
     refs.push_back({~static_cast<dev::i32>(checked_block(block)), packets});
     block += packets * CLRT_BVH_PACKET_BLOCKS;
   }
   table.resize(first_slot + tree.nodes.size() + slots_for_blocks(block - packets_block));
   const std::uint32_t root = write_nodes(tree, first_slot, table, [&](const BvhLane& lane) {
-    const auto it = std::lower_bound(leaves.begin(), leaves.end(), &lane,
-                                     [](const BvhLane* a, const BvhLane* b) { return a->first < b->first; });
-    return refs[static_cast<std::size_t>(it - leaves.begin())];
+    return refs[leaves.index(lane)];
   });
   block = packets_block;
-  for (const BvhLane* leaf : leaves)
+  for (const BvhLane* leaf : leaves.in_order)
     for (std::uint32_t done = 0; done < leaf->count; done += kPacket, block += CLRT_BVH_PACKET_BLOCKS)
-      write_packet(table, block, triangle_packet(triangles, leaf->first + done, std::min(kPacket, leaf->count - done),
-                                                 first_triangle, only_instance));
+      write_packet(table, block,
+                   triangle_packet(triangles, leaf->first + done, std::min(kPacket, leaf->count - done),
+                                   first_triangle, only_instance));
   return root;
 }
 

@@ -30,6 +30,12 @@ class Walker {
       : table_(table), level_(level), first_(first), seen_(count, 0), points_(points), errors_(errors),
         mesh_roots_(mesh_roots) {}
 
+  // The top level may be a mesh's level itself, when it holds just that mesh.
+  void root(std::uint32_t block) {
+    if (level_ == Level::Top && mesh_roots_.count(block)) merged_mesh(block);
+    else node(block, 1);
+  }
+
   void node(std::uint32_t block, int depth) {
     shape_.depth = std::max(shape_.depth, depth);
     ++shape_.nodes;
@@ -87,7 +93,8 @@ class Walker {
   }
 
   void sphere_leaf(std::uint32_t ref, std::uint32_t packets) {
-    if (packets == 0 || packets * CLRT_BVH_PACKET > CLRT_BVH_MAX_SPHERES) return fail("a sphere leaf of " + std::to_string(packets) + " packets");
+    if (packets == 0 || packets * CLRT_BVH_PACKET > CLRT_BVH_MAX_SPHERES)
+      return fail("a sphere leaf of " + std::to_string(packets) + " packets");
     int items = 0;
     for (std::uint32_t p = 0; p < packets; ++p) {
       const dev::BvhSpherePacket packet = sphere_packet_at(table_, ref + p * CLRT_BVH_SPHERE_BLOCKS);
@@ -179,7 +186,8 @@ void collect_packets(const std::vector<dev::BvhNode>& table, std::uint32_t block
     if (n.child[k] >= 0) collect_packets(table, static_cast<std::uint32_t>(n.child[k]), out);
     else if (n.count[k] > 0 && n.count[k] * CLRT_BVH_PACKET <= CLRT_BVH_MAX_TRIANGLES)
       for (std::uint32_t p = 0; p < n.count[k]; ++p)
-        out.push_back(triangle_packet_at(table, ~static_cast<std::uint32_t>(n.child[k]) + p * CLRT_BVH_PACKET_BLOCKS));
+        out.push_back(
+            triangle_packet_at(table, ~static_cast<std::uint32_t>(n.child[k]) + p * CLRT_BVH_PACKET_BLOCKS));
   }
 }
 
@@ -190,7 +198,7 @@ TreeShape check_tree(const std::vector<dev::BvhNode>& table, std::uint32_t root,
                      const std::function<std::vector<Vec3>(std::uint32_t)>& points,
                      std::vector<std::string>& errors, const std::set<std::uint32_t>& mesh_roots) {
   Walker walker(table, level, first, count, points, errors, mesh_roots);
-  walker.node(root, 1);
+  walker.root(root);
   return walker.finish();
 }
 

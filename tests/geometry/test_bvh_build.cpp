@@ -218,6 +218,53 @@ TEST_CASE("meshes placed once with the identity transform are part of the top le
   check_scene_bvh(scene, g);
 }
 
+TEST_CASE("a scene of one mesh placed as it is has that mesh's level as its top level", "[bvh]") {
+  std::mt19937 rng(8);
+  Scene scene;
+  for (int t = 0; t < 300; ++t) {
+    std::uniform_real_distribution<double> u(-5, 5);
+    const Vec3 c{u(rng), 0, u(rng)};
+    scene.triangles.push_back({c, c + Vec3{1, 0, 0}, c + Vec3{0, 1, 0.5}, t % 3});
+  }
+  scene.instances.push_back(placed(ShapeKind::Plane, Mat4::translate({0, -1, 0})));  // planes stay outside
+  const GeometryData g = build_geometry(scene);
+  REQUIRE(g.meshes.size() == 1);
+  CHECK(g.meshes[0].root_node == 0);
+  check_scene_bvh(scene, g);
+}
+
+TEST_CASE("transformed boxes hold the eight corners of every box carried by the transform", "[bvh]") {
+  std::mt19937 rng(14);
+  const auto u = [&](double a, double b) { return std::uniform_real_distribution<double>(a, b)(rng); };
+  for (int trial = 0; trial < 200; ++trial) {
+    const Mat4 m = random_transform(rng, 50);
+    Box boxes[3];
+    Vec3 lo{1e300, 1e300, 1e300}, hi = -lo;
+    for (Box& b : boxes) {
+      const Vec3 c{u(-5, 5), u(-5, 5), u(-5, 5)};
+      b.grow(float(c.x - u(0, 2)), float(c.y - u(0, 2)), float(c.z));
+      b.grow(float(c.x + u(0, 2)), float(c.y), float(c.z + u(0, 2)));
+      for (int corner = 0; corner < 8; ++corner) {
+        const Vec3 p = m.transform_point({corner & 1 ? b.hi[0] : b.lo[0], corner & 2 ? b.hi[1] : b.lo[1],
+                                          corner & 4 ? b.hi[2] : b.lo[2]});
+        lo = min(lo, p);
+        hi = max(hi, p);
+      }
+    }
+    const Box got = transformed_box(BoxSet({boxes[0], boxes[1], boxes[2], Box{}}), m);
+    INFO("trial " << trial);
+    for (int a = 0; a < 3; ++a) {
+      // Contains the corners, and pads them by no more than a thousandth of the size.
+      const double slack = 1e-3 * length(hi - lo);
+      CHECK(got.lo[a] <= lo[a]);
+      CHECK(got.hi[a] >= hi[a]);
+      CHECK(got.lo[a] >= lo[a] - slack);
+      CHECK(got.hi[a] <= hi[a] + slack);
+    }
+  }
+  CHECK(transformed_box(BoxSet({}), Mat4::identity()).empty());
+}
+
 TEST_CASE("world spheres: the centre and radius of spheres under similarities only", "[bvh]") {
   const Mat4 similarity = Mat4::translate({1, -2, 3}) * Mat4::rotate(33, normalize(Vec3{1, 1, 0})) *
                           Mat4::scale({0.5, 0.5, 0.5});

@@ -110,6 +110,19 @@ TEST_CASE("any hits through the BVH match a brute force on random scenes", "[bvh
   }
 }
 
+TEST_CASE("hits in a scene of loose triangles alone (the top level is their mesh's) match a brute force",
+          "[bvh][device]") {
+  std::mt19937 rng(41);
+  const Scene full = random_scene(rng, 0, 600);
+  std::vector<TestRay> rays = random_rays(rng, full, 3000);
+  Scene scene;
+  scene.materials = full.materials;
+  scene.triangles = full.triangles;
+  compare_closest(scene, rays);
+  for (std::size_t i = 0; i < rays.size(); i += 3) rays[i].tmin = 1e-4;
+  compare_any(scene, rays);
+}
+
 TEST_CASE("closest and any hits through sphere packets match a brute force", "[bvh][device]") {
   for (unsigned seed : {31u, 32u}) {
     std::mt19937 rng(seed);

@@ -49,7 +49,7 @@ ClrtBatch ClrtTracer::closest_batch(const RaySet& set) {
   for (const HostRay& r : set.rays)
     rays.push_back({f4_of(r.origin, 0), f4_of(r.dir, 0), {1, 1, 1, 0}, 0, 0, 0, CLRT_RAY_CAMERA});
   return {&intersect_, upload(device_, rays, "rays"),
-          device_.allocate(sizeof(dev::Hit) * rays.size(), "hits"), rays.size()};
+          device_.allocate(sizeof(dev::Hit) * rays.size(), "hits"), rays.size(), compute::buffer()};
 }
 
 ClrtBatch ClrtTracer::occlusion_batch(const RaySet& set) {
