@@ -66,7 +66,8 @@ std::string RenderStats::to_text() const {
       << build_seconds << ", render " << render_seconds << ", write " << write_seconds
       << ", total " << total_seconds << "\n";
   out << "bvh:           " << bvh_seconds << " s to build, " << (bvh_bytes >> 10)
-      << " KiB of nodes; scene tables " << (geometry_bytes >> 10) << " KiB in all\n";
+      << " KiB BVH table (nodes and leaf data); scene tables " << (geometry_bytes >> 10)
+      << " KiB in all\n";
   out << "waves:         " << waves << " (restarts after a queue overflow: " << wave_restarts
       << "), wavefront " << wavefront << " rays, device memory " << (device_bytes >> 20)
       << " MiB, peak process memory " << (peak_host_bytes >> 20) << " MiB\n";

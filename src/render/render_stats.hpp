@@ -31,7 +31,7 @@ struct RenderStats {
   std::uint64_t device_bytes = 0;    // render buffers + scene tables
   std::uint64_t peak_host_bytes = 0; // the process's peak resident memory
   std::uint64_t geometry_bytes = 0;  // instance, mesh and triangle tables and BVH nodes
-  std::uint64_t bvh_bytes = 0;       // of which BVH nodes
+  std::uint64_t bvh_bytes = 0;       // of which the BVH table (nodes and leaf data)
   double load_seconds = 0, bvh_seconds = 0, build_seconds = 0, render_seconds = 0,
          write_seconds = 0, total_seconds = 0;
 
