@@ -27,16 +27,6 @@ Vec3 instance_centre(const Scene& scene, std::size_t i) {
 
 }  // namespace
 
-InstanceSpec placed(ShapeKind shape, const Mat4& m, int material) {
-  InstanceSpec s;
-  s.shape = shape;
-  s.material = material;
-  s.transform = m;
-  s.inverse = m.inverse();
-  s.normal_matrix = s.inverse.transposed();
-  return s;
-}
-
 Mat4 random_transform(std::mt19937& rng, double spread) {
   const Vec3 scale{uniform(rng, 0.3, 2), uniform(rng, 0.3, 2), uniform(rng, 0.3, 2)};
   return Mat4::translate(random_point(rng, spread)) *
@@ -81,15 +71,15 @@ Scene random_scene(std::mt19937& rng, int count, int triangles) {
   const double spread = 2.0 * std::cbrt(static_cast<double>(count));
   const ShapeKind kinds[] = {ShapeKind::Sphere, ShapeKind::Cube, ShapeKind::Cylinder, ShapeKind::Cone};
   for (int i = 0; i < count; ++i) {
-    InstanceSpec s = placed(kinds[i % 4], random_transform(rng, spread), i % 4);
+    InstanceSpec s = place_instance(kinds[i % 4], random_transform(rng, spread), i % 4);
     s.cone_r0 = uniform(rng, 0, 1.5);
     s.cone_r1 = i % 8 == 3 ? 0.0 : uniform(rng, 0.2, 1.5);
     scene.instances.push_back(s);
   }
-  scene.instances.push_back(placed(ShapeKind::Plane, Mat4::translate({0, -spread - 3, 0}), 1));
+  scene.instances.push_back(place_instance(ShapeKind::Plane, Mat4::translate({0, -spread - 3, 0}), 1));
   scene.meshes.push_back(ball_mesh(6, 8, true));
   for (int k = 0; k < 2; ++k) {
-    InstanceSpec s = placed(ShapeKind::Mesh, random_transform(rng, spread), 2);
+    InstanceSpec s = place_instance(ShapeKind::Mesh, random_transform(rng, spread), 2);
     s.mesh = 0;
     scene.instances.push_back(s);
   }
@@ -107,11 +97,11 @@ Scene sphere_scene(std::mt19937& rng, int count) {
   const double spread = std::cbrt(static_cast<double>(count));
   for (int i = 0; i < count; ++i) {
     const double size = std::pow(10.0, uniform(rng, -2, 0.5));
-    scene.instances.push_back(placed(ShapeKind::Sphere, random_similarity(rng, spread, size, size), i % 3));
+    scene.instances.push_back(place_instance(ShapeKind::Sphere, random_similarity(rng, spread, size, size), i % 3));
   }
-  for (int i = 0; i < 5; ++i) scene.instances.push_back(placed(ShapeKind::Sphere, random_transform(rng, spread)));
+  for (int i = 0; i < 5; ++i) scene.instances.push_back(place_instance(ShapeKind::Sphere, random_transform(rng, spread)));
   scene.meshes.push_back(ball_mesh(6, 8, false));
-  InstanceSpec ball = placed(ShapeKind::Mesh, random_transform(rng, spread), 1);
+  InstanceSpec ball = place_instance(ShapeKind::Mesh, random_transform(rng, spread), 1);
   ball.mesh = 0;
   scene.instances.push_back(ball);
   return scene;

@@ -8,8 +8,6 @@
 
 namespace clrt::bvhtest {
 
-// An instance of `shape` placed by `m`, with its inverse and normal matrix filled in.
-InstanceSpec placed(ShapeKind shape, const Mat4& m, int material = 0);
 
 // A random rotation, non-uniform scale (0.3 to 2 per axis) and translation within +-`spread`.
 Mat4 random_transform(std::mt19937& rng, double spread);

@@ -170,7 +170,7 @@ TEST_CASE("mesh vertex normals are stored unit length, in the triangle's corner 
   mesh.corners = {0, 1, 2};
   mesh.corner_normals = {0, 1, 2};
   scene.meshes.push_back(mesh);
-  scene.instances.push_back(placed(ShapeKind::Mesh, Mat4::identity()));
+  scene.instances.push_back(place_instance(ShapeKind::Mesh, Mat4::identity()));
   scene.instances.back().mesh = 0;
   const GeometryData g = build_geometry(scene);
   const dev::TriangleNormals& n = g.triangle_normals.at(0);
@@ -203,7 +203,7 @@ TEST_CASE("meshes placed once with the identity transform are part of the top le
   Scene scene;
   for (int m = 0; m < 3; ++m) scene.meshes.push_back(ball_mesh(4, 6, false));
   const auto add = [&](int mesh, const Mat4& transform) {
-    scene.instances.push_back(placed(ShapeKind::Mesh, transform));
+    scene.instances.push_back(place_instance(ShapeKind::Mesh, transform));
     scene.instances.back().mesh = mesh;
   };
   add(0, Mat4::identity());                  // merged
@@ -226,7 +226,7 @@ TEST_CASE("a scene of one mesh placed as it is has that mesh's level as its top 
     const Vec3 c{u(rng), 0, u(rng)};
     scene.triangles.push_back({c, c + Vec3{1, 0, 0}, c + Vec3{0, 1, 0.5}, t % 3});
   }
-  scene.instances.push_back(placed(ShapeKind::Plane, Mat4::translate({0, -1, 0})));  // planes stay outside
+  scene.instances.push_back(place_instance(ShapeKind::Plane, Mat4::translate({0, -1, 0})));  // planes stay outside
   const GeometryData g = build_geometry(scene);
   REQUIRE(g.meshes.size() == 1);
   CHECK(g.meshes[0].root_node == 0);
@@ -268,22 +268,22 @@ TEST_CASE("transformed boxes hold the eight corners of every box carried by the 
 TEST_CASE("world spheres: the centre and radius of spheres under similarities only", "[bvh]") {
   const Mat4 similarity = Mat4::translate({1, -2, 3}) * Mat4::rotate(33, normalize(Vec3{1, 1, 0})) *
                           Mat4::scale({0.5, 0.5, 0.5});
-  const std::optional<WorldSphere> s = world_sphere(placed(ShapeKind::Sphere, similarity));
+  const std::optional<WorldSphere> s = world_sphere(place_instance(ShapeKind::Sphere, similarity));
   REQUIRE(s);
   CHECK(s->center.x == Approx(1));
   CHECK(s->center.y == Approx(-2));
   CHECK(s->center.z == Approx(3));
   CHECK(s->radius == Approx(0.5));
   // Mirrored is still a similarity.
-  CHECK(world_sphere(placed(ShapeKind::Sphere, Mat4::scale({-2, 2, 2}))));
-  CHECK_FALSE(world_sphere(placed(ShapeKind::Sphere, Mat4::scale({2, 2, 2.001}))));
-  CHECK_FALSE(world_sphere(placed(ShapeKind::Sphere, Mat4::rotate(20, {0, 0, 1}) * Mat4::scale({1, 2, 1}))));
-  CHECK_FALSE(world_sphere(placed(ShapeKind::Cube, similarity)));
+  CHECK(world_sphere(place_instance(ShapeKind::Sphere, Mat4::scale({-2, 2, 2}))));
+  CHECK_FALSE(world_sphere(place_instance(ShapeKind::Sphere, Mat4::scale({2, 2, 2.001}))));
+  CHECK_FALSE(world_sphere(place_instance(ShapeKind::Sphere, Mat4::rotate(20, {0, 0, 1}) * Mat4::scale({1, 2, 1}))));
+  CHECK_FALSE(world_sphere(place_instance(ShapeKind::Cube, similarity)));
 }
 
 TEST_CASE("a scene of planes only has an empty top level", "[bvh]") {
   Scene scene;
-  scene.instances.push_back(placed(ShapeKind::Plane, Mat4::identity()));
+  scene.instances.push_back(place_instance(ShapeKind::Plane, Mat4::identity()));
   const GeometryData g = build_geometry(scene);
   REQUIRE(g.nodes.size() == 1);
   for (int k = 0; k < CLRT_BVH_WIDTH; ++k) CHECK(g.nodes[0].count[k] == 0);
@@ -338,7 +338,7 @@ TEST_CASE("shape boxes hug the transformed shapes", "[bvh]") {
   std::mt19937 rng(9);
   const ShapeKind kinds[] = {ShapeKind::Sphere, ShapeKind::Cube, ShapeKind::Cylinder, ShapeKind::Cone};
   for (int i = 0; i < 40; ++i) {
-    InstanceSpec s = placed(kinds[i % 4], random_transform(rng, 10));
+    InstanceSpec s = place_instance(kinds[i % 4], random_transform(rng, 10));
     s.cone_r0 = i % 8 == 3 ? 0.0 : 0.7;
     s.cone_r1 = 1.3;
     Vec3 lo{1e30, 1e30, 1e30}, hi = -lo;

@@ -32,7 +32,7 @@ void check_near(const Vec3& got, const Vec3& want) {
 TEST_CASE("a sphere hit reports t, the outward world normal and the instance's material", "[bvh][device]") {
   Scene scene;
   // An ellipsoid: radius 2 along x, 1 along y and z, centred at (0, 0, -5), material 3.
-  scene.instances.push_back(placed(ShapeKind::Sphere, Mat4::translate({0, 0, -5}) * Mat4::scale({2, 1, 1}), 3));
+  scene.instances.push_back(place_instance(ShapeKind::Sphere, Mat4::translate({0, 0, -5}) * Mat4::scale({2, 1, 1}), 3));
   const dev::Hit hit = closest(scene, {{0, 0, 0}, {0, 0, -1}, 1e-4, 1e30});
   REQUIRE(hit.instance == 0);
   CHECK(hit.geometric_normal.w == Approx(4.0));
@@ -51,7 +51,7 @@ TEST_CASE("a sphere under a similarity (tested in world space) reports t and the
   Scene scene;
   // Radius 2 about (0, 0, -5), turned (which must change nothing), material 2.
   const Mat4 m = Mat4::translate({0, 0, -5}) * Mat4::rotate(40, normalize(Vec3{1, 2, 3})) * Mat4::scale({2, 2, 2});
-  scene.instances.push_back(placed(ShapeKind::Sphere, m, 2));
+  scene.instances.push_back(place_instance(ShapeKind::Sphere, m, 2));
   const dev::Hit front = closest(scene, {{0, 0, 0}, {0, 0, -1}, 1e-4, 1e30});
   REQUIRE(front.instance == 0);
   CHECK(front.geometric_normal.w == Approx(3.0));
@@ -70,7 +70,7 @@ TEST_CASE("a sphere under a similarity (tested in world space) reports t and the
 
 TEST_CASE("a miss reports no instance, and a ray from inside finds the way out", "[bvh][device]") {
   Scene scene;
-  scene.instances.push_back(placed(ShapeKind::Cube, Mat4::identity()));
+  scene.instances.push_back(place_instance(ShapeKind::Cube, Mat4::identity()));
   CHECK(closest(scene, {{0, 5, 0}, {0, 1, 0}, 1e-4, 1e30}).instance == CLRT_NO_HIT);
   CHECK(closest(scene, {{0, 0, 0}, {0, 1, 0}, 1e-4, 0.5}).instance == CLRT_NO_HIT);
   const dev::Hit inside = closest(scene, {{0, 0, 0}, {0, 1, 0}, 1e-4, 1e30});
@@ -103,7 +103,7 @@ TEST_CASE("mesh shading normals interpolate the vertex normals under the instanc
   mesh.corner_normals = {0, 1, 2};
   scene.meshes.push_back(mesh);
   const Mat4 m = Mat4::translate({0, 0, -3}) * Mat4::scale({2, 1, 1});
-  scene.instances.push_back(placed(ShapeKind::Mesh, m, 4));
+  scene.instances.push_back(place_instance(ShapeKind::Mesh, m, 4));
   scene.instances.back().mesh = 0;
   // World point (0.5, 0.25, -3) is object point (0.25, 0.25, 0): weights 0.5, 0.25, 0.25.
   const dev::Hit hit = closest(scene, {{0.5, 0.25, 0}, {0, 0, -1}, 1e-4, 1e30});
@@ -123,7 +123,7 @@ TEST_CASE("an instanced mesh is hit like its triangles written out as loose tria
   Scene loose;
   for (int k = 0; k < 3; ++k) {
     const Mat4 m = random_transform(rng, 4);
-    instanced.instances.push_back(placed(ShapeKind::Mesh, m, k));
+    instanced.instances.push_back(place_instance(ShapeKind::Mesh, m, k));
     instanced.instances.back().mesh = 0;
     const MeshData& mesh = instanced.meshes[0];
     for (std::size_t c = 0; c < mesh.corners.size(); c += 3)
