@@ -11,9 +11,9 @@
  * mapped direction is not normalised.
  *
  * Closest-hit searches visit a node's children nearest first; any-hit searches take them in
- * lane order, which measured faster for shadow rays than sorting (they stop at any hit). The
- * triangle table is not read here: the packets in the BVH hold the triangles the search tests,
- * and the hit's normal comes from the packet too. */
+ * lane order, which measured faster for shadow rays than sorting (they stop at any hit). There
+ * is no triangle table among the parameters: the packets in the BVH hold the triangles the
+ * search tests, and the hit's normal comes from the packet too. */
 #ifndef CLRT_GEOMETRY_SCENE_INTERSECT_H
 #define CLRT_GEOMETRY_SCENE_INTERSECT_H
 #include "shared/bvh.h"
@@ -27,8 +27,8 @@
 #include "geometry/bvh_ray.h"
 #include "geometry/bvh_stack.h"
 
-#define SCENE_PARAMS u32 instance_count, u32 plane_count, __global const Instance* instances, __global const Mesh* meshes, __global const Triangle* triangles, __global const TriangleNormals* triangle_normals, __global const u32* triangle_materials, __global const BvhBlock* bvh
-#define SCENE_ARGS instance_count, plane_count, instances, meshes, triangles, triangle_normals, triangle_materials, bvh
+#define SCENE_PARAMS u32 instance_count, u32 plane_count, __global const Instance* instances, __global const Mesh* meshes, __global const TriangleNormals* triangle_normals, __global const u32* triangle_materials, __global const BvhBlock* bvh
+#define SCENE_ARGS instance_count, plane_count, instances, meshes, triangle_normals, triangle_materials, bvh
 
 /* Canonical shape instance `index` against the world ray; updates *best on a hit in
  * (tmin, best->t). */

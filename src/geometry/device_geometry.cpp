@@ -21,21 +21,20 @@ DeviceGeometry::DeviceGeometry(DeviceContext& device, const GeometryData& geomet
       plane_count_(geometry.plane_count),
       instances_(upload(device, geometry.instances, "instance table")),
       meshes_(upload(device, geometry.meshes, "mesh table")),
-      triangles_(upload(device, geometry.triangles, "triangle table")),
       triangle_normals_(upload(device, geometry.triangle_normals, "triangle normal table")),
       triangle_materials_(upload(device, geometry.triangle_materials, "triangle material table")),
       nodes_(upload(device, geometry.nodes, "BVH node table")) {}
 
-void DeviceGeometry::bind(compute::kernel& kernel, unsigned first_arg) const {
+unsigned DeviceGeometry::bind(compute::kernel& kernel, unsigned first_arg) const {
   unsigned a = first_arg;
   kernel.set_arg(a++, instance_count_);
   kernel.set_arg(a++, plane_count_);
   kernel.set_arg(a++, instances_);
   kernel.set_arg(a++, meshes_);
-  kernel.set_arg(a++, triangles_);
   kernel.set_arg(a++, triangle_normals_);
   kernel.set_arg(a++, triangle_materials_);
   kernel.set_arg(a++, nodes_);
+  return a;
 }
 
 }  // namespace clrt

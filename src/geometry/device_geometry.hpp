@@ -11,15 +11,15 @@ class DeviceGeometry {
  public:
   DeviceGeometry(DeviceContext& device, const GeometryData& geometry);
 
-  // Sets the 8 SCENE_PARAMS arguments of `kernel`, in order, starting at `first_arg`.
-  void bind(compute::kernel& kernel, unsigned first_arg) const;
+  // Sets the SCENE_PARAMS arguments of `kernel`, in order, starting at `first_arg`; returns the
+  // index of the kernel's next argument.
+  unsigned bind(compute::kernel& kernel, unsigned first_arg) const;
 
  private:
   dev::u32 instance_count_;
   dev::u32 plane_count_;
   compute::buffer instances_;
   compute::buffer meshes_;
-  compute::buffer triangles_;
   compute::buffer triangle_normals_;
   compute::buffer triangle_materials_;
   compute::buffer nodes_;

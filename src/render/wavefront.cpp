@@ -10,8 +10,6 @@
 namespace clrt {
 namespace {
 
-constexpr cl_uint kGeometryArgs = 8;  // the SCENE_PARAMS of kernels/geometry/scene_intersect.h
-
 template <class T>
 compute::buffer upload(DeviceContext& device, const std::vector<T>& data, const char* what,
                        std::uint64_t& bytes) {
@@ -78,7 +76,7 @@ WavefrontRenderer::WavefrontRenderer(DeviceContext& device, const compute::progr
   stats_.device = device.name();
   stats_.wavefront = capacity_;
   stats_.device_bytes += geometry.device_bytes();
-  geometry_.bind(intersect_, 0);
+  geometry_args_ = geometry_.bind(intersect_, 0);
   geometry_.bind(shadow_, 0);
   clear_kind_counts(0, 6);
   count_kinds_.set_arg(3, kind_counts_);
@@ -184,10 +182,10 @@ void WavefrontRenderer::run_pass(std::size_t pass, std::uint32_t count) {
     count_kinds_.set_arg(2, kRaysPerItem);
     trace("count_kinds", pass, count_kinds_, (count + kRaysPerItem - 1) / kRaysPerItem);
   }
-  intersect_.set_arg(kGeometryArgs + 0, params_);
-  intersect_.set_arg(kGeometryArgs + 1, rays_);
-  intersect_.set_arg(kGeometryArgs + 2, count);
-  intersect_.set_arg(kGeometryArgs + 3, hits_);
+  intersect_.set_arg(geometry_args_ + 0, params_);
+  intersect_.set_arg(geometry_args_ + 1, rays_);
+  intersect_.set_arg(geometry_args_ + 2, count);
+  intersect_.set_arg(geometry_args_ + 3, hits_);
   trace("intersect", pass, intersect_, count);
   for (std::uint32_t first = 0; first < count; first += shade_chunk_)
     shade_chunk(pass, first, std::min(shade_chunk_, count - first));
@@ -211,10 +209,10 @@ void WavefrontRenderer::shade_chunk(std::size_t pass, std::uint32_t first, std::
     stats_.shadow_rays += shadows;
     stats_.passes[pass].shadow_rays += shadows;
   }
-  shadow_.set_arg(kGeometryArgs + 0, params_);
-  shadow_.set_arg(kGeometryArgs + 1, shadow_queue_);
-  shadow_.set_arg(kGeometryArgs + 2, compactor_.total());
-  shadow_.set_arg(kGeometryArgs + 3, visible_);
+  shadow_.set_arg(geometry_args_ + 0, params_);
+  shadow_.set_arg(geometry_args_ + 1, shadow_queue_);
+  shadow_.set_arg(geometry_args_ + 2, compactor_.total());
+  shadow_.set_arg(geometry_args_ + 3, visible_);
   trace("shadow", pass, shadow_, slots);
   gather_.set_args(shadow_queue_, visible_, compactor_.total(), colour_);
   trace("gather_shadows", pass, gather_, slots);

@@ -59,6 +59,7 @@ class WavefrontRenderer {
   std::vector<Timed> timed_;
 
   DeviceGeometry geometry_;
+  cl_uint geometry_args_ = 0;  // the SCENE_PARAMS come first; the stage's own arguments follow
   compute::buffer camera_, params_, materials_, lights_;
   compute::buffer rays_, next_rays_, hits_, colour_, spawn_slots_, spawn_flags_;
   compute::buffer shadow_slots_, shadow_flags_, shadow_queue_, visible_;

@@ -25,12 +25,12 @@ std::vector<Result> run_queries(const char* kernel_name, const GeometryData& geo
                                 const std::vector<TestRay>& rays) {
   const DeviceGeometry device_geometry(test::device(), geometry);
   compute::kernel kernel(test::test_program(kSource), kernel_name);
-  device_geometry.bind(kernel, 0);
+  const unsigned first = device_geometry.bind(kernel, 0);
   const compute::buffer ray_buffer = test::upload(pack(rays), "rays");
   const compute::buffer results = test::device().allocate(sizeof(Result) * rays.size(), "results");
-  kernel.set_arg(8, ray_buffer);
-  kernel.set_arg(9, static_cast<cl_uint>(rays.size()));
-  kernel.set_arg(10, results);
+  kernel.set_arg(first + 0, ray_buffer);
+  kernel.set_arg(first + 1, static_cast<cl_uint>(rays.size()));
+  kernel.set_arg(first + 2, results);
   test::run(kernel, rays.size());
   return test::download<Result>(results, rays.size());
 }

@@ -67,17 +67,17 @@ std::vector<dev::f4> run_shadow(const Scene& scene, const std::vector<dev::Shado
   DeviceGeometry device_geometry(test::device(), geometry);
   const dev::RenderParams params = make_params(scene, RenderOptions{});
   compute::kernel kernel(test::renderer_program(), "shadow");
-  device_geometry.bind(kernel, 0);
+  const unsigned first = device_geometry.bind(kernel, 0);
   compute::buffer params_buffer = test::upload(std::vector<dev::RenderParams>{params});
   compute::buffer queue = test::upload(shadows);
   const auto count = static_cast<dev::u32>(shadows.size());
   compute::buffer visible =
       test::upload(std::vector<dev::f4>(shadows.size(), dev::f4{-1, -1, -1, -1}));
   compute::buffer count_on_device = test::upload(std::vector<dev::u32>{count});
-  kernel.set_arg(8, params_buffer);
-  kernel.set_arg(9, queue);
-  kernel.set_arg(10, count_on_device);
-  kernel.set_arg(11, visible);
+  kernel.set_arg(first + 0, params_buffer);
+  kernel.set_arg(first + 1, queue);
+  kernel.set_arg(first + 2, count_on_device);
+  kernel.set_arg(first + 3, visible);
   // Launched over more work-items than the queue holds, as the renderer does: the count on the
   // device bounds the work.
   test::run(kernel, count + 100);

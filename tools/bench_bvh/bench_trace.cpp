@@ -86,7 +86,7 @@ Tracer::Tracer(DeviceContext& device, const GeometryData& geometry)
   const compute::program program = device.build(assemble_kernel_source(kSource, "bench_bvh.cl"));
   closest_ = compute::kernel(program, "bvh_closest_hits");
   any_ = compute::kernel(program, "bvh_any_hits");
-  geometry_.bind(closest_, 0);
+  first_arg_ = geometry_.bind(closest_, 0);
   geometry_.bind(any_, 0);
 }
 
@@ -101,9 +101,9 @@ Throughput Tracer::measure(compute::kernel& kernel, const RaySet& rays, std::siz
   compute::buffer ray_buffer = device_.allocate(sizeof(dev::f4) * rays.size(), "rays");
   device_.queue().enqueue_write_buffer(ray_buffer, 0, sizeof(dev::f4) * rays.size(), rays.data());
   compute::buffer results = device_.allocate(result_bytes * count, "results");
-  kernel.set_arg(8, ray_buffer);
-  kernel.set_arg(9, static_cast<cl_uint>(count));
-  kernel.set_arg(10, results);
+  kernel.set_arg(first_arg_ + 0, ray_buffer);
+  kernel.set_arg(first_arg_ + 1, static_cast<cl_uint>(count));
+  kernel.set_arg(first_arg_ + 2, results);
   Throughput best;
   for (int run = 0; run <= runs; ++run) {
     const auto start = std::chrono::steady_clock::now();

@@ -44,6 +44,7 @@ class Tracer {
 
   DeviceContext& device_;
   DeviceGeometry geometry_;
+  unsigned first_arg_ = 0;  // the kernels' own arguments follow the SCENE_PARAMS
   compute::kernel closest_, any_;
 };
 

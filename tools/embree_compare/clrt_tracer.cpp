@@ -38,8 +38,8 @@ ClrtTracer::ClrtTracer(DeviceContext& device, const compute::program& program,
   params.epsilon = kTmin;
   params_ = upload(device, std::vector<dev::RenderParams>{params}, "render parameters");
   for (compute::kernel* k : {&intersect_, &shadow_}) {
-    geometry_.bind(*k, 0);
-    k->set_arg(8, params_);
+    first_arg_ = geometry_.bind(*k, 0);
+    k->set_arg(first_arg_, params_);
   }
 }
 
@@ -63,13 +63,13 @@ ClrtBatch ClrtTracer::occlusion_batch(const RaySet& set) {
 }
 
 double ClrtTracer::launch(ClrtBatch& batch) {
-  batch.kernel->set_arg(9, batch.rays);
+  batch.kernel->set_arg(first_arg_ + 1, batch.rays);
   if (batch.count_on_device.get()) {
-    batch.kernel->set_arg(10, batch.count_on_device);
+    batch.kernel->set_arg(first_arg_ + 2, batch.count_on_device);
   } else {
-    batch.kernel->set_arg(10, static_cast<cl_uint>(batch.count));
+    batch.kernel->set_arg(first_arg_ + 2, static_cast<cl_uint>(batch.count));
   }
-  batch.kernel->set_arg(11, batch.results);
+  batch.kernel->set_arg(first_arg_ + 3, batch.results);
   compute::event done = clrt::launch(device_.queue(), *batch.kernel, batch.count);
   if (batch.count == 0) return 0;
   done.wait();

@@ -37,6 +37,7 @@ class ClrtTracer {
  private:
   DeviceContext& device_;
   DeviceGeometry geometry_;
+  unsigned first_arg_ = 0;  // the kernels' own arguments follow the SCENE_PARAMS
   compute::buffer params_;
   compute::kernel intersect_, shadow_;
 };
