@@ -39,6 +39,15 @@ Mat4 random_similarity(std::mt19937& rng, double spread, double min_scale, doubl
          Mat4::rotate(uniform(rng, 0, 360), random_direction(rng)) * Mat4::scale({scale, scale, scale});
 }
 
+MeshData triangle_mesh_with_normals(const Vec3& n0, const Vec3& n1, const Vec3& n2) {
+  MeshData mesh;
+  mesh.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+  mesh.normals = {n0, n1, n2};
+  mesh.corners = {0, 1, 2};
+  mesh.corner_normals = {0, 1, 2};
+  return mesh;
+}
+
 MeshData ball_mesh(int rings, int segments, bool with_normals) {
   MeshData mesh;
   mesh.path = "ball";

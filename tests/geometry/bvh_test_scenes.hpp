@@ -19,6 +19,9 @@ Mat4 random_similarity(std::mt19937& rng, double spread, double min_scale, doubl
 // per-vertex normals when `with_normals`.
 MeshData ball_mesh(int rings, int segments, bool with_normals);
 
+// The triangle (0,0,0) (1,0,0) (0,1,0) with the given vertex normals, one per corner.
+MeshData triangle_mesh_with_normals(const Vec3& n0, const Vec3& n1, const Vec3& n2);
+
 // `count` spheres, cubes, cylinders and cones under random transforms, one plane, `triangles`
 // random loose triangles with cycling materials, and two instances of a small ball mesh.
 Scene random_scene(std::mt19937& rng, int count, int triangles);

@@ -166,12 +166,7 @@ TEST_CASE("geometry tables: planes first, one mesh per model, loose triangles la
 
 TEST_CASE("mesh vertex normals are stored unit length, in the triangle's corner order", "[bvh]") {
   Scene scene;
-  MeshData mesh;
-  mesh.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
-  mesh.normals = {{0, 0, 2}, {0, 3, 4}, {0, 0, 0}};
-  mesh.corners = {0, 1, 2};
-  mesh.corner_normals = {0, 1, 2};
-  scene.meshes.push_back(mesh);
+  scene.meshes.push_back(triangle_mesh_with_normals({0, 0, 2}, {0, 3, 4}, {0, 0, 0}));
   scene.instances.push_back(place_instance(ShapeKind::Mesh, Mat4::identity()));
   scene.instances.back().mesh = 0;
   const GeometryData g = build_geometry(scene);

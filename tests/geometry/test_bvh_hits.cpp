@@ -96,12 +96,7 @@ TEST_CASE("loose triangles take their own materials and keep their winding's nor
 
 TEST_CASE("mesh shading normals interpolate the vertex normals under the instance's transform", "[bvh][device]") {
   Scene scene;
-  MeshData mesh;
-  mesh.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
-  mesh.normals = {{0, 0, 1}, {1, 0, 1}, {0, 1, 1}};
-  mesh.corners = {0, 1, 2};
-  mesh.corner_normals = {0, 1, 2};
-  scene.meshes.push_back(mesh);
+  scene.meshes.push_back(triangle_mesh_with_normals({0, 0, 1}, {1, 0, 1}, {0, 1, 1}));
   const Mat4 m = Mat4::translate({0, 0, -3}) * Mat4::scale({2, 1, 1});
   scene.instances.push_back(place_instance(ShapeKind::Mesh, m, 4));
   scene.instances.back().mesh = 0;
