@@ -1,21 +1,29 @@
-/* Deterministic accumulation without float atomics. Queues are sorted by owner (shadow rays by
- * the ray they light, rays by their camera sample): the first item of each run of equal owners
- * adds the whole run in queue order and is the only writer of that owner's entry. The order of
- * every sum therefore depends only on the ray tree of one sample, never on threads, work-group
- * sizes or how many samples share a wave. */
+/* Deterministic accumulation without float atomics, in the order both integrators follow
+ * (the megakernel in megakernel.cl adds in exactly this order):
+ *   1. a ray's colour: its ambient term (or its miss colour), then + each unblocked light
+ *      sample's term in light-sample order (a blocked sample adds 0);
+ *   2. a sample's level d: the colours of its rays of depth d, left to right in the ray tree
+ *      (reflection before refraction at every branch), added from the first;
+ *   3. a sample's colour: 0 + level 0 + level 1 + ... (levels without rays add nothing);
+ *   4. a pixel: sample 0 + sample 1 + ..., divided by the sample count.
+ * In the wavefront, queues are sorted by owner (shadow rays by the ray they light, rays by their
+ * camera sample, and within a sample in tree order, since compaction is stable): the first item
+ * of each run of equal owners adds the whole run in queue order and is the only writer of that
+ * owner's entry. Every sum therefore depends only on one sample's ray tree, never on threads,
+ * work-group sizes, how many samples share a wave, or the integrator. */
 #include "render/common.h"
 
 /* colour[owner] += the visible contributions of its shadow rays, in light-sample order. The
  * queue's length *count is the one compaction left on the device (see shadow.cl). */
 __kernel void gather_shadows(__global const ShadowRay* shadows, __global const float4* visible,
-                             __global const uint* count_on_device, __global float4* colour) {
+                             __global const uint* count, __global float4* colour) {
   const uint i = get_global_id(0);
-  const uint count = *count_on_device;
-  if (i >= count) return;
+  const uint n = *count;
+  if (i >= n) return;
   const uint owner = shadows[i].owner;
   if (i > 0 && shadows[i - 1].owner == owner) return;
   float4 sum = colour[owner];
-  for (uint j = i; j < count && shadows[j].owner == owner; ++j) sum += visible[j];
+  for (uint j = i; j < n && shadows[j].owner == owner; ++j) sum += visible[j];
   colour[owner] = sum;
 }
 
@@ -39,26 +47,4 @@ __kernel void resolve(__global const float4* sample_colour, uint samples, uint p
   float4 sum = sample_colour[(size_t)p * samples];
   for (uint k = 1; k < samples; ++k) sum += sample_colour[(size_t)p * samples + k];
   pixels[p] = sum / (float)samples;
-}
-
-/* Rays of each kind in the queue, for --stats, added to the current wave's counts[kind]. Each
- * work-item counts a run of `chunk` rays and adds its three totals with integer atomics (exact
- * in any order): one atomic per ray made this kernel cost as much as shading. */
-__kernel void count_kinds(__global const Ray* rays, uint count, uint chunk, __global uint* counts) {
-  const uint begin = get_global_id(0) * chunk;
-  if (begin >= count) return;
-  const uint end = min(begin + chunk, count);
-  uint per_kind[3] = {0u, 0u, 0u};
-  for (uint i = begin; i < end; ++i) ++per_kind[rays[i].kind];
-  for (uint k = 0; k < 3; ++k)
-    if (per_kind[k]) atomic_add(&counts[k], per_kind[k]);
-}
-
-/* A finished wave's counts join the render's (counts[3 + kind]) and restart from zero; the
- * host reads them once per range of pixels instead of waiting for them every pass. */
-__kernel void commit_kind_counts(__global uint* counts) {
-  const uint k = get_global_id(0);
-  if (k >= 3) return;
-  counts[3 + k] += counts[k];
-  counts[k] = 0;
 }

@@ -1,10 +1,8 @@
 /* shadow: an any-hit test of every shadow ray of the compacted queue.
  * In: shadows[0, *count); the count stays on the device where compaction wrote it, so the host
  * launches over an upper bound instead of waiting to read it. Out: visible[i] = the ray's
- * contribution when nothing lies between epsilon and the light (origin.w), else zero.
- * gather_shadows (accumulate.cl) adds them up. */
-#include "render/common.h"
-#include "geometry/scene_intersect.h"
+ * contribution when unblocked, else zero; gather_shadows (accumulate.cl) adds them up. */
+#include "render/shadow_test.h"
 
 __kernel void shadow(SCENE_PARAMS, __global const RenderParams* params,
                      __global const ShadowRay* shadows, __global const uint* count,
@@ -12,7 +10,5 @@ __kernel void shadow(SCENE_PARAMS, __global const RenderParams* params,
   const uint i = get_global_id(0);
   if (i >= *count) return;
   const ShadowRay s = shadows[i];
-  const bool blocked =
-      scene_any_hit(SCENE_ARGS, xyz(s.origin), xyz(s.dir), params->epsilon, s.origin.w);
-  visible[i] = blocked ? (float4)(0.0f) : s.contribution;
+  visible[i] = shadow_visible(SCENE_ARGS, params->epsilon, &s);
 }

@@ -5,11 +5,14 @@
 #include <chrono>
 #include <filesystem>
 #include <iostream>
+#include <nlohmann/json.hpp>
 
 #include "cli/options.hpp"
 #include "device/device_select.hpp"
 #include "image/image.hpp"
 #include "render/renderer.hpp"
+#include "render/usage_error.hpp"
+#include "version.hpp"
 #include "scene/scene.hpp"
 
 namespace {
@@ -35,6 +38,8 @@ int run(const clrt::CliOptions& cli) {
     return 0;
   }
   clrt::RenderStats stats;
+  stats.scene = cli.scene;
+  stats.version = clrt_version_string();
   clrt::Scene scene;
   try {
     scene = clrt::load_scene(cli.scene);
@@ -56,6 +61,7 @@ int run(const clrt::CliOptions& cli) {
   setup.devices = clrt::select_devices(cli.device);
   setup.profile = cli.stats != clrt::StatsFormat::None;
   setup.progress = !cli.quiet;
+  clrt::check_render_setup(setup);
   if (!cli.quiet)
     for (const auto& d : setup.devices) std::cerr << "device " << clrt::describe_device(d) << "\n";
 
@@ -68,7 +74,7 @@ int run(const clrt::CliOptions& cli) {
   getrusage(RUSAGE_SELF, &usage);
   stats.peak_host_bytes = static_cast<std::uint64_t>(usage.ru_maxrss) * 1024;
   if (cli.stats == clrt::StatsFormat::Text) std::cout << stats.to_text();
-  if (cli.stats == clrt::StatsFormat::Json) std::cout << stats.to_json();
+  if (cli.stats == clrt::StatsFormat::Json) std::cout << stats.to_json().dump(2) << "\n";
   return 0;
 }
 
@@ -79,6 +85,9 @@ int main(int argc, char** argv) {
   if (parsed.exit_code) return *parsed.exit_code;
   try {
     return run(parsed.options);
+  } catch (const clrt::UsageError& e) {
+    std::cerr << "clrt: error: " << e.what() << "\n";
+    return 2;
   } catch (const std::exception& e) {
     std::cerr << "clrt: error: " << e.what() << "\n";
     return 1;

@@ -16,6 +16,7 @@ packages=(
   libcli11-dev                   # the command line
   libpng-dev                     # PNG output and input
   libtinyobjloader-dev           # Wavefront OBJ meshes
+  nlohmann-json3-dev             # JSON for --stats=json and the experiment records
 )
 
 missing=()

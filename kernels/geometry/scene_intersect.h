@@ -27,7 +27,7 @@
 #include "geometry/bvh_ray.h"
 #include "geometry/bvh_stack.h"
 
-#define SCENE_PARAMS u32 instance_count, u32 plane_count, __global const Instance* instances, __global const Mesh* meshes, __global const TriangleNormals* triangle_normals, __global const u32* triangle_materials, __global const BvhBlock* bvh
+#define SCENE_PARAMS uint instance_count, uint plane_count, __global const Instance* instances, __global const Mesh* meshes, __global const TriangleNormals* triangle_normals, __global const uint* triangle_materials, __global const BvhBlock* bvh
 #define SCENE_ARGS instance_count, plane_count, instances, meshes, triangle_normals, triangle_materials, bvh
 
 /* Canonical shape instance `index` against the world ray; updates *best on a hit in

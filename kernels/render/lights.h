@@ -13,22 +13,28 @@ typedef struct LightSample {
 } LightSample;
 
 /* Sample j of `light` from point p; `path` is the shading point's random stream. Area lights
- * split their intensity evenly over their stratified samples. */
+ * split their intensity evenly over their stratified samples. The switch names every kind:
+ * the host uploads no other (src/render/frame_setup.cpp). */
 inline LightSample sample_light(__global const Light* light, uint j, float3 p, uint path) {
   LightSample s;
   s.intensity = xyz(light->color);
-  if (light->kind == CLRT_LIGHT_DIRECTIONAL) {
-    s.to_light = -xyz(light->direction);
-    s.distance = INFINITY;
-    s.position = p + s.to_light;
-    return s;
-  }
   s.position = xyz(light->position);
-  if (light->kind == CLRT_LIGHT_AREA) {
-    const float2 uv = stratified(j, light->grid_u, light->grid_v,
-                                 jitter2(path, light->first_sample + j));
-    s.position += uv.x * xyz(light->edge_u) + uv.y * xyz(light->edge_v);
-    s.intensity /= (float)light->samples;
+  switch (light->kind) {
+    case CLRT_LIGHT_DIRECTIONAL:
+      s.to_light = -xyz(light->direction);
+      s.distance = INFINITY;
+      s.position = p + s.to_light;
+      return s;
+    case CLRT_LIGHT_AREA: {
+      const float2 uv = stratified(j, light->grid_u, light->grid_v,
+                                   jitter2(path, light->first_sample + j));
+      s.position += uv.x * xyz(light->edge_u) + uv.y * xyz(light->edge_v);
+      s.intensity /= (float)light->samples;
+      break;
+    }
+    case CLRT_LIGHT_POINT:
+    case CLRT_LIGHT_SPOT:
+      break;
   }
   const float3 delta = s.position - p;
   s.distance = length(delta);

@@ -7,10 +7,13 @@ CLRT_SHARED_BEGIN
 
 #define CLRT_NO_HIT 0xffffffffu
 
-/* What produced a ray; counted separately by --stats. */
+/* What produced a ray; counted separately by --stats. Queues hold the first three kinds;
+ * shadow rays have their own records. CLRT_RAY_KINDS sizes every per-kind table. */
 #define CLRT_RAY_CAMERA 0u
 #define CLRT_RAY_REFLECTION 1u
 #define CLRT_RAY_REFRACTION 2u
+#define CLRT_RAY_SHADOW 3u
+#define CLRT_RAY_KINDS 4u
 
 /* A camera, reflection or refraction ray. Queues are kept sorted by `sample` (camera rays are
  * generated in sample order and compaction is stable), which is what lets contributions be

@@ -29,6 +29,7 @@ CLRT_CHECK_SIZE(Material, 48);
 #define CLRT_LIGHT_DIRECTIONAL 1u
 #define CLRT_LIGHT_SPOT 2u
 #define CLRT_LIGHT_AREA 3u
+#define CLRT_LIGHT_KINDS 4u
 
 /* Non-ambient lights only: ambient lights are summed into RenderParams.ambient. */
 typedef struct Light {

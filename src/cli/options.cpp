@@ -6,10 +6,11 @@
 #include <iostream>
 #include <regex>
 
+#include "render/integrator.hpp"
+#include "version.hpp"
+
 namespace clrt {
 namespace {
-
-constexpr const char* kVersion = "clrt 0.1.0";
 
 // "640x480" -> width, height; CLI11 reports the returned message as a usage error.
 std::string parse_resolution(const std::string& text, CliOptions& o) {
@@ -28,7 +29,7 @@ ParseResult parse_command_line(int argc, char** argv) {
   ParseResult result;
   CliOptions& o = result.options;
   CLI::App app{"clrt: a wavefront OpenCL ray tracer for .ray scenes", "clrt"};
-  app.set_version_flag("--version", kVersion);
+  app.set_version_flag("--version", std::string(clrt_version_string()));
   app.add_option("scene", o.scene, "the .ray scene to render");
   app.add_option("-o,--outfile", o.outfile,
                  "output image; the extension picks the format: .png .ppm .fsf .pfm "
@@ -60,6 +61,15 @@ ParseResult parse_command_line(int argc, char** argv) {
                  "rays in flight per queue: device memory grows with it "
                  "(default: 16384 on CPU devices, 1048576 on others)")
       ->check(CLI::Range(1u << 10, 1u << 26));
+  app.add_option_function<std::string>(
+         "--integrator",
+         [&](const std::string& name) { o.integrator = *parse_integrator(name); },
+         "wavefront (default: one kernel per stage, queues compacted every pass) or megakernel "
+         "(one kernel walks each sample's whole ray tree; same image, for comparison)")
+      ->check(CLI::IsMember({"wavefront", "megakernel"}, CLI::ignore_case));
+  app.add_option("--local-size", o.local_size,
+                 "work-items per work-group for every kernel (default: per device class)")
+      ->check(CLI::Range(1, 1024));
   std::string stats;
   app.add_option("--stats", stats, "print statistics to stdout: --stats or --stats=json")
       ->expected(0, 1)
@@ -86,6 +96,8 @@ RenderOptions resolve_render_options(const CliOptions& cli, const Scene& scene) 
   if (cli.mode) r.mode = *cli.mode;
   r.seed = cli.seed;
   r.wavefront = cli.wavefront;
+  r.local_size = cli.local_size;
+  r.integrator = cli.integrator;
   return r;
 }
 

@@ -16,7 +16,9 @@ struct CliOptions {
   std::optional<int> width, height, samples, max_depth;
   std::optional<RenderMode> mode;
   std::uint32_t seed = 0;
-  std::uint32_t wavefront = 0;  // 0: per device, see default_wavefront()
+  std::uint32_t wavefront = 0;  // 0: per device class, see device_tuning.cpp
+  std::size_t local_size = 0;   // 0: per device class
+  IntegratorKind integrator = IntegratorKind::Wavefront;
   std::string device = "cpu";
   bool list_devices = false;
   StatsFormat stats = StatsFormat::None;

@@ -4,7 +4,8 @@
 
 namespace clrt {
 
-const char* const kProgramOptions = "-cl-std=CL1.2";
+// Argument information lets the host check every binding against the kernel's own signature.
+const char* const kProgramOptions = "-cl-std=CL1.2 -cl-kernel-arg-info";
 
 namespace {
 

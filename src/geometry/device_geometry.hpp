@@ -1,28 +1,35 @@
-// A GeometryData uploaded to one device, bound to kernels as the SCENE_PARAMS arguments of
-// kernels/geometry/scene_intersect.h.
+// A GeometryData uploaded to one device, and the SCENE_PARAMS arguments
+// (kernels/geometry/scene_intersect.h) that every kernel tracing rays takes first.
 #pragma once
 
 #include "device/device_context.hpp"
+#include "device/kernel_args.hpp"
 #include "geometry/geometry_data.hpp"
 
 namespace clrt {
+
+// The SCENE_PARAMS, in their order.
+struct SceneArgs {
+  cl_uint instance_count = 0;
+  cl_uint plane_count = 0;
+  Global<const dev::Instance> instances;
+  Global<const dev::Mesh> meshes;
+  Global<const dev::TriangleNormals> triangle_normals;
+  Global<const cl_uint> triangle_materials;
+  Global<const dev::BvhBlock> bvh;
+
+  CLRT_KERNEL_ARGS(instance_count, plane_count, instances, meshes, triangle_normals,
+                   triangle_materials, bvh)
+};
 
 class DeviceGeometry {
  public:
   DeviceGeometry(DeviceContext& device, const GeometryData& geometry);
 
-  // Sets the SCENE_PARAMS arguments of `kernel`, in order, starting at `first_arg`; returns the
-  // index of the kernel's next argument.
-  unsigned bind(compute::kernel& kernel, unsigned first_arg) const;
+  const SceneArgs& args() const { return args_; }
 
  private:
-  dev::u32 instance_count_;
-  dev::u32 plane_count_;
-  compute::buffer instances_;
-  compute::buffer meshes_;
-  compute::buffer triangle_normals_;
-  compute::buffer triangle_materials_;
-  compute::buffer nodes_;
+  SceneArgs args_;
 };
 
 }  // namespace clrt

@@ -4,7 +4,7 @@
 #include <cstddef>
 #include <cstdint>
 
-#include "device/device_context.hpp"
+#include "render/profiler.hpp"
 
 namespace clrt {
 
@@ -14,34 +14,37 @@ class Compactor {
   Compactor(DeviceContext& device, const compute::program& program, std::size_t max_slots);
 
   // Copies the records of `in` whose flag is set, in order, to the front of `out` (at most
-  // `capacity` of them), and returns how many were flagged: the only value read back to the
-  // host. `record_bytes` is a multiple of 16.
-  std::uint32_t compact(const compute::buffer& in, const compute::buffer& flags, std::size_t slots,
-                        std::size_t record_bytes, const compute::buffer& out,
-                        std::size_t capacity);
+  // `capacity` of them); the number flagged is left on the device in total(), where kernels
+  // read it. Launches are recorded under `pass`.
+  template <class Record>
+  void enqueue(Profiler& profiler, const Global<Record>& in, const Global<cl_uint>& flags,
+               std::size_t slots, const Global<Record>& out, std::size_t capacity,
+               std::uint32_t pass) {
+    static_assert(sizeof(Record) % sizeof(cl_uint4) == 0, "records move as whole uint4 words");
+    enqueue_words(profiler, in.buffer, flags, slots, sizeof(Record) / sizeof(cl_uint4),
+                  out.buffer, capacity, pass);
+  }
 
-  // The same, without waiting: the count is left in total() for kernels that read it there.
-  void enqueue(const compute::buffer& in, const compute::buffer& flags, std::size_t slots,
-               std::size_t record_bytes, const compute::buffer& out, std::size_t capacity);
+  // Waits for the last count: the one value that crosses to the host, once a pass.
   std::uint32_t read_total();
 
   // One uint on the device: the flagged count of the last call.
-  const compute::buffer& total() const { return total_; }
+  const Global<cl_uint>& total() const { return total_; }
 
   // Slots per work-item: large enough that each work-item streams a long run (no barriers or
   // atomics needed), small enough that 2 cores still get many work-items per launch.
   static constexpr std::uint32_t kChunk = 256;
 
-  // The events of the last compact() call's launches, in order, for profiling.
-  const compute::event& count_event() const { return events_[0]; }
-  const compute::event& scan_event() const { return events_[1]; }
-  const compute::event& scatter_event() const { return events_[2]; }
-
  private:
+  void enqueue_words(Profiler& profiler, const compute::buffer& in, const Global<cl_uint>& flags,
+                     std::size_t slots, std::size_t words, const compute::buffer& out,
+                     std::size_t capacity, std::uint32_t pass);
+
   DeviceContext& device_;
-  compute::kernel count_, scan_, scatter_;
-  compute::buffer chunk_counts_, total_;
-  compute::event events_[3];
+  TypedKernel<CompactCountArgs> count_;
+  TypedKernel<CompactScanArgs> scan_;
+  TypedKernel<CompactScatterArgs> scatter_;
+  Global<cl_uint> chunk_counts_, total_;
 };
 
 }  // namespace clrt

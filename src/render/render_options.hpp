@@ -1,6 +1,7 @@
 // What a render is asked for, after the command line has overridden the scene file.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 
 #include "scene/scene.hpp"
@@ -9,6 +10,9 @@ namespace clrt {
 
 enum class RenderMode { Trace, Cast };
 
+// The wavefront is the product; the megakernel is the design it is measured against.
+enum class IntegratorKind { Wavefront, Megakernel };
+
 struct RenderOptions {
   int width = 500, height = 300;
   int samples = 1;  // camera samples per pixel
@@ -16,8 +20,11 @@ struct RenderOptions {
   RenderMode mode = RenderMode::Trace;
   std::uint32_t seed = 0;
   // Rays in flight per queue: device memory grows with it, never with the image size.
-  // 0 picks default_wavefront() for each device.
+  // 0 picks the device class's (src/device/device_tuning.cpp).
   std::uint32_t wavefront = 0;
+  IntegratorKind integrator = IntegratorKind::Wavefront;
+  // Work-items per work-group; 0 picks the device class's (src/device/device_tuning.cpp).
+  std::size_t local_size = 0;
 
   // The scene's own settings, for fields the command line leaves alone.
   static RenderOptions from_scene(const Scene& scene);

@@ -2,39 +2,38 @@
 
 #include <algorithm>
 #include <iomanip>
+#include <nlohmann/json.hpp>
 #include <sstream>
 
 namespace clrt {
 namespace {
 
-double mrays_per_second(std::uint64_t rays, double seconds) {
-  return seconds > 0 ? static_cast<double>(rays) / seconds / 1e6 : 0.0;
-}
-
-// JSON strings here are device and kernel names: escape what JSON requires.
-std::string json_string(const std::string& s) {
-  std::string out = "\"";
-  for (char c : s) {
-    if (c == '"' || c == '\\') {
-      out += '\\';
-      out += c;
-    } else if (static_cast<unsigned char>(c) < 0x20) {
-      out += ' ';
-    } else {
-      out += c;
-    }
-  }
-  return out + "\"";
+double per_second(std::uint64_t count, double seconds) {
+  return seconds > 0 ? static_cast<double>(count) / seconds : 0.0;
 }
 
 }  // namespace
 
+const char* ray_kind_name(unsigned kind) {
+  static const char* const names[CLRT_RAY_KINDS] = {"camera", "reflection", "refraction", "shadow"};
+  return kind < CLRT_RAY_KINDS ? names[kind] : "unknown";
+}
+
+std::uint64_t RenderStats::total_rays() const {
+  std::uint64_t sum = 0;
+  for (std::uint64_t r : rays) sum += r;
+  return sum;
+}
+
+double RenderStats::device_seconds() const {
+  double sum = 0;
+  for (const auto& [name, k] : kernels) sum += k.device_seconds;
+  return sum;
+}
+
 void RenderStats::merge(const RenderStats& o) {
-  if (!o.device.empty()) device += (device.empty() ? "" : ", ") + o.device;
-  camera_rays += o.camera_rays;
-  reflection_rays += o.reflection_rays;
-  refraction_rays += o.refraction_rays;
-  shadow_rays += o.shadow_rays;
+  devices.insert(devices.end(), o.devices.begin(), o.devices.end());
+  for (unsigned k = 0; k < CLRT_RAY_KINDS; ++k) rays[k] += o.rays[k];
   if (passes.size() < o.passes.size()) passes.resize(o.passes.size());
   for (std::size_t i = 0; i < o.passes.size(); ++i) {
     passes[i].rays += o.passes[i].rays;
@@ -48,19 +47,26 @@ void RenderStats::merge(const RenderStats& o) {
   }
   waves += o.waves;
   wave_restarts += o.wave_restarts;
-  wavefront = std::max(wavefront, o.wavefront);
   device_bytes += o.device_bytes;
-  build_seconds = std::max(build_seconds, o.build_seconds);
 }
 
 std::string RenderStats::to_text() const {
   std::ostringstream out;
   out << std::fixed << std::setprecision(3);
-  out << "device:        " << device << "\n";
-  out << "rays:          " << total_rays() << " (camera " << camera_rays << ", shadow " << shadow_rays
-      << ", reflection " << reflection_rays << ", refraction " << refraction_rays << ")\n";
-  out << "throughput:    " << std::setprecision(2) << mrays_per_second(total_rays(), render_seconds)
-      << " Mrays/s over the render time\n"
+  out << "clrt:          " << version << "\n";
+  out << "scene:         " << scene << " (" << width << "x" << height << ", " << samples_per_pixel
+      << " samples per pixel)\n";
+  for (const DeviceReport& d : devices)
+    out << "device:        " << d.name << " (" << d.platform << ", driver " << d.driver << ", "
+        << d.opencl_c << "; local size " << d.local_size << ", wavefront " << d.wavefront << ")\n";
+  out << "integrator:    " << integrator << "\n";
+  out << "rays:          " << total_rays() << " (";
+  for (unsigned k = 0; k < CLRT_RAY_KINDS; ++k)
+    out << (k ? ", " : "") << ray_kind_name(k) << " " << rays[k];
+  out << ")\n";
+  out << "throughput:    " << std::setprecision(2) << per_second(total_rays(), render_seconds) / 1e6
+      << " Mrays/s, " << per_second(camera_samples(), render_seconds) / 1e6
+      << " Msamples/s over the render time; kernels busy " << device_seconds() << " s\n"
       << std::setprecision(3);
   out << "time (s):      load " << load_seconds << ", bvh " << bvh_seconds << ", kernel build "
       << build_seconds << ", render " << render_seconds << ", write " << write_seconds
@@ -69,13 +75,15 @@ std::string RenderStats::to_text() const {
       << " KiB BVH table (nodes and leaf data); scene tables " << (geometry_bytes >> 10)
       << " KiB in all\n";
   out << "waves:         " << waves << " (restarts after a queue overflow: " << wave_restarts
-      << "), wavefront " << wavefront << " rays, device memory " << (device_bytes >> 20)
-      << " MiB, peak process memory " << (peak_host_bytes >> 20) << " MiB\n";
-  out << "passes:        pass      rays    shadow  max queue  device s\n";
-  for (std::size_t i = 0; i < passes.size(); ++i)
-    out << "               " << std::setw(4) << i << std::setw(10) << passes[i].rays
-        << std::setw(10) << passes[i].shadow_rays << std::setw(11) << passes[i].max_queue
-        << std::setw(10) << passes[i].device_seconds << "\n";
+      << "), device memory " << (device_bytes >> 20) << " MiB, peak process memory "
+      << (peak_host_bytes >> 20) << " MiB\n";
+  if (!passes.empty()) {
+    out << "passes:        pass      rays    shadow  max queue  device s\n";
+    for (std::size_t i = 0; i < passes.size(); ++i)
+      out << "               " << std::setw(4) << i << std::setw(10) << passes[i].rays
+          << std::setw(10) << passes[i].shadow_rays << std::setw(11) << passes[i].max_queue
+          << std::setw(10) << passes[i].device_seconds << "\n";
+  }
   out << "kernels:       name                launches  device s\n";
   for (const auto& [name, k] : kernels)
     out << "               " << std::left << std::setw(20) << name << std::right << std::setw(8)
@@ -83,34 +91,50 @@ std::string RenderStats::to_text() const {
   return out.str();
 }
 
-std::string RenderStats::to_json() const {
-  std::ostringstream out;
-  out << std::setprecision(6);
-  out << "{\"device\": " << json_string(device) << ", \"rays\": {\"camera\": " << camera_rays
-      << ", \"shadow\": " << shadow_rays << ", \"reflection\": " << reflection_rays
-      << ", \"refraction\": " << refraction_rays << ", \"total\": " << total_rays()
-      << "}, \"mrays_per_second\": " << mrays_per_second(total_rays(), render_seconds)
-      << ", \"seconds\": {\"load\": " << load_seconds << ", \"bvh\": " << bvh_seconds
-      << ", \"kernel_build\": " << build_seconds << ", \"render\": " << render_seconds
-      << ", \"write\": " << write_seconds << ", \"total\": " << total_seconds
-      << "}, \"waves\": " << waves << ", \"wave_restarts\": " << wave_restarts
-      << ", \"wavefront\": " << wavefront << ", \"device_bytes\": " << device_bytes
-      << ", \"peak_host_bytes\": " << peak_host_bytes << ", \"geometry_bytes\": " << geometry_bytes
-      << ", \"bvh_bytes\": " << bvh_bytes
-      << ", \"passes\": [";
-  for (std::size_t i = 0; i < passes.size(); ++i)
-    out << (i ? ", " : "") << "{\"rays\": " << passes[i].rays << ", \"shadow_rays\": "
-        << passes[i].shadow_rays << ", \"max_queue\": " << passes[i].max_queue
-        << ", \"device_seconds\": " << passes[i].device_seconds << "}";
-  out << "], \"kernels\": {";
-  bool first = true;
-  for (const auto& [name, k] : kernels) {
-    out << (first ? "" : ", ") << json_string(name) << ": {\"launches\": " << k.launches
-        << ", \"device_seconds\": " << k.device_seconds << "}";
-    first = false;
-  }
-  out << "}}\n";
-  return out.str();
+nlohmann::json RenderStats::to_json() const {
+  using nlohmann::json;
+  json j;
+  j["clrt"] = version;
+  j["scene"] = scene;
+  j["width"] = width;
+  j["height"] = height;
+  j["samples_per_pixel"] = samples_per_pixel;
+  j["integrator"] = integrator;
+  j["devices"] = json::array();
+  for (const DeviceReport& d : devices)
+    j["devices"].push_back({{"platform", d.platform},
+                            {"name", d.name},
+                            {"driver", d.driver},
+                            {"opencl_c", d.opencl_c},
+                            {"class", d.device_class},
+                            {"local_size", d.local_size},
+                            {"wavefront", d.wavefront}});
+  json by_kind = json::object();
+  for (unsigned k = 0; k < CLRT_RAY_KINDS; ++k) by_kind[ray_kind_name(k)] = rays[k];
+  by_kind["total"] = total_rays();
+  j["rays"] = by_kind;
+  j["mrays_per_second"] = per_second(total_rays(), render_seconds) / 1e6;
+  j["samples_per_second"] = per_second(camera_samples(), render_seconds);
+  j["seconds"] = {{"load", load_seconds},     {"bvh", bvh_seconds},
+                  {"kernel_build", build_seconds}, {"render", render_seconds},
+                  {"write", write_seconds},   {"total", total_seconds},
+                  {"device", device_seconds()}};
+  j["waves"] = waves;
+  j["wave_restarts"] = wave_restarts;
+  j["bytes"] = {{"device", device_bytes},
+                {"peak_host", peak_host_bytes},
+                {"geometry", geometry_bytes},
+                {"bvh", bvh_bytes}};
+  j["passes"] = json::array();
+  for (const PassStats& p : passes)
+    j["passes"].push_back({{"rays", p.rays},
+                           {"shadow_rays", p.shadow_rays},
+                           {"max_queue", p.max_queue},
+                           {"device_seconds", p.device_seconds}});
+  j["kernels"] = json::object();
+  for (const auto& [name, k] : kernels)
+    j["kernels"][name] = {{"launches", k.launches}, {"device_seconds", k.device_seconds}};
+  return j;
 }
 
 }  // namespace clrt

@@ -2,12 +2,24 @@
 // times, and the wall-clock split of the whole command.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <map>
 #include <string>
 #include <vector>
 
+#include <nlohmann/json_fwd.hpp>
+
+#include "shared/ray.h"
+
 namespace clrt {
+
+// One device that took part, as an experiment needs to name it.
+struct DeviceReport {
+  std::string platform, name, driver, opencl_c, device_class;
+  std::size_t local_size = 0;
+  std::uint64_t wavefront = 0;  // rays per queue (camera samples per launch for the megakernel)
+};
 
 struct PassStats {
   std::uint64_t rays = 0;         // rays in the queue at this pass (all waves)
@@ -21,13 +33,18 @@ struct KernelStats {
   double device_seconds = 0;
 };
 
+// "camera", "reflection", "refraction", "shadow": CLRT_RAY_* in order.
+const char* ray_kind_name(unsigned kind);
+
 struct RenderStats {
-  std::string device;
-  std::uint64_t camera_rays = 0, reflection_rays = 0, refraction_rays = 0, shadow_rays = 0;
-  std::vector<PassStats> passes;  // index = pass = ray depth
+  std::string scene, integrator, version;
+  std::uint64_t width = 0, height = 0;     // the rendered region's size
+  std::uint64_t samples_per_pixel = 0;
+  std::vector<DeviceReport> devices;
+  std::array<std::uint64_t, CLRT_RAY_KINDS> rays{};  // by kind, CLRT_RAY_*
+  std::vector<PassStats> passes;  // index = pass = ray depth (wavefront only)
   std::map<std::string, KernelStats> kernels;
   std::uint64_t waves = 0, wave_restarts = 0;
-  std::uint64_t wavefront = 0;       // rays per queue
   std::uint64_t device_bytes = 0;    // render buffers + scene tables
   std::uint64_t peak_host_bytes = 0; // the process's peak resident memory
   std::uint64_t geometry_bytes = 0;  // instance, mesh and triangle tables and BVH nodes
@@ -35,12 +52,13 @@ struct RenderStats {
   double load_seconds = 0, bvh_seconds = 0, build_seconds = 0, render_seconds = 0,
          write_seconds = 0, total_seconds = 0;
 
-  std::uint64_t total_rays() const {
-    return camera_rays + reflection_rays + refraction_rays + shadow_rays;
-  }
-  void merge(const RenderStats& other);  // another device's share of the same render
+  std::uint64_t total_rays() const;
+  std::uint64_t camera_samples() const { return rays[CLRT_RAY_CAMERA]; }
+  double device_seconds() const;  // the sum over kernels
+  // Another device's share of the same render (its rays, passes, kernels and buffers).
+  void merge(const RenderStats& other);
   std::string to_text() const;
-  std::string to_json() const;
+  nlohmann::json to_json() const;
 };
 
 }  // namespace clrt

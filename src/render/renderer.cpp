@@ -1,18 +1,18 @@
 #include "render/renderer.hpp"
 
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <exception>
 #include <memory>
 #include <mutex>
 #include <thread>
 
+#include "device/device_tuning.hpp"
 #include "device/kernel_source.hpp"
 #include "geometry/geometry_data.hpp"
 #include "render/frame_setup.hpp"
+#include "render/integrator.hpp"
 #include "render/progress.hpp"
-#include "render/wavefront.hpp"
 
 namespace clrt {
 namespace {
@@ -23,71 +23,113 @@ double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
+DeviceTuning tuning_of(const DeviceEntry& entry, const RenderOptions& options) {
+  DeviceTuning t = tuning_for(classify(entry.device));
+  if (options.local_size) t.local_size = options.local_size;
+  if (options.wavefront) t.wavefront = options.wavefront;
+  return t;
+}
+
+DeviceReport report_of(const DeviceEntry& entry, const DeviceTuning& tuning) {
+  const compute::device& d = entry.device;
+  DeviceReport r;
+  r.platform = d.platform().name();
+  r.name = d.name();
+  r.driver = d.driver_version();
+  r.opencl_c = d.get_info<std::string>(CL_DEVICE_OPENCL_C_VERSION);
+  r.device_class = class_name(tuning.device_class);
+  r.local_size = tuning.local_size;
+  r.wavefront = tuning.wavefront;
+  return r;
+}
+
 struct DeviceWorker {
   std::unique_ptr<DeviceContext> context;
-  std::unique_ptr<WavefrontRenderer> renderer;
+  std::unique_ptr<DeviceFrame> frame;
+  std::unique_ptr<Integrator> integrator;
+  DeviceReport report;
 };
 
-// Pixel ranges are claimed one at a time from a shared counter, each device a wave's worth:
-// a faster device takes more. Every pixel's colour depends only on the pixel, so the split
-// never changes the image.
-class PixelDealer {
+// Bands of whole rows of the region are claimed one at a time, each about a wave's worth of
+// pixels for the device that claims it: a faster device takes more. Every pixel's colour
+// depends only on the pixel, so the split never changes the image.
+class RowDealer {
  public:
-  explicit PixelDealer(std::uint32_t total) : total_(total) {}
-  bool next(std::uint32_t block, std::uint32_t& first, std::uint32_t& count) {
-    first = next_.fetch_add(block);
-    if (first >= total_) return false;
-    count = std::min(block, total_ - first);
+  explicit RowDealer(const PixelRect& region) : region_(region) {}
+
+  bool next(std::uint32_t wave_pixels, PixelRect& band) {
+    const std::uint32_t rows = std::max<std::uint32_t>(1, wave_pixels / region_.width);
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (next_row_ >= region_.height) return false;
+    band = region_;
+    band.y = region_.y + next_row_;
+    band.height = std::min(rows, region_.height - next_row_);
+    next_row_ += band.height;
     return true;
   }
 
  private:
-  std::uint32_t total_;
-  std::atomic<std::uint32_t> next_{0};
+  PixelRect region_;
+  std::uint32_t next_row_ = 0;
+  std::mutex mutex_;
 };
 
 }  // namespace
 
+void check_render_setup(const RenderSetup& setup) {
+  if (setup.options.integrator != IntegratorKind::Megakernel) return;
+  for (const DeviceEntry& entry : setup.devices)
+    check_megakernel_depth(static_cast<std::uint32_t>(setup.options.max_depth),
+                           tuning_of(entry, setup.options).megakernel_depth);
+}
+
 FloatImage render(const Scene& scene, const RenderSetup& setup, RenderStats& stats) {
+  check_render_setup(setup);
   const RenderOptions& options = setup.options;
-  auto start = Clock::now();
   const GeometryData geometry = build_geometry(scene);
   stats.bvh_seconds = geometry.build_seconds;
   stats.geometry_bytes = geometry.device_bytes();
   stats.bvh_bytes = geometry.nodes.size() * sizeof(dev::BvhNode);
   const FrameData frame = make_frame(scene, options);
 
-  start = Clock::now();
+  auto start = Clock::now();
   const std::string source = renderer_program_source();
   std::vector<DeviceWorker> workers;
   for (const DeviceEntry& entry : setup.devices) {
+    const DeviceTuning tuning = tuning_of(entry, options);
     DeviceWorker w;
     w.context = std::make_unique<DeviceContext>(entry);
-    const compute::program program = w.context->build(source);
-    const std::uint32_t wavefront =
-        options.wavefront ? options.wavefront : default_wavefront(entry.device);
-    w.renderer = std::make_unique<WavefrontRenderer>(*w.context, program, frame, geometry,
-                                                     wavefront, setup.profile);
+    const compute::program program = w.context->build(source, tuning.program_options());
+    w.frame = std::make_unique<DeviceFrame>(*w.context, frame, geometry);
+    IntegratorConfig config;
+    config.capacity = tuning.wavefront;
+    config.local_size = tuning.local_size;
+    config.megakernel_depth = tuning.megakernel_depth;
+    config.profile = setup.profile;
+    w.integrator = make_integrator(options.integrator, *w.context, program, *w.frame, config);
+    w.report = report_of(entry, tuning);
     workers.push_back(std::move(w));
   }
   stats.build_seconds = seconds_since(start);
 
   start = Clock::now();
+  const PixelRect region{0, 0, static_cast<std::uint32_t>(options.width),
+                         static_cast<std::uint32_t>(options.height)};
   FloatImage image;
-  image.width = options.width;
-  image.height = options.height;
-  const auto pixels = static_cast<std::uint32_t>(image.width) * static_cast<std::uint32_t>(image.height);
-  image.rgb.assign(3 * std::size_t{pixels}, 0.0f);
-  PixelDealer dealer(pixels);
-  Progress progress(pixels, setup.progress);
+  image.width = static_cast<int>(region.width);
+  image.height = static_cast<int>(region.height);
+  image.rgb.assign(3 * region.pixel_count(), 0.0f);
+  RowDealer dealer(region);
+  Progress progress(region.pixel_count(), setup.progress);
   std::vector<std::exception_ptr> errors(workers.size());
   const auto work = [&](std::size_t i) {
     try {
-      std::uint32_t first = 0, count = 0;
-      WavefrontRenderer& renderer = *workers[i].renderer;
-      while (dealer.next(renderer.pixels_per_wave(), first, count)) {
-        renderer.render(first, count, image.rgb.data() + 3 * std::size_t{first});
-        progress.advance(count);
+      Integrator& integrator = *workers[i].integrator;
+      PixelRect band;
+      while (dealer.next(integrator.pixels_per_wave(), band)) {
+        const std::uint64_t offset = std::uint64_t{band.y - region.y} * region.width;
+        integrator.render(band, image.rgb.data() + 3 * offset);
+        progress.advance(band.pixel_count());
       }
     } catch (...) {
       errors[i] = std::current_exception();
@@ -103,8 +145,16 @@ FloatImage render(const Scene& scene, const RenderSetup& setup, RenderStats& sta
   progress.finish();
   for (const auto& e : errors)
     if (e) std::rethrow_exception(e);
+  for (DeviceWorker& w : workers) {
+    w.integrator->harvest(stats);
+    stats.devices.push_back(w.report);
+    stats.device_bytes += w.frame->bytes + w.integrator->device_bytes();
+  }
   stats.render_seconds = seconds_since(start);
-  for (const DeviceWorker& w : workers) stats.merge(w.renderer->stats());
+  stats.integrator = integrator_name(options.integrator);
+  stats.width = region.width;
+  stats.height = region.height;
+  stats.samples_per_pixel = static_cast<std::uint64_t>(options.samples);
   return image;
 }
 

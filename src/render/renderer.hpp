@@ -1,5 +1,5 @@
-// A whole render: the geometry built once, a program and a wavefront renderer per device, and
-// the image's pixel ranges shared out among the devices.
+// A whole render: the geometry built once, a program, frame and integrator per device, and the
+// image's rows dealt out among the devices.
 #pragma once
 
 #include <vector>
@@ -19,7 +19,10 @@ struct RenderSetup {
   bool progress = false;             // a progress bar when stderr is a terminal
 };
 
-// Renders `scene`; fills the timing and ray fields of `stats` (not load or write).
+// Throws UsageError when `setup` cannot render `scene` on its devices, before any work.
+void check_render_setup(const RenderSetup& setup);
+
+// Renders `scene`; fills the timing, device and ray fields of `stats` (not load or write).
 FloatImage render(const Scene& scene, const RenderSetup& setup, RenderStats& stats);
 
 }  // namespace clrt

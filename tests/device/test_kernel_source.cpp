@@ -47,9 +47,10 @@ TEST_CASE("an include naming no kernel file is an error naming both files", "[ke
 
 TEST_CASE("the renderer's program holds every stage kernel", "[kernel-source]") {
   const std::string program = renderer_program_source();
-  for (const char* kernel : {"generate", "intersect", "shade", "shadow", "compact_count",
-                             "compact_scan", "compact_scatter", "gather_shadows",
-                             "accumulate_samples", "resolve", "count_kinds"}) {
+  for (const char* kernel :
+       {"generate", "intersect", "shade", "shadow", "compact_count", "compact_scan",
+        "compact_scatter", "gather_shadows", "accumulate_samples", "resolve", "count_ray_kinds",
+        "add_ray_kinds", "add_shadow_rays", "commit_ray_counts", "megakernel"}) {
     INFO(kernel);
     CHECK(std::regex_search(program, std::regex(std::string("__kernel void ") + kernel + "\\(")));
   }

@@ -1,7 +1,7 @@
 #include "bvh_test_device.hpp"
 
 #include "cl_fixture.hpp"
-#include "geometry/device_geometry.hpp"
+#include "geometry/bvh_query_args.hpp"
 
 namespace clrt::bvhtest {
 namespace {
@@ -20,29 +20,27 @@ std::vector<dev::f4> pack(const std::vector<TestRay>& rays) {
   return out;
 }
 
-template <class Result>
-std::vector<Result> run_queries(const char* kernel_name, const GeometryData& geometry,
-                                const std::vector<TestRay>& rays) {
+template <class Args, class Result>
+std::vector<Result> run_queries(const GeometryData& geometry, const std::vector<TestRay>& rays,
+                                Global<Result> Args::*results) {
   const DeviceGeometry device_geometry(test::device(), geometry);
-  compute::kernel kernel(test::test_program(kSource), kernel_name);
-  const unsigned first = device_geometry.bind(kernel, 0);
-  const compute::buffer ray_buffer = test::upload(pack(rays), "rays");
-  const compute::buffer results = test::device().allocate(sizeof(Result) * rays.size(), "results");
-  kernel.set_arg(first + 0, ray_buffer);
-  kernel.set_arg(first + 1, static_cast<cl_uint>(rays.size()));
-  kernel.set_arg(first + 2, results);
-  test::run(kernel, rays.size());
-  return test::download<Result>(results, rays.size());
+  Args args;
+  args.scene = device_geometry.args();
+  args.rays = test::upload(pack(rays), "rays");
+  args.count = static_cast<cl_uint>(rays.size());
+  args.*results = test::allocate<Result>(rays.size(), "results");
+  test::run(test::test_program(kSource), args, rays.size());
+  return test::download(args.*results, rays.size());
 }
 
 }  // namespace
 
 std::vector<dev::Hit> device_closest_hits(const GeometryData& geometry, const std::vector<TestRay>& rays) {
-  return run_queries<dev::Hit>("bvh_closest_hits", geometry, rays);
+  return run_queries(geometry, rays, &BvhClosestHitsArgs::hits);
 }
 
 std::vector<int> device_any_hits(const GeometryData& geometry, const std::vector<TestRay>& rays) {
-  return run_queries<int>("bvh_any_hits", geometry, rays);
+  return run_queries(geometry, rays, &BvhAnyHitsArgs::results);
 }
 
 ObjectId hit_object(const GeometryData& geometry, const dev::Hit& hit) {

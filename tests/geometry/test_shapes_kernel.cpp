@@ -75,29 +75,46 @@ dev::Instance instance_of(const Mat4& m, dev::u32 shape, double r0, double r1) {
   return instance;
 }
 
-std::vector<DeviceHit> run_kernel(const char* name, const std::vector<dev::Instance>& instances,
+struct CastCanonicalArgs {
+  static constexpr const char* kName = "cast_canonical";
+  Global<const dev::Instance> instances;
+  Global<const dev::f4> rays;
+  cl_uint count = 0;
+  Global<dev::f4> results;
+  CLRT_KERNEL_ARGS(instances, rays, count, results)
+};
+
+struct CastTrianglesArgs {
+  static constexpr const char* kName = "cast_triangles";
+  Global<const dev::Instance> instances;
+  Global<const dev::Triangle> tris;
+  cl_uint tri_count = 0, stride = 0;
+  Global<const dev::f4> rays;
+  cl_uint count = 0;
+  Global<dev::f4> results;
+  CLRT_KERNEL_ARGS(instances, tris, tri_count, stride, rays, count, results)
+};
+
+std::vector<DeviceHit> run_kernel(const std::vector<dev::Instance>& instances,
                                   const std::vector<WorldRay>& rays,
-                                  const compute::buffer* triangles, int count, int stride) {
+                                  const Global<dev::Triangle>* triangles, int count, int stride) {
   std::vector<dev::f4> packed;
   for (const WorldRay& ray : rays) {
     packed.push_back(to_f4(ray.origin, ray.tmin));
     packed.push_back(to_f4(ray.dir, ray.tmax));
   }
-  compute::kernel kernel(test_program(kKernels), name);
-  const compute::buffer instance_buffer = upload(instances), ray_buffer = upload(packed);
-  compute::buffer results = device().allocate(2 * rays.size() * sizeof(dev::f4), "results");
-  int arg = 0;
-  kernel.set_arg(arg++, instance_buffer);
+  const Global<dev::f4> results = allocate<dev::f4>(2 * rays.size(), "results");
+  const auto ray_count = static_cast<cl_uint>(rays.size());
   if (triangles) {
-    kernel.set_arg(arg++, *triangles);
-    kernel.set_arg(arg++, static_cast<cl_uint>(count));
-    kernel.set_arg(arg++, static_cast<cl_uint>(stride));
+    run(test_program(kKernels),
+        CastTrianglesArgs{upload(instances), *triangles, static_cast<cl_uint>(count),
+                          static_cast<cl_uint>(stride), upload(packed), ray_count, results},
+        rays.size());
+  } else {
+    run(test_program(kKernels),
+        CastCanonicalArgs{upload(instances), upload(packed), ray_count, results}, rays.size());
   }
-  kernel.set_arg(arg++, ray_buffer);
-  kernel.set_arg(arg++, static_cast<cl_uint>(rays.size()));
-  kernel.set_arg(arg++, results);
-  run(kernel, rays.size());
-  const std::vector<dev::f4> out = download<dev::f4>(results, 2 * rays.size());
+  const std::vector<dev::f4> out = download(results, 2 * rays.size());
   std::vector<DeviceHit> hits(rays.size());
   for (std::size_t i = 0; i < rays.size(); ++i) {
     const dev::f4 a = out[2 * i], b = out[2 * i + 1];
@@ -155,7 +172,7 @@ std::vector<DeviceHit> cast_canonical(const std::vector<PlacedShape>& shapes,
                                       const std::vector<WorldRay>& rays) {
   std::vector<dev::Instance> instances;
   for (const PlacedShape& shape : shapes) instances.push_back(make_instance(shape));
-  return run_kernel("cast_canonical", instances, rays, nullptr, 0, 0);
+  return run_kernel(instances, rays, nullptr, 0, 0);
 }
 
 std::vector<DeviceHit> cast_triangles(const std::vector<Vec3>& triangles, int count, int stride,
@@ -166,8 +183,8 @@ std::vector<DeviceHit> cast_triangles(const std::vector<Vec3>& triangles, int co
   std::vector<dev::Triangle> packed;
   for (std::size_t i = 0; i + 2 < triangles.size(); i += 3)
     packed.push_back({to_f4(triangles[i], 0), to_f4(triangles[i + 1], 0), to_f4(triangles[i + 2], 0)});
-  const compute::buffer buffer = upload(packed);
-  return run_kernel("cast_triangles", instances, rays, &buffer, count, stride);
+  const Global<dev::Triangle> buffer = upload(packed);
+  return run_kernel(instances, rays, &buffer, count, stride);
 }
 
 void check_hit(const DeviceHit& got, double t, const Vec3& normal) {

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "cl_fixture.hpp"
+#include "render/stage_args.hpp"
 #include "shared/ray.h"
 #include "test_vectors.hpp"
 
@@ -65,42 +66,32 @@ Sums random_sums(std::size_t entries, std::size_t owners, std::mt19937& rng) {
 }
 
 // Both kernels take (queue, a value per queue entry, entry count, a sum per owner) and add the
-// values into the sums; returns the sums after the launch. gather_shadows reads its count from a
-// device buffer (where compaction leaves it) and is launched, as in the renderer, over more
-// work-items than that.
-enum class Count { Argument, OnDevice };
-
-template <class Entry>
-std::vector<dev::f4> sum_on_device(const char* kernel_name, const std::vector<Entry>& entries,
-                                   const Sums& s, Count how) {
-  compute::buffer queue = test::upload(entries);
-  compute::buffer values = test::upload(s.values);
-  compute::buffer sums = test::upload(s.start);
-  const auto count = static_cast<std::uint32_t>(entries.size());
-  compute::buffer count_on_device = test::upload(std::vector<std::uint32_t>{count});
-  compute::kernel kernel(test::renderer_program(), kernel_name);
-  kernel.set_arg(0, queue);
-  kernel.set_arg(1, values);
-  if (how == Count::OnDevice) {
-    kernel.set_arg(2, count_on_device);
-  } else {
-    kernel.set_arg(2, count);
-  }
-  kernel.set_arg(3, sums);
-  test::run(kernel, how == Count::OnDevice ? count + 100 : count);
-  return test::download<dev::f4>(sums, s.start.size());
-}
-
+// values into the sums; these return the sums after the launch. gather_shadows reads its count
+// from a device buffer (where compaction leaves it) and is launched, as in the renderer, over
+// more work-items than that.
 std::vector<dev::f4> gather_on_device(const std::vector<std::uint32_t>& owners, const Sums& s) {
   std::vector<dev::ShadowRay> shadows(owners.size());
   for (std::size_t i = 0; i < owners.size(); ++i) shadows[i].owner = owners[i];
-  return sum_on_device("gather_shadows", shadows, s, Count::OnDevice);
+  const auto count = static_cast<cl_uint>(owners.size());
+  GatherShadowsArgs args;
+  args.shadows = test::upload(shadows);
+  args.visible = test::upload(s.values);
+  args.count = test::upload(std::vector<cl_uint>{count});
+  args.colour = test::upload(s.start);
+  test::run(test::renderer_program(), args, count + 100);
+  return test::download(args.colour, s.start.size());
 }
 
 std::vector<dev::f4> accumulate_on_device(const std::vector<std::uint32_t>& samples, const Sums& s) {
   std::vector<dev::Ray> rays(samples.size());
   for (std::size_t i = 0; i < samples.size(); ++i) rays[i].sample = samples[i];
-  return sum_on_device("accumulate_samples", rays, s, Count::Argument);
+  AccumulateSamplesArgs args;
+  args.rays = test::upload(rays);
+  args.colour = test::upload(s.values);
+  args.count = static_cast<cl_uint>(samples.size());
+  args.sample_colour = test::upload(s.start);
+  test::run(test::renderer_program(), args, samples.size());
+  return test::download(args.sample_colour, s.start.size());
 }
 
 // gather_shadows: a ray's colour plus its shadow rays' contributions, one at a time in order.
@@ -194,12 +185,13 @@ TEST_CASE("resolve is the mean of each pixel's samples", "[accumulate]") {
     const std::uint32_t pixels = 70;
     std::vector<dev::f4> sample_colour;
     for (std::uint32_t i = 0; i < pixels * samples; ++i) sample_colour.push_back(random_colour(rng));
-    compute::buffer in = test::upload(sample_colour);
-    compute::buffer out = test::upload(std::vector<dev::f4>(pixels));
-    compute::kernel kernel(test::renderer_program(), "resolve");
-    kernel.set_args(in, samples, pixels, out);
-    test::run(kernel, pixels);
-    const std::vector<dev::f4> result = test::download<dev::f4>(out, pixels);
+    ResolveArgs args;
+    args.sample_colour = test::upload(sample_colour);
+    args.samples = samples;
+    args.pixel_count = pixels;
+    args.pixels = test::allocate<dev::f4>(pixels);
+    test::run(test::renderer_program(), args, pixels);
+    const std::vector<dev::f4> result = test::download(args.pixels, pixels);
     for (std::uint32_t p = 0; p < pixels; ++p) {
       INFO("samples " << samples << ", pixel " << p);
       Vec3 mean;

@@ -7,6 +7,8 @@
 #include <cstdint>
 #include <functional>
 #include <random>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "cl_fixture.hpp"
@@ -59,6 +61,31 @@ Compactor& compactor() {
   return c;
 }
 
+// A record of `Words` uint4 words, as the compaction moves them.
+template <std::size_t Words>
+struct Record {
+  cl_uint4 word[Words];
+};
+
+template <class R>
+std::uint32_t compact_as(const Global<cl_uint>& in, const Global<cl_uint>& flags,
+                         std::size_t slots, const Global<cl_uint>& out, std::size_t capacity) {
+  static Profiler profiler(test::device(), test::renderer_program(), false, test::kLocalSize, 1, 1);
+  compactor().enqueue(profiler, Global<R>(in.buffer), flags, slots, Global<R>(out.buffer),
+                      capacity, 0);
+  return compactor().read_total();
+}
+
+std::uint32_t compact(const Global<cl_uint>& in, const Global<cl_uint>& flags, std::size_t slots,
+                      std::size_t record_bytes, const Global<cl_uint>& out, std::size_t capacity) {
+  switch (record_bytes) {
+    case 16: return compact_as<Record<1>>(in, flags, slots, out, capacity);
+    case 48: return compact_as<Record<3>>(in, flags, slots, out, capacity);
+    case 64: return compact_as<Record<4>>(in, flags, slots, out, capacity);
+  }
+  throw std::logic_error("no record type of " + std::to_string(record_bytes) + " bytes");
+}
+
 // The output's capacity, from the number of records the host keeps.
 using Capacity = std::function<std::size_t(std::size_t kept)>;
 const Capacity kExact = [](std::size_t kept) { return kept; };
@@ -76,13 +103,13 @@ void check_compaction(std::size_t slots, std::size_t record_bytes, Mask mask,
   INFO("kept " << kept << ", capacity " << capacity);
 
   const std::size_t out_words = (capacity + kGuardRecords) * words;
-  compute::buffer in = test::upload(records.empty() ? std::vector<std::uint32_t>(words) : records);
-  compute::buffer flag_buffer = test::upload(flags.empty() ? std::vector<std::uint32_t>(1) : flags);
-  compute::buffer out = test::upload(std::vector<std::uint32_t>(out_words, kGuard));
-  const std::uint32_t count =
-      compactor().compact(in, flag_buffer, slots, record_bytes, out, capacity);
-  test::device().queue().finish();
-  const std::vector<std::uint32_t> result = test::download<std::uint32_t>(out, out_words);
+  const Global<cl_uint> in =
+      test::upload(records.empty() ? std::vector<cl_uint>(words) : records);
+  const Global<cl_uint> flag_buffer =
+      test::upload(flags.empty() ? std::vector<cl_uint>(1) : flags);
+  const Global<cl_uint> out = test::upload(std::vector<cl_uint>(out_words, kGuard));
+  const std::uint32_t count = compact(in, flag_buffer, slots, record_bytes, out, capacity);
+  const std::vector<std::uint32_t> result = test::download(out, out_words);
 
   CHECK(count == kept);
   const std::size_t written = std::min(kept, capacity) * words;

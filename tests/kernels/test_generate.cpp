@@ -12,6 +12,7 @@
 #include "cl_fixture.hpp"
 #include "reference_camera.hpp"
 #include "render/frame_setup.hpp"
+#include "render/stage_args.hpp"
 #include "shared/ray.h"
 #include "test_vectors.hpp"
 
@@ -50,12 +51,12 @@ Vec3 camera_direction(const dev::Camera& cam, double x, double y) {
 
 std::vector<dev::Ray> generate(const dev::Camera& camera, std::uint32_t first_pixel,
                                std::uint32_t sample_count) {
-  compute::kernel kernel(test::renderer_program(), "generate");
-  compute::buffer camera_buffer = test::upload(std::vector<dev::Camera>{camera});
-  compute::buffer rays = test::device().allocate(sizeof(dev::Ray) * sample_count, "rays");
-  kernel.set_args(camera_buffer, first_pixel, sample_count, rays);
-  test::run(kernel, sample_count);
-  return test::download<dev::Ray>(rays, sample_count);
+  GenerateArgs args;
+  args.camera = test::upload(std::vector<dev::Camera>{camera});
+  args.wave = {0, 0, camera.width, first_pixel, sample_count};
+  args.rays = test::allocate<dev::Ray>(sample_count);
+  test::run(test::renderer_program(), args, sample_count);
+  return test::download(args.rays, sample_count);
 }
 
 const Vec3 kEye{0, 0, 5};

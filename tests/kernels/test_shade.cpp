@@ -16,6 +16,7 @@
 
 #include "cl_fixture.hpp"
 #include "render/frame_setup.hpp"
+#include "render/stage_args.hpp"
 #include "shared/ray.h"
 #include "test_vectors.hpp"
 
@@ -179,29 +180,28 @@ ShadeOutput shade(const ShadeInput& in, std::uint32_t first = 0, std::uint32_t c
   out.slots = params.shadow_samples;
   const std::size_t slot_count = std::max<std::size_t>(1, std::size_t{count} * out.slots);
 
-  compute::buffer params_buffer = test::upload(std::vector<dev::RenderParams>{params});
-  compute::buffer materials = test::upload(make_materials(in.scene));
   std::vector<dev::Light> light_table = make_lights(in.scene);
   if (light_table.empty()) light_table.resize(1);  // a buffer must not be empty
-  compute::buffer lights = test::upload(light_table);
-  compute::buffer rays = test::upload(in.rays);
-  compute::buffer hits = test::upload(in.hits);
-  compute::buffer colour = test::upload(std::vector<dev::f4>(n, kStaleColour));
-  compute::buffer shadow_slots = test::upload(std::vector<dev::ShadowRay>(slot_count));
-  compute::buffer shadow_flags = test::upload(std::vector<std::uint32_t>(slot_count, kStaleFlag));
-  compute::buffer spawn_slots = test::upload(std::vector<dev::Ray>(2 * n));
-  compute::buffer spawn_flags = test::upload(std::vector<std::uint32_t>(2 * n, kStaleFlag));
+  ShadeArgs args;
+  args.params = test::upload(std::vector<dev::RenderParams>{params});
+  args.materials = test::upload(make_materials(in.scene));
+  args.lights = test::upload(light_table);
+  args.rays = test::upload(in.rays);
+  args.hits = test::upload(in.hits);
+  args.first = first;
+  args.count = count;
+  args.colour = test::upload(std::vector<dev::f4>(n, kStaleColour));
+  args.shadow_slots = test::upload(std::vector<dev::ShadowRay>(slot_count));
+  args.shadow_flags = test::upload(std::vector<cl_uint>(slot_count, kStaleFlag));
+  args.spawn_slots = test::upload(std::vector<dev::Ray>(2 * n));
+  args.spawn_flags = test::upload(std::vector<cl_uint>(2 * n, kStaleFlag));
+  test::run(test::renderer_program(), args, count);
 
-  compute::kernel kernel(test::renderer_program(), "shade");
-  kernel.set_args(params_buffer, materials, lights, rays, hits, first, count, colour, shadow_slots,
-                  shadow_flags, spawn_slots, spawn_flags);
-  test::run(kernel, count);
-
-  out.colour = test::download<dev::f4>(colour, n);
-  out.shadows = test::download<dev::ShadowRay>(shadow_slots, slot_count);
-  out.shadow_flags = test::download<std::uint32_t>(shadow_flags, slot_count);
-  out.spawns = test::download<dev::Ray>(spawn_slots, 2 * n);
-  out.spawn_flags = test::download<std::uint32_t>(spawn_flags, 2 * n);
+  out.colour = test::download(args.colour, n);
+  out.shadows = test::download(args.shadow_slots, slot_count);
+  out.shadow_flags = test::download(args.shadow_flags, slot_count);
+  out.spawns = test::download(args.spawn_slots, 2 * n);
+  out.spawn_flags = test::download(args.spawn_flags, 2 * n);
   return out;
 }
 

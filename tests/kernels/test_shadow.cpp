@@ -12,6 +12,7 @@
 #include "geometry/device_geometry.hpp"
 #include "geometry/geometry_data.hpp"
 #include "render/frame_setup.hpp"
+#include "render/stage_args.hpp"
 #include "shared/ray.h"
 #include "test_vectors.hpp"
 
@@ -64,24 +65,18 @@ const std::vector<Probe> kProbes = {
 
 std::vector<dev::f4> run_shadow(const Scene& scene, const std::vector<dev::ShadowRay>& shadows) {
   const GeometryData geometry = build_geometry(scene);
-  DeviceGeometry device_geometry(test::device(), geometry);
-  const dev::RenderParams params = make_params(scene, RenderOptions{});
-  compute::kernel kernel(test::renderer_program(), "shadow");
-  const unsigned first = device_geometry.bind(kernel, 0);
-  compute::buffer params_buffer = test::upload(std::vector<dev::RenderParams>{params});
-  compute::buffer queue = test::upload(shadows);
-  const auto count = static_cast<dev::u32>(shadows.size());
-  compute::buffer visible =
-      test::upload(std::vector<dev::f4>(shadows.size(), dev::f4{-1, -1, -1, -1}));
-  compute::buffer count_on_device = test::upload(std::vector<dev::u32>{count});
-  kernel.set_arg(first + 0, params_buffer);
-  kernel.set_arg(first + 1, queue);
-  kernel.set_arg(first + 2, count_on_device);
-  kernel.set_arg(first + 3, visible);
+  const DeviceGeometry device_geometry(test::device(), geometry);
+  const auto count = static_cast<cl_uint>(shadows.size());
+  ShadowArgs args;
+  args.scene = device_geometry.args();
+  args.params = test::upload(std::vector<dev::RenderParams>{make_params(scene, RenderOptions{})});
+  args.shadows = test::upload(shadows);
+  args.count = test::upload(std::vector<cl_uint>{count});
+  args.visible = test::upload(std::vector<dev::f4>(shadows.size(), dev::f4{-1, -1, -1, -1}));
   // Launched over more work-items than the queue holds, as the renderer does: the count on the
   // device bounds the work.
-  test::run(kernel, count + 100);
-  return test::download<dev::f4>(visible, count);
+  test::run(test::renderer_program(), args, count + 100);
+  return test::download(args.visible, count);
 }
 
 }  // namespace

@@ -2,7 +2,7 @@
 // and a refused allocation.
 #include <catch2/catch.hpp>
 
-#include <regex>
+#include <nlohmann/json.hpp>
 #include <string>
 
 #include "render_support.hpp"
@@ -12,42 +12,55 @@ using namespace clrt::test;
 
 namespace {
 
-// The number after "key": in --stats=json output.
-double json_number(const std::string& json, const std::string& key) {
-  std::smatch m;
-  const std::regex pattern("\"" + key + "\": ([0-9.eE+-]+)");
-  REQUIRE(std::regex_search(json, m, pattern));
-  return std::stod(m[1]);
-}
-
 std::string render_args(const std::string& scene, ScratchDir& dir) {
   return quoted(test_scene(scene)) + " --resolution 40x30 -o " + dir.file("out.png");
+}
+
+nlohmann::json json_stats(const std::string& extra) {
+  ScratchDir dir;
+  const CommandResult r = run_clrt(render_args("reflect.ray", dir) + " --spp 4 -q --stats=json" + extra);
+  REQUIRE(r.exit_code == 0);
+  return nlohmann::json::parse(r.output);
 }
 
 }  // namespace
 
 TEST_CASE("the JSON statistics count rays by kind, passes and kernels", "[cli][stats]") {
-  ScratchDir dir;
-  const CommandResult r = run_clrt(render_args("reflect.ray", dir) + " --spp 4 -q --stats=json");
-  REQUIRE(r.exit_code == 0);
-  CHECK(json_number(r.output, "camera") == 40 * 30 * 4);
-  const double shadow = json_number(r.output, "shadow");
-  const double reflection = json_number(r.output, "reflection");
+  const nlohmann::json stats = json_stats("");
+  const nlohmann::json& rays = stats["rays"];
+  CHECK(rays["camera"] == 40 * 30 * 4);
+  const std::uint64_t shadow = rays["shadow"], reflection = rays["reflection"];
   CHECK(shadow > 0);
   CHECK(reflection > 0);  // reflect.ray's spheres and floor are all reflective
-  CHECK(json_number(r.output, "refraction") == 0);
-  CHECK(json_number(r.output, "total") == 40 * 30 * 4 + shadow + reflection);
-  CHECK(json_number(r.output, "mrays_per_second") > 0);
+  CHECK(rays["refraction"] == 0);
+  CHECK(rays["total"] == 40 * 30 * 4 + shadow + reflection);
+  CHECK(stats["mrays_per_second"].get<double>() > 0);
+  CHECK(stats["integrator"] == "wavefront");
+  REQUIRE(stats["devices"].size() == 1);
+  CHECK(stats["devices"][0]["opencl_c"].get<std::string>().find("OpenCL C") == 0);
   for (const char* kernel : {"generate", "intersect", "shade", "shadow", "compact_scatter",
                              "gather_shadows", "accumulate_samples", "resolve"}) {
     INFO(kernel);
-    CHECK(r.output.find(std::string("\"") + kernel + "\": {\"launches\": ") != std::string::npos);
+    CHECK(stats["kernels"][kernel]["launches"].get<int>() > 0);
   }
-  // Pass 0 holds exactly the camera rays; reflect.ray's maxdepth 5 gives at most 6 passes.
-  std::smatch pass0;
-  REQUIRE(std::regex_search(r.output, pass0, std::regex("\"passes\": \\[\\{\"rays\": ([0-9]+)")));
-  CHECK(std::stod(pass0[1]) == 40 * 30 * 4);
-  CHECK(r.output.find("}, {\"rays\"") != std::string::npos);
+  // Pass 0 holds exactly the camera rays; reflect.ray's maxdepth 5 gives at most 6 passes, and
+  // the shadow rays of the passes add up to the total.
+  const nlohmann::json& passes = stats["passes"];
+  REQUIRE(passes.size() > 1);
+  CHECK(passes.size() <= 6);
+  CHECK(passes[0]["rays"] == 40 * 30 * 4);
+  std::uint64_t pass_shadows = 0;
+  for (const auto& p : passes) pass_shadows += p["shadow_rays"].get<std::uint64_t>();
+  CHECK(pass_shadows == shadow);
+}
+
+TEST_CASE("the megakernel reports the wavefront's rays by kind", "[cli][stats]") {
+  const nlohmann::json wavefront = json_stats("");
+  const nlohmann::json megakernel = json_stats(" --integrator megakernel");
+  CHECK(megakernel["integrator"] == "megakernel");
+  CHECK(megakernel["rays"] == wavefront["rays"]);
+  CHECK(megakernel["kernels"]["megakernel"]["launches"].get<int>() > 0);
+  CHECK(megakernel["passes"].empty());
 }
 
 TEST_CASE("the text statistics are a table, and quiet alone prints nothing", "[cli][stats]") {

@@ -2,10 +2,11 @@
 
 #include <map>
 #include <memory>
+#include <stdexcept>
 
 #include "device/device_select.hpp"
+#include "device/device_tuning.hpp"
 #include "device/kernel_source.hpp"
-#include "device/launch.hpp"
 
 namespace clrt::test {
 
@@ -23,13 +24,15 @@ compute::program& test_program(const std::string& text) {
 }
 
 compute::program& renderer_program() {
-  static compute::program program = device().build(renderer_program_source());
+  static compute::program program =
+      device().build(renderer_program_source(), tuning_for(DeviceClass::Cpu).program_options());
   return program;
 }
 
-void run(compute::kernel& kernel, std::size_t count) {
-  launch(device().queue(), kernel, count);
-  device().queue().finish();
+void check_binding(const compute::kernel& kernel, const std::vector<ExpectedArg>& expected) {
+  std::string problems;
+  for (const std::string& line : signature_mismatches(kernel, expected)) problems += line + "\n";
+  if (!problems.empty()) throw std::logic_error("kernel binding mismatch:\n" + problems);
 }
 
 }  // namespace clrt::test

@@ -3,9 +3,12 @@
 #pragma once
 
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "device/device_context.hpp"
+#include "device/typed_kernel.hpp"
+#include "device/upload.hpp"
 
 namespace clrt::test {
 
@@ -20,21 +23,37 @@ compute::program& test_program(const std::string& text);
 compute::program& renderer_program();
 
 template <class T>
-compute::buffer upload(const std::vector<T>& data, const std::string& what = "test input") {
-  compute::buffer buffer = device().allocate(sizeof(T) * data.size(), what);
-  if (!data.empty())
-    device().queue().enqueue_write_buffer(buffer, 0, sizeof(T) * data.size(), data.data());
-  return buffer;
+Global<T> upload(const std::vector<T>& data, const std::string& what = "test input") {
+  return clrt::upload(device(), data, what);
 }
 
 template <class T>
-std::vector<T> download(const compute::buffer& buffer, std::size_t count) {
-  std::vector<T> data(count);
-  if (count) device().queue().enqueue_read_buffer(buffer, 0, sizeof(T) * count, data.data());
+Global<T> allocate(std::size_t count, const std::string& what = "test output") {
+  return clrt::allocate<T>(device(), count, what);
+}
+
+template <class T>
+std::vector<std::remove_const_t<T>> download(const Global<T>& buffer, std::size_t count) {
+  std::vector<std::remove_const_t<T>> data(count);
+  if (count)
+    device().queue().enqueue_read_buffer(buffer.buffer, 0, sizeof(T) * count, data.data());
   return data;
 }
 
-// Runs `kernel` over `count` work-items (padded to the renderer's local size) and waits.
-void run(compute::kernel& kernel, std::size_t count);
+// The local size kernel tests launch with (the CPU class's).
+constexpr std::size_t kLocalSize = 64;
+
+// Throws std::logic_error naming every mismatch when `kernel`'s signature and `Args` disagree.
+void check_binding(const compute::kernel& kernel, const std::vector<ExpectedArg>& expected);
+
+// Launches kernel Args::kName of `program` with `args` over `count` work-items and waits. The
+// binding is checked against the kernel's signature first.
+template <class Args>
+void run(const compute::program& program, const Args& args, std::size_t count) {
+  TypedKernel<Args> kernel(program);
+  check_binding(kernel.kernel(), expected_args(args));
+  kernel.launch(device().queue(), args, count, kLocalSize);
+  device().queue().finish();
+}
 
 }  // namespace clrt::test

@@ -8,7 +8,8 @@
 #include <sys/resource.h>
 
 #include "device/kernel_source.hpp"
-#include "device/launch.hpp"
+#include "device/device_tuning.hpp"
+#include "device/upload.hpp"
 #include "geometry/bvh_builder.hpp"
 #include "shared/ray.h"
 
@@ -82,33 +83,35 @@ RaySet random_rays(const Box& bounds, int count) {
 }
 
 Tracer::Tracer(DeviceContext& device, const GeometryData& geometry)
-    : device_(device), geometry_(device, geometry) {
-  const compute::program program = device.build(assemble_kernel_source(kSource, "bench_bvh.cl"));
-  closest_ = compute::kernel(program, "bvh_closest_hits");
-  any_ = compute::kernel(program, "bvh_any_hits");
-  first_arg_ = geometry_.bind(closest_, 0);
-  geometry_.bind(any_, 0);
-}
+    : device_(device),
+      geometry_(device, geometry),
+      program_(device.build(assemble_kernel_source(kSource, "bench_bvh.cl"))),
+      closest_(program_),
+      any_(program_),
+      local_size_(tuning_for(classify(device.device())).local_size) {}
 
 Throughput Tracer::closest_hit_mrays(const RaySet& rays, int runs) {
-  return measure(closest_, rays, sizeof(dev::Hit), runs);
+  return measure(closest_, &BvhClosestHitsArgs::hits, rays, runs);
 }
 
-Throughput Tracer::any_hit_mrays(const RaySet& rays, int runs) { return measure(any_, rays, sizeof(int), runs); }
+Throughput Tracer::any_hit_mrays(const RaySet& rays, int runs) {
+  return measure(any_, &BvhAnyHitsArgs::results, rays, runs);
+}
 
-Throughput Tracer::measure(compute::kernel& kernel, const RaySet& rays, std::size_t result_bytes, int runs) {
+template <class Args, class Result>
+Throughput Tracer::measure(TypedKernel<Args>& kernel, Global<Result> Args::*results,
+                           const RaySet& rays, int runs) {
   const std::size_t count = rays.size() / 2;
-  compute::buffer ray_buffer = device_.allocate(sizeof(dev::f4) * rays.size(), "rays");
-  device_.queue().enqueue_write_buffer(ray_buffer, 0, sizeof(dev::f4) * rays.size(), rays.data());
-  compute::buffer results = device_.allocate(result_bytes * count, "results");
-  kernel.set_arg(first_arg_ + 0, ray_buffer);
-  kernel.set_arg(first_arg_ + 1, static_cast<cl_uint>(count));
-  kernel.set_arg(first_arg_ + 2, results);
+  Args args;
+  args.scene = geometry_.args();
+  args.rays = upload(device_, rays, "rays");
+  args.count = static_cast<cl_uint>(count);
+  args.*results = allocate<Result>(device_, count, "results");
   Throughput best;
   for (int run = 0; run <= runs; ++run) {
     const auto start = std::chrono::steady_clock::now();
     const double cpu_start = cpu_seconds();
-    launch(device_.queue(), kernel, count);
+    kernel.launch(device_.queue(), args, count, local_size_);
     device_.queue().finish();
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     const double cpu = cpu_seconds() - cpu_start;

@@ -5,7 +5,8 @@
 
 #include "device/device_context.hpp"
 #include "geometry/bvh_box.hpp"
-#include "geometry/device_geometry.hpp"
+#include "device/typed_kernel.hpp"
+#include "geometry/bvh_query_args.hpp"
 #include "geometry/geometry_data.hpp"
 
 namespace clrt::benchbvh {
@@ -40,12 +41,16 @@ class Tracer {
   Throughput any_hit_mrays(const RaySet& rays, int runs);
 
  private:
-  Throughput measure(compute::kernel& kernel, const RaySet& rays, std::size_t result_bytes, int runs);
+  template <class Args, class Result>
+  Throughput measure(TypedKernel<Args>& kernel, Global<Result> Args::*results, const RaySet& rays,
+                     int runs);
 
   DeviceContext& device_;
   DeviceGeometry geometry_;
-  unsigned first_arg_ = 0;  // the kernels' own arguments follow the SCENE_PARAMS
-  compute::kernel closest_, any_;
+  compute::program program_;
+  TypedKernel<BvhClosestHitsArgs> closest_;
+  TypedKernel<BvhAnyHitsArgs> any_;
+  std::size_t local_size_;
 };
 
 }  // namespace clrt::benchbvh

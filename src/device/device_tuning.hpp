@@ -1,0 +1,29 @@
+// What the renderer launches with on each class of device. Everything here is either a launch
+// parameter or one fixed program-option string per class, so that a device's program text and
+// options never depend on the scene and the kernel cache stays warm across scenes.
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include "device/opencl.hpp"
+
+namespace clrt {
+
+enum class DeviceClass { Cpu, Gpu, Other };
+
+struct DeviceTuning {
+  DeviceClass device_class = DeviceClass::Cpu;
+  std::size_t local_size = 64;           // work-items per work-group, every kernel
+  std::uint32_t wavefront = 1u << 14;    // rays per queue when the user names none
+  std::uint32_t megakernel_depth = 32;   // deepest ray tree the megakernel's private stack holds
+
+  // The options that make the program of this class (see kernels/megakernel.cl).
+  std::string program_options() const;
+};
+
+DeviceClass classify(const compute::device& device);
+DeviceTuning tuning_for(DeviceClass device_class);
+const char* class_name(DeviceClass device_class);
+
+}  // namespace clrt

@@ -1,0 +1,18 @@
+#include "render/device_frame.hpp"
+
+#include "device/upload.hpp"
+
+namespace clrt {
+
+DeviceFrame::DeviceFrame(DeviceContext& device, const FrameData& frame, const GeometryData& tables)
+    : host(frame),
+      geometry(device, tables),
+      camera(upload(device, std::vector<dev::Camera>{frame.camera}, "camera")),
+      params(upload(device, std::vector<dev::RenderParams>{frame.params}, "render parameters")),
+      materials(upload(device, frame.materials, "material table")),
+      lights(upload(device, frame.lights, "light table")),
+      bytes(tables.device_bytes() + sizeof(dev::Camera) + sizeof(dev::RenderParams) +
+            sizeof(dev::Material) * frame.materials.size() +
+            sizeof(dev::Light) * frame.lights.size()) {}
+
+}  // namespace clrt

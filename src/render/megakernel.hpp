@@ -1,0 +1,31 @@
+// The megakernel integrator on one device: one launch per wave, each work-item a camera sample
+// walking its whole ray tree (kernels/megakernel.cl), then the wavefront's own resolve. It keeps
+// no queues, so its memory is a colour and a count per camera sample of a wave.
+#pragma once
+
+#include "render/integrator.hpp"
+#include "render/wave_resolver.hpp"
+
+namespace clrt {
+
+class MegakernelIntegrator final : public Integrator {
+ public:
+  MegakernelIntegrator(DeviceContext& device, const compute::program& program,
+                       const DeviceFrame& frame, const IntegratorConfig& config);
+
+  void render(const PixelRect& rect, float* rgb) override;
+  std::uint32_t pixels_per_wave() const override { return wave_pixels_; }
+  void harvest(RenderStats& stats) override;
+  std::uint64_t device_bytes() const override;
+
+ private:
+  const DeviceFrame& frame_;
+  std::uint32_t samples_per_pixel_, wave_pixels_;
+  WaveResolver resolver_;
+  Global<cl_uint> ray_counts_;  // CLRT_RAY_KINDS per camera sample of a wave
+  Profiler profiler_;
+  TypedKernel<MegakernelArgs> megakernel_;
+  std::uint64_t waves_ = 0;
+};
+
+}  // namespace clrt

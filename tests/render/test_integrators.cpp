@@ -1,0 +1,91 @@
+// The megakernel and the wavefront give the same bits on every scene in the repository's
+// scenes/ (kernels/accumulate.cl writes down the order both follow), with several samples, in
+// cast mode, and with a wavefront small enough that waves are split. The megakernel refuses a
+// ray tree deeper than its stack before any work.
+#include <catch2/catch.hpp>
+
+#include <cstring>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "device/device_select.hpp"
+#include "render/renderer.hpp"
+#include "render/usage_error.hpp"
+#include "render_support.hpp"
+
+using namespace clrt;
+using namespace clrt::test;
+
+namespace {
+
+std::vector<std::string> repository_scenes() {
+  std::vector<std::string> out;
+  for (const auto& entry :
+       std::filesystem::recursive_directory_iterator(std::string(CLRT_SOURCE_DIR) + "/scenes"))
+    if (entry.path().extension() == ".ray") out.push_back(entry.path().string());
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+bool same_bits(const FloatImage& a, const FloatImage& b) {
+  return a.width == b.width && a.height == b.height && a.rgb.size() == b.rgb.size() &&
+         std::memcmp(a.rgb.data(), b.rgb.data(), sizeof(float) * a.rgb.size()) == 0;
+}
+
+struct Variant {
+  const char* what;
+  std::function<void(RenderOptions&)> adjust;
+};
+
+const std::vector<Variant> kVariants = {
+    {"the scene's settings", [](RenderOptions&) {}},
+    {"3 samples per pixel, seed 5",
+     [](RenderOptions& o) {
+       o.samples = 3;
+       o.seed = 5;
+     }},
+    {"cast mode", [](RenderOptions& o) { o.mode = RenderMode::Cast; }},
+    {"a 1024-ray wavefront", [](RenderOptions& o) { o.wavefront = 1024; }},
+};
+
+}  // namespace
+
+TEST_CASE("the megakernel gives the wavefront's bits on every repository scene",
+          "[integrators]") {
+  const std::vector<std::string> scenes = repository_scenes();
+  REQUIRE(scenes.size() >= 17);
+  for (const std::string& path : scenes) {
+    for (const Variant& v : kVariants) {
+      INFO(path << ", " << v.what);
+      const auto with = [&](IntegratorKind kind) {
+        return [&, kind](RenderOptions& o) {
+          o.width = 48;
+          o.height = 32;
+          v.adjust(o);
+          o.integrator = kind;
+        };
+      };
+      const FloatImage wavefront = render_file(path, with(IntegratorKind::Wavefront));
+      const FloatImage megakernel = render_file(path, with(IntegratorKind::Megakernel));
+      CHECK(same_bits(wavefront, megakernel));
+    }
+  }
+}
+
+TEST_CASE("the megakernel refuses a maximum depth its stack cannot hold", "[integrators]") {
+  const Scene scene = load_scene(test_scene("reflect.ray"));
+  RenderSetup setup;
+  setup.options = RenderOptions::from_scene(scene);
+  setup.options.integrator = IntegratorKind::Megakernel;
+  setup.options.max_depth = 33;  // the CPU class's stack holds 32
+  setup.devices = select_devices("cpu");
+  CHECK_THROWS_AS(check_render_setup(setup), UsageError);
+  RenderStats stats;
+  CHECK_THROWS_WITH(render(scene, setup, stats), Catch::Contains("--integrator wavefront"));
+  setup.options.max_depth = 32;
+  CHECK_NOTHROW(check_render_setup(setup));
+  setup.options.integrator = IntegratorKind::Wavefront;
+  setup.options.max_depth = 1000;
+  CHECK_NOTHROW(check_render_setup(setup));
+}
