@@ -1,6 +1,6 @@
 #include "geometry/device_geometry.hpp"
 
-#include "device/upload.hpp"
+#include "device/transfer.hpp"
 
 namespace clrt {
 

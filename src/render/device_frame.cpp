@@ -1,6 +1,6 @@
 #include "render/device_frame.hpp"
 
-#include "device/upload.hpp"
+#include "device/transfer.hpp"
 
 namespace clrt {
 

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "device/upload.hpp"
+#include "device/transfer.hpp"
 #include "render/usage_error.hpp"
 
 namespace clrt {

@@ -1,6 +1,6 @@
 #include "render/profiler.hpp"
 
-#include "device/upload.hpp"
+#include "device/transfer.hpp"
 
 namespace clrt {
 namespace {

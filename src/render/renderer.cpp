@@ -8,11 +8,11 @@
 #include <thread>
 
 #include "device/device_tuning.hpp"
-#include "device/kernel_source.hpp"
 #include "geometry/geometry_data.hpp"
 #include "render/frame_setup.hpp"
 #include "render/integrator.hpp"
 #include "render/progress.hpp"
+#include "render/renderer_program.hpp"
 
 namespace clrt {
 namespace {
@@ -93,13 +93,12 @@ FloatImage render(const Scene& scene, const RenderSetup& setup, RenderStats& sta
   const FrameData frame = make_frame(scene, options);
 
   auto start = Clock::now();
-  const std::string source = renderer_program_source();
   std::vector<DeviceWorker> workers;
   for (const DeviceEntry& entry : setup.devices) {
     const DeviceTuning tuning = tuning_of(entry, options);
     DeviceWorker w;
     w.context = std::make_unique<DeviceContext>(entry);
-    const compute::program program = w.context->build(source, tuning.program_options());
+    const compute::program program = build_renderer_program(*w.context);
     w.frame = std::make_unique<DeviceFrame>(*w.context, frame, geometry);
     IntegratorConfig config;
     config.capacity = tuning.wavefront;

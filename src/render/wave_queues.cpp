@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "device/upload.hpp"
+#include "device/transfer.hpp"
 
 namespace clrt {
 

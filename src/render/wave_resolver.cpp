@@ -1,6 +1,6 @@
 #include "render/wave_resolver.hpp"
 
-#include "device/upload.hpp"
+#include "device/transfer.hpp"
 
 namespace clrt {
 

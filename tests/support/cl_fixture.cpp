@@ -5,8 +5,8 @@
 #include <stdexcept>
 
 #include "device/device_select.hpp"
-#include "device/device_tuning.hpp"
 #include "device/kernel_source.hpp"
+#include "render/renderer_program.hpp"
 
 namespace clrt::test {
 
@@ -24,8 +24,7 @@ compute::program& test_program(const std::string& text) {
 }
 
 compute::program& renderer_program() {
-  static compute::program program =
-      device().build(renderer_program_source(), tuning_for(DeviceClass::Cpu).program_options());
+  static compute::program program = build_renderer_program(device());
   return program;
 }
 

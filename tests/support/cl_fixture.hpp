@@ -8,7 +8,7 @@
 
 #include "device/device_context.hpp"
 #include "device/typed_kernel.hpp"
-#include "device/upload.hpp"
+#include "device/transfer.hpp"
 
 namespace clrt::test {
 
@@ -34,10 +34,7 @@ Global<T> allocate(std::size_t count, const std::string& what = "test output") {
 
 template <class T>
 std::vector<std::remove_const_t<T>> download(const Global<T>& buffer, std::size_t count) {
-  std::vector<std::remove_const_t<T>> data(count);
-  if (count)
-    device().queue().enqueue_read_buffer(buffer.buffer, 0, sizeof(T) * count, data.data());
-  return data;
+  return clrt::download(device(), buffer, count);
 }
 
 // The local size kernel tests launch with (the CPU class's).

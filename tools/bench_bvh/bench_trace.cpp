@@ -9,7 +9,7 @@
 
 #include "device/kernel_source.hpp"
 #include "device/device_tuning.hpp"
-#include "device/upload.hpp"
+#include "device/transfer.hpp"
 #include "geometry/bvh_builder.hpp"
 #include "shared/ray.h"
 

@@ -5,17 +5,20 @@
 #include <vector>
 
 #include "device/device_context.hpp"
+#include "device/typed_kernel.hpp"
 #include "geometry/device_geometry.hpp"
+#include "render/stage_args.hpp"
 #include "host_rays.hpp"
 
 namespace clrt::compare {
 
-// A ray set on the device with room for the kernel's answers.
+// A ray set on the device with room for the kernel's answers: the arguments of intersect (a
+// closest-hit batch) or of shadow (an occlusion batch).
 struct ClrtBatch {
-  compute::kernel* kernel;
-  compute::buffer rays, results;
-  std::size_t count;
-  compute::buffer count_on_device;  // the shadow kernel reads its count from the device
+  bool occlusion = false;
+  IntersectArgs closest;
+  ShadowArgs shadow;
+  std::size_t count = 0;
 };
 
 class ClrtTracer {
@@ -37,9 +40,10 @@ class ClrtTracer {
  private:
   DeviceContext& device_;
   DeviceGeometry geometry_;
-  unsigned first_arg_ = 0;  // the kernels' own arguments follow the SCENE_PARAMS
-  compute::buffer params_;
-  compute::kernel intersect_, shadow_;
+  Global<const dev::RenderParams> params_;
+  TypedKernel<IntersectArgs> intersect_;
+  TypedKernel<ShadowArgs> shadow_;
+  std::size_t local_size_;
 };
 
 }  // namespace clrt::compare

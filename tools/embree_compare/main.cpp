@@ -9,7 +9,7 @@
 #include "compare_scene.hpp"
 #include "device/device_context.hpp"
 #include "device/device_select.hpp"
-#include "device/kernel_source.hpp"
+#include "render/renderer_program.hpp"
 #include "report.hpp"
 
 int main(int argc, char** argv) {
@@ -42,7 +42,7 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "clrt on %s; Embree %s, %d threads, build quality %s, scene flags %s\n",
                  device.name().c_str(), RTC_VERSION_STRING, options.threads, quality.c_str(),
                  robust ? "robust" : "none");
-    const clrt::compute::program program = device.build(clrt::renderer_program_source());
+    const clrt::compute::program program = clrt::build_renderer_program(device);
     std::vector<clrt::compare::SceneResult> results;
     for (const std::string& scene : scenes)
       results.push_back(clrt::compare::compare_scene(scene, device, program, options));

@@ -7,10 +7,10 @@
 #include "agreement.hpp"
 #include "clrt_tracer.hpp"
 #include "device/device_select.hpp"
-#include "device/kernel_source.hpp"
 #include "embree_scene.hpp"
 #include "geometry/geometry_data.hpp"
 #include "host_rays.hpp"
+#include "render/renderer_program.hpp"
 
 namespace {
 
@@ -104,7 +104,7 @@ TEST_CASE("Embree's scene answers the hand-computed hits") {
 
 TEST_CASE("clrt's kernels answer the hand-computed hits") {
   clrt::DeviceContext device(clrt::select_devices("cpu").front());
-  const auto program = device.build(clrt::renderer_program_source());
+  const auto program = clrt::build_renderer_program(device);
   const clrt::Scene scene = hand_scene();
   clrt::compare::ClrtTracer clrt(device, program, clrt::build_geometry(scene));
 

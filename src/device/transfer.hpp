@@ -1,7 +1,8 @@
-// Typed device buffers filled from host tables.
+// Typed device buffers to and from host tables.
 #pragma once
 
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "device/device_context.hpp"
@@ -22,6 +23,16 @@ Global<T> upload(DeviceContext& device, const std::vector<T>& table, const std::
 template <class T>
 Global<T> allocate(DeviceContext& device, std::size_t count, const std::string& what) {
   return Global<T>(device.allocate(sizeof(T) * count, what));
+}
+
+// The first `count` elements of `buffer`, after everything queued before (a blocking read).
+template <class T>
+std::vector<std::remove_const_t<T>> download(DeviceContext& device, const Global<T>& buffer,
+                                             std::size_t count) {
+  std::vector<std::remove_const_t<T>> data(count);
+  if (count)
+    device.queue().enqueue_read_buffer(buffer.buffer, 0, sizeof(T) * count, data.data());
+  return data;
 }
 
 }  // namespace clrt
