@@ -2,9 +2,11 @@
 
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <filesystem>
 #include <iostream>
 #include <regex>
+#include <tuple>
 
 #include "render/integrator.hpp"
 #include "version.hpp"
@@ -67,6 +69,18 @@ ParseResult parse_command_line(int argc, char** argv) {
          "wavefront (default: one kernel per stage, queues compacted every pass) or megakernel "
          "(one kernel walks each sample's whole ray tree; same image, for comparison)")
       ->check(CLI::IsMember({"wavefront", "megakernel"}, CLI::ignore_case));
+  for (const auto& [name, whole, field, help] :
+       {std::tuple{"--pixel-bounds", true, &o.region.pixel_bounds,
+                   "render only pixels x0,x1,y0,y1 (half-open; four words also do)"},
+        std::tuple{"--crop-window", false, &o.region.crop_window,
+                   "render only the fractions x0,x1,y0,y1 of the image (four words also do)"}})
+    app.add_option_function<std::string>(
+        name,
+        [name = std::string(name), whole = whole, field = field](const std::string& text) {
+          const std::string error = parse_region_numbers(text, whole, *field);
+          if (!error.empty()) throw CLI::ValidationError(name + " " + error);
+        },
+        help);
   app.add_option("--local-size", o.local_size,
                  "work-items per work-group for every kernel (default: per device class)")
       ->check(CLI::Range(1, 1024));
@@ -77,7 +91,10 @@ ParseResult parse_command_line(int argc, char** argv) {
   app.add_flag("-q,--quiet", o.quiet, "print nothing but errors (no device line, no progress)");
 
   try {
-    app.parse(argc, argv);
+    std::vector<std::string> args(argv + 1, argv + argc);
+    args = join_region_words(std::move(args));
+    std::reverse(args.begin(), args.end());  // CLI11 takes them last first
+    app.parse(args);
     if (app.count("--stats")) o.stats = stats == "json" ? StatsFormat::Json : StatsFormat::Text;
     if (o.scene.empty() && !o.list_devices) throw CLI::RequiredError("scene");
   } catch (const CLI::ParseError& e) {
@@ -98,6 +115,7 @@ RenderOptions resolve_render_options(const CliOptions& cli, const Scene& scene) 
   r.wavefront = cli.wavefront;
   r.local_size = cli.local_size;
   r.integrator = cli.integrator;
+  r.region = resolve_region(cli.region, r.width, r.height);
   return r;
 }
 

@@ -4,6 +4,7 @@
 #include <optional>
 #include <string>
 
+#include "cli/region_options.hpp"
 #include "render/render_options.hpp"
 
 namespace clrt {
@@ -19,6 +20,7 @@ struct CliOptions {
   std::uint32_t wavefront = 0;  // 0: per device class, see device_tuning.cpp
   std::size_t local_size = 0;   // 0: per device class
   IntegratorKind integrator = IntegratorKind::Wavefront;
+  RegionRequest region;
   std::string device = "cpu";
   bool list_devices = false;
   StatsFormat stats = StatsFormat::None;
@@ -34,7 +36,8 @@ struct ParseResult {
 
 ParseResult parse_command_line(int argc, char** argv);
 
-// The scene's settings overridden by whatever the command line gave.
+// The scene's settings overridden by whatever the command line gave. Throws UsageError for a
+// region that does not fit the image.
 RenderOptions resolve_render_options(const CliOptions& cli, const Scene& scene);
 
 // The output path: --outfile, or SCENE's stem + ".png".

@@ -4,6 +4,9 @@
 #include <cstddef>
 #include <cstdint>
 
+#include <optional>
+
+#include "render/pixel_rect.hpp"
 #include "scene/scene.hpp"
 
 namespace clrt {
@@ -25,6 +28,9 @@ struct RenderOptions {
   IntegratorKind integrator = IntegratorKind::Wavefront;
   // Work-items per work-group; 0 picks the device class's (src/device/device_tuning.cpp).
   std::size_t local_size = 0;
+  // The pixels to render (pbrt's pixel bounds); the whole image when empty. Every pixel of a
+  // region has the bits of the same pixel of the full render.
+  std::optional<PixelRect> region;
 
   // The scene's own settings, for fields the command line leaves alone.
   static RenderOptions from_scene(const Scene& scene);

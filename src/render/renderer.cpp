@@ -13,6 +13,7 @@
 #include "render/integrator.hpp"
 #include "render/progress.hpp"
 #include "render/renderer_program.hpp"
+#include "render/usage_error.hpp"
 
 namespace clrt {
 namespace {
@@ -76,7 +77,19 @@ class RowDealer {
 
 }  // namespace
 
+PixelRect render_region(const RenderOptions& options) {
+  return options.region.value_or(PixelRect{0, 0, static_cast<std::uint32_t>(options.width),
+                                           static_cast<std::uint32_t>(options.height)});
+}
+
 void check_render_setup(const RenderSetup& setup) {
+  const PixelRect region = render_region(setup.options);
+  const std::uint64_t width = static_cast<std::uint64_t>(setup.options.width);
+  const std::uint64_t height = static_cast<std::uint64_t>(setup.options.height);
+  if (region.pixel_count() == 0 || region.x + std::uint64_t{region.width} > width ||
+      region.y + std::uint64_t{region.height} > height)
+    throw UsageError("the region " + describe(region) + " is not a non-empty part of the " +
+                     std::to_string(width) + "x" + std::to_string(height) + " image");
   if (setup.options.integrator != IntegratorKind::Megakernel) return;
   for (const DeviceEntry& entry : setup.devices)
     check_megakernel_depth(static_cast<std::uint32_t>(setup.options.max_depth),
@@ -112,8 +125,7 @@ FloatImage render(const Scene& scene, const RenderSetup& setup, RenderStats& sta
   stats.build_seconds = seconds_since(start);
 
   start = Clock::now();
-  const PixelRect region{0, 0, static_cast<std::uint32_t>(options.width),
-                         static_cast<std::uint32_t>(options.height)};
+  const PixelRect region = render_region(options);
   FloatImage image;
   image.width = static_cast<int>(region.width);
   image.height = static_cast<int>(region.height);

@@ -19,7 +19,11 @@ struct RenderSetup {
   bool progress = false;             // a progress bar when stderr is a terminal
 };
 
-// Throws UsageError when `setup` cannot render `scene` on its devices, before any work.
+// The pixels a render covers: the options' region, or the whole image.
+PixelRect render_region(const RenderOptions& options);
+
+// Throws UsageError when `setup` cannot be rendered as asked (a region outside the image, a
+// megakernel stack too shallow for the depth), before any work.
 void check_render_setup(const RenderSetup& setup);
 
 // Renders `scene`; fills the timing, device and ray fields of `stats` (not load or write).
