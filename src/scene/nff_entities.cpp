@@ -16,9 +16,9 @@ std::vector<Line> group_nff_entities(std::vector<Line> lines, const std::string&
       continue;
     }
     if (entities.empty())
-      throw SceneError({file, first.line, first.column},
-                       "expected an entity (v, b, l, f, c, s, p or pp), found the number '" +
-                           first.text + "'");
+      throw SceneError(
+          {file, first.line, first.column},
+          "expected an entity (v, b, l, f, c, s, p or pp), found the number '" + first.text + "'");
     std::vector<Word>& words = entities.back().words;
     words.insert(words.end(), std::make_move_iterator(line.words.begin()),
                  std::make_move_iterator(line.words.end()));

@@ -24,9 +24,8 @@ void apply(NffState& state, const Line& entity) {
   advance_view(state, args);
   const auto handler = nff_table().find(args.name());
   if (handler == nff_table().end() || args.command_word().quoted)
-    throw SceneError(args.command_location(),
-                     "unknown entity '" + args.command_word().text +
-                         "' (NFF has v, b, l, f, c, s, p and pp)");
+    throw SceneError(args.command_location(), "unknown entity '" + args.command_word().text +
+                                                  "' (NFF has v, b, l, f, c, s, p and pp)");
   handler->second(state, args);
 }
 

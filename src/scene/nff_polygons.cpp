@@ -13,9 +13,9 @@ std::size_t vertex_count(const CommandArgs& a, std::size_t per_vertex, const std
     throw a.error_past_end("wrong number of arguments: " + a.command_word().text +
                            " needs its vertex count");
   const auto n = static_cast<std::size_t>(a.whole_number(0, 3, "the vertex count"));
-  a.require_count({n * per_vertex}, 1,
-                  a.command_word().text + " with " + a.word(0).text + " vertices (" + layout +
-                      " each)");
+  a.require_count(
+      {n * per_vertex}, 1,
+      a.command_word().text + " with " + a.word(0).text + " vertices (" + layout + " each)");
   return n;
 }
 
@@ -37,8 +37,8 @@ MeshData& patch_mesh(NffState& s, const CommandArgs& a) {
   const int index = static_cast<int>(scene.meshes.size());
   s.patch_mesh[s.loader.material] = index;
   scene.meshes.push_back({});
-  scene.meshes.back().path = scene.path + " (pp patches of material " +
-                             std::to_string(s.loader.material) + ")";
+  scene.meshes.back().path =
+      scene.path + " (pp patches of material " + std::to_string(s.loader.material) + ")";
   add_instance(s.loader, a.command_location(), ShapeKind::Mesh, Mat4::identity()).mesh = index;
   return scene.meshes.back();
 }

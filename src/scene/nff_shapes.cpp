@@ -38,8 +38,9 @@ void cone_or_cylinder(NffState& s, const CommandArgs& a) {
   const double base_r = std::abs(a.number(3)), apex_r = std::abs(a.number(7));
   const Vec3 axis = apex - base;
   if (axis == Vec3{0, 0, 0})
-    throw a.error_at(4, "the apex is the base point: a cone or cylinder needs an axis of "
-                        "non-zero length");
+    throw a.error_at(4,
+                     "the apex is the base point: a cone or cylinder needs an axis of "
+                     "non-zero length");
   const double r = std::max(base_r, apex_r);
   if (r == 0) return;
   // Scaled, then turned, then moved: multiplied in the order a .ray file's transforms are.

@@ -26,8 +26,8 @@ double fov_from_nff_angle(double angle_degrees, int width) {
 void view(NffState& s, const CommandArgs& a) {
   a.require_count({0});
   if (s.view_at)
-    throw SceneError(a.command_location(), "a second view (v): the first is at line " +
-                                               std::to_string(s.view_at->line));
+    throw SceneError(a.command_location(),
+                     "a second view (v): the first is at line " + std::to_string(s.view_at->line));
   s.view_at = a.command_location();
   s.view_part = 0;
 }

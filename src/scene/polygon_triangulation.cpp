@@ -44,28 +44,49 @@ Ring::const_iterator previous_in(const Ring& ring, Ring::const_iterator it) {
   return it == ring.begin() ? std::prev(ring.end()) : std::prev(it);
 }
 
+// What the ear test found for a corner; a value >= 0 is a witness: a vertex inside the corner's
+// triangle, so the corner is no ear while that vertex and the corner's neighbours stay.
+constexpr long kEar = -3;
+constexpr long kUnknown = -2;  // not tested since its neighbours or its witness changed
+constexpr long kReflex = -1;   // turns clockwise (or not at all): no ear while its neighbours stay
+
 // A corner that turns counter-clockwise and holds no other vertex can be cut off.
-bool is_ear(const std::vector<Vec3>& v, const Ring& ring, Ring::const_iterator corner,
-            const Vec3& normal) {
+long ear_test(const std::vector<Vec3>& v, const Ring& ring, Ring::const_iterator corner,
+              const Vec3& normal) {
   const std::size_t a = *previous_in(ring, corner), b = *corner, c = *next_in(ring, corner);
-  if (turn(v[a], v[b], v[c], normal) <= 0) return false;
+  if (turn(v[a], v[b], v[c], normal) <= 0) return kReflex;
   for (std::size_t other : ring)
     if (other != a && other != b && other != c && v[other] != v[a] && v[other] != v[b] &&
         v[other] != v[c] && inside(v[other], v[a], v[b], v[c], normal))
-      return false;
-  return true;
+      return static_cast<long>(other);
+  return kEar;
 }
 
+// Cuts the first ear in the ring's order, again and again. What each corner's last test found
+// is kept, and only corners whose triangle changed (the neighbours of a cut) or whose witness was
+// cut are tested again: about one test per corner in all, not one per corner and cut.
 std::vector<TriangleCorners> clip_ears(const std::vector<Vec3>& v, const Vec3& normal) {
   Ring ring;
   for (std::size_t i = 0; i < v.size(); ++i) ring.push_back(i);
+  std::vector<long> status(v.size(), kUnknown);
+  std::vector<std::vector<std::size_t>> witnessed(v.size());  // corners each vertex blocks
   std::vector<TriangleCorners> triangles;
   while (ring.size() > 3) {
     auto corner = ring.cbegin();
-    while (corner != ring.cend() && !is_ear(v, ring, corner, normal)) ++corner;
+    for (; corner != ring.cend(); ++corner) {
+      if (status[*corner] != kUnknown) continue;
+      const long found = ear_test(v, ring, corner, normal);
+      if (found == kEar) break;
+      status[*corner] = found;
+      if (found >= 0) witnessed[static_cast<std::size_t>(found)].push_back(*corner);
+    }
     // No ear: the polygon crosses itself or has lost its area; a fan covers what remains.
     if (corner == ring.cend()) break;
-    triangles.push_back({*previous_in(ring, corner), *corner, *next_in(ring, corner)});
+    const std::size_t before = *previous_in(ring, corner), after = *next_in(ring, corner);
+    triangles.push_back({before, *corner, after});
+    status[before] = status[after] = kUnknown;
+    for (std::size_t blocked : witnessed[*corner])
+      if (status[blocked] == static_cast<long>(*corner)) status[blocked] = kUnknown;
     ring.erase(corner);
   }
   const std::size_t first = ring.front();
