@@ -39,25 +39,22 @@ TEST_CASE("NFF: a word that is not a number, on the entity's lines", "[scene][nf
   require_nff_error(kView + "b 0 0,5 0\n", 8, 5, "expected a number, found '0,5'");
 }
 
-TEST_CASE("NFF: too few numbers are reported just past the entity's last word",
-          "[scene][nff][errors]") {
+// Too few: just past the entity's last word; too many: at the first extra one, on any line.
+TEST_CASE("NFF: a wrong count of numbers", "[scene][nff][errors]") {
   require_nff_error(kView + "s 0 0 0\ns 1 1 1 1\n", 8, 8, "s takes 4 arguments, found 3");
   require_nff_error(kView + "b 0 0\n", 8, 6, "b takes 3 arguments, found 2");
   require_nff_error(kView + "l 1 2 3 4 5   # r g b?\n", 8, 12, "l takes 3 or 6 arguments, found 5");
   require_nff_error(kView + "f 1 1 1 1 0 0 0\n", 8, 16, "f takes 8 arguments, found 7");
   require_nff_error(kView + "c\n0 0 0 1\n0 0 1\n", 10, 6, "c takes 8 arguments, found 7");
-}
-
-TEST_CASE("NFF: too many numbers are reported at the first extra one", "[scene][nff][errors]") {
   require_nff_error(kView + "s 0 0 0 1 2\n", 8, 11, "s takes 4 arguments, found 5");
   require_nff_error(kView + "s 0 0 0 1\n  5 6\n", 9, 3, "s takes 4 arguments, found 6");
   require_nff_error(kView + "l 1 2 3 1 1 1 1\n", 8, 15, "l takes 3 or 6 arguments, found 7");
 }
 
-TEST_CASE("NFF: p and pp take a vertex count >= 3 and that many vertices",
-          "[scene][nff][errors]") {
+TEST_CASE("NFF: p and pp take a vertex count >= 3 and that many vertices", "[scene][nff][errors]") {
   require_nff_error(kView + "p\n", 8, 2, "p needs its vertex count");
-  require_nff_error(kView + "p 2\n0 0 0\n1 0 0\n", 8, 3, "the vertex count must be a whole number >= 3");
+  require_nff_error(kView + "p 2\n0 0 0\n1 0 0\n", 8, 3,
+                    "the vertex count must be a whole number >= 3");
   require_nff_error(kView + "pp 3.5\n", 8, 4, "whole number >= 3, found 3.5");
   require_nff_error(kView + "p 4\n0 0 0\n1 0 0\n1 1 0\n", 11, 6,
                     "p with 4 vertices (x y z each) takes 12 arguments after '4', found 9");
@@ -92,8 +89,7 @@ TEST_CASE("NFF: a sphere or cone too large to place", "[scene][nff][errors]") {
 TEST_CASE("NFF: the view is required, once, with its parts in order", "[scene][nff][errors]") {
   require_nff_error("s 0 0 0 1\n", 1, 1, "the file has no view (v)");
   require_nff_error("", 1, 1, "the file has no view (v)");
-  require_nff_error(kView + "s 0 0 0 1\n\nv\n", 10, 1,
-                    "a second view (v): the first is at line 1");
+  require_nff_error(kView + "s 0 0 0 1\n\nv\n", 10, 1, "a second view (v): the first is at line 1");
   require_nff_error("v\nat 0 0 0\n", 2, 1, "the view (v) needs 'from' next, found 'at'");
   require_nff_error("v\nfrom 0 0 5\nat 0 0 0\nup 0 1 0\nangle 45\ns 0 0 0 1\n", 6, 1,
                     "the view (v) needs 'hither' next, found 's'");
@@ -118,6 +114,6 @@ TEST_CASE("NFF: the view's numbers in their ranges", "[scene][nff][errors]") {
                     "the up vector must not be a zero-length vector");
   require_nff_error(view("45", "0", "8 8", "0 0 2"), 4, 1,
                     "the up vector is parallel to the view direction");
-  require_nff_error("v\nfrom 1 1 1\nat 1 1 1\nup 0 1 0\nangle 45\nhither 0\nresolution 8 8\n", 3,
-                    1, "eye and lookat are the same point");
+  require_nff_error("v\nfrom 1 1 1\nat 1 1 1\nup 0 1 0\nangle 45\nhither 0\nresolution 8 8\n", 3, 1,
+                    "eye and lookat are the same point");
 }

@@ -26,9 +26,8 @@ double degrees(double radians) { return radians * 180 / kPi; }
 
 TEST_CASE("NFF: the view places the camera and widens the angle to the image's edges",
           "[scene][nff]") {
-  const clrt::Scene s =
-      load_text("v\nfrom 1 2 3\nat 4 5 6\nup 0 0 1\nangle 30\nhither 1\nresolution 20 10\n",
-                "scene.nff");
+  const clrt::Scene s = load_text(
+      "v\nfrom 1 2 3\nat 4 5 6\nup 0 0 1\nangle 30\nhither 1\nresolution 20 10\n", "scene.nff");
   CHECK(s.camera.eye == Vec3{1, 2, 3});
   CHECK(s.camera.lookat == Vec3{4, 5, 6});
   CHECK(s.camera.up == Vec3{0, 0, 1});
@@ -46,9 +45,8 @@ TEST_CASE("NFF: the view places the camera and widens the angle to the image's e
 }
 
 TEST_CASE("NFF: an image one pixel wide takes the angle as its fov", "[scene][nff]") {
-  const clrt::Scene s =
-      load_text("v\nfrom 0 0 1\nat 0 0 0\nup 0 1 0\nangle 30\nhither 0\nresolution 1 5\n",
-                "scene.nff");
+  const clrt::Scene s = load_text(
+      "v\nfrom 0 0 1\nat 0 0 0\nup 0 1 0\nangle 30\nhither 0\nresolution 1 5\n", "scene.nff");
   CHECK(s.camera.fov_degrees == 30);
 }
 
@@ -85,8 +83,7 @@ TEST_CASE("NFF: f divides the local terms by 1 - Ks - T, Ks is also the reflecti
   CHECK(m.ior == 1.5);
 }
 
-TEST_CASE("NFF: with Ks + T >= 1 nothing is left to divide by; ior <= 0 means 1",
-          "[scene][nff]") {
+TEST_CASE("NFF: with Ks + T >= 1 nothing is left to divide by; ior <= 0 means 1", "[scene][nff]") {
   const clrt::Scene s = load_nff("f 1 1 1 0.1 0.1 101 0.9 1.5\nf 1 1 1 0.5 0.5 5 0.5 0\n");
   const clrt::MaterialSpec& glass = s.materials.at(1);
   CHECK(glass.kd == 0.1);
@@ -119,8 +116,8 @@ TEST_CASE("NFF: s is a sphere; a negative radius is its size; radius 0 is left o
 namespace {
 
 void check_near(const Vec3& got, const Vec3& expected) {
-  INFO("got (" << got.x << ", " << got.y << ", " << got.z << "), expected (" << expected.x
-               << ", " << expected.y << ", " << expected.z << ")");
+  INFO("got (" << got.x << ", " << got.y << ", " << got.z << "), expected (" << expected.x << ", "
+               << expected.y << ", " << expected.z << ")");
   CHECK(length(got - expected) < 1e-12);
 }
 
@@ -164,8 +161,7 @@ TEST_CASE("NFF: c with two radii is a cone scaled by the larger radius", "[scene
 TEST_CASE("NFF: a cylinder along +y is not turned; radii 0 are left out", "[scene][nff]") {
   const clrt::Scene s = load_nff("c 0 0 0 1 0 2 0 1\nc 0 0 0 0 1 1 1 0\n");
   REQUIRE(s.instances.size() == 1);
-  const clrt::Mat4 expected =
-      clrt::Mat4::translate({0, 1, 0}) * clrt::Mat4::scale({1, 1, 1});
+  const clrt::Mat4 expected = clrt::Mat4::translate({0, 1, 0}) * clrt::Mat4::scale({1, 1, 1});
   for (int i = 0; i < 4; ++i)
     for (int j = 0; j < 4; ++j) CHECK(s.instances[0].transform.m[i][j] == expected.m[i][j]);
 }

@@ -1,7 +1,8 @@
 // Each NFF file loads into the same Scene as its .ray twin.
+#include "nff_twins.hpp"
+
 #include <catch2/catch.hpp>
 
-#include "nff_twins.hpp"
 #include "scene/scene.hpp"
 #include "scene_equivalence.hpp"
 
