@@ -83,7 +83,8 @@ TEST_CASE("NFF: f divides the local terms by 1 - Ks - T, Ks is also the reflecti
   CHECK(m.ior == 1.5);
 }
 
-TEST_CASE("NFF: with Ks + T >= 1 nothing is left to divide by; ior <= 0 means 1", "[scene][nff]") {
+TEST_CASE("NFF: with Ks + T >= 1 nothing is left to divide by, and ior <= 0 means 1",
+          "[scene][nff]") {
   const clrt::Scene s = load_nff("f 1 1 1 0.1 0.1 101 0.9 1.5\nf 1 1 1 0.5 0.5 5 0.5 0\n");
   const clrt::MaterialSpec& glass = s.materials.at(1);
   CHECK(glass.kd == 0.1);
@@ -101,7 +102,7 @@ TEST_CASE("NFF: objects before the first f take clrt's default material", "[scen
   CHECK(s.instances.at(1).material == 1);
 }
 
-TEST_CASE("NFF: s is a sphere; a negative radius is its size; radius 0 is left out",
+TEST_CASE("NFF: s is a sphere, a negative radius is its size, radius 0 is left out",
           "[scene][nff]") {
   const clrt::Scene s = load_nff("s 1 2 3 0.5\ns -1 0 0 -2\ns 9 9 9 0\n");
   REQUIRE(s.instances.size() == 2);
@@ -158,7 +159,7 @@ TEST_CASE("NFF: c with two radii is a cone scaled by the larger radius", "[scene
   check_near(down.transform.transform_point({1, -1, 0}), {2, 1, 0});
 }
 
-TEST_CASE("NFF: a cylinder along +y is not turned; radii 0 are left out", "[scene][nff]") {
+TEST_CASE("NFF: a cylinder along +y is not turned, radii 0 are left out", "[scene][nff]") {
   const clrt::Scene s = load_nff("c 0 0 0 1 0 2 0 1\nc 0 0 0 0 1 1 1 0\n");
   REQUIRE(s.instances.size() == 1);
   const clrt::Mat4 expected = clrt::Mat4::translate({0, 1, 0}) * clrt::Mat4::scale({1, 1, 1});
