@@ -37,6 +37,10 @@ std::string lower_case(std::string s) {
   return s;
 }
 
+bool looks_numeric(const Word& word) {
+  return !word.quoted && parse_number(word.text).problem != NumberProblem::NotANumber;
+}
+
 CommandArgs::CommandArgs(const std::string& file, const Line& line)
     : file_(file), line_(line), name_(lower_case(line.words.front().text)) {}
 
@@ -104,11 +108,12 @@ SourceLocation CommandArgs::command_location() const {
 }
 
 SceneError CommandArgs::error_at(std::size_t i, const std::string& message) const {
-  return SceneError({file_, line_.number, word(i).column}, message);
+  return SceneError({file_, word(i).line, word(i).column}, message);
 }
 
 SceneError CommandArgs::error_past_end(const std::string& message) const {
-  return SceneError({file_, line_.number, line_.words.back().end_column}, message);
+  const Word& last = line_.words.back();
+  return SceneError({file_, last.line, last.end_column}, message);
 }
 
 }  // namespace clrt

@@ -1,4 +1,5 @@
-// One command line of a .ray file: checked access to its arguments and errors located at them.
+// One command of a scene file (a .ray line, or an NFF entity whose numbers may run over several
+// lines): checked access to its arguments and errors located at them.
 #pragma once
 
 #include <cstddef>
@@ -13,10 +14,12 @@ namespace clrt {
 
 class CommandArgs {
  public:
-  // `line.words[0]` is the command word; arguments are numbered from 0 after it.
+  // `line.words[0]` is the command word; arguments are numbered from 0 after it. Errors are
+  // located at each word's own line.
   CommandArgs(const std::string& file, const Line& line);
 
   const std::string& name() const { return name_; }  // the command word in lower case
+  const Word& command_word() const { return line_.words.front(); }  // as written
   std::size_t count() const { return line_.words.size() - 1; }
   const Word& word(std::size_t i) const { return line_.words[i + 1]; }
 
@@ -49,5 +52,9 @@ class CommandArgs {
 
 // Command names and keywords are case-insensitive: they are compared in lower case.
 std::string lower_case(std::string s);
+
+// Whether `word` is written as a number (finite or not, in range or not): the words that can only
+// be arguments, never command names or keywords.
+bool looks_numeric(const Word& word);
 
 }  // namespace clrt

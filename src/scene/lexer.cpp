@@ -13,6 +13,7 @@ bool is_separator(char c) { return c == ' ' || c == '\t' || c == '\r'; }
 Word read_word(const std::string& line, std::size_t& pos, int line_number,
                const std::string& file) {
   Word word;
+  word.line = line_number;
   word.column = static_cast<int>(pos) + 1;
   if (line[pos] == '"') {
     const std::size_t close = line.find('"', pos + 1);

@@ -1,4 +1,4 @@
-// Splits .ray text into lines of words, remembering where each word was written.
+// Splits scene text (.ray or NFF) into lines of words, remembering where each word was written.
 #pragma once
 
 #include <string>
@@ -8,6 +8,7 @@ namespace clrt {
 
 struct Word {
   std::string text;    // without the quotes of a quoted word
+  int line = 1;        // 1-based line it was written on
   int column = 1;      // 1-based byte column of the first character (the opening quote if quoted)
   int end_column = 1;  // one past the last character, so "missing word" errors can point there
   bool quoted = false;

@@ -3,7 +3,6 @@
 #include <map>
 
 #include "scene/command_table.hpp"
-#include "scene/number.hpp"
 
 namespace clrt {
 namespace {
@@ -64,10 +63,6 @@ const std::map<std::string, KindEntry>& light_kinds() {
       {"spot", {LightKind::Spot, spot}},
       {"area", {LightKind::Area, area}}};
   return kinds;
-}
-
-bool looks_numeric(const Word& word) {
-  return !word.quoted && parse_number(word.text).problem != NumberProblem::NotANumber;
 }
 
 // The kind must be the fourth word. A number there means more than three colour numbers were

@@ -1,4 +1,4 @@
-// What the loader keeps while it reads a .ray file top to bottom.
+// What a loader keeps while it reads a scene file top to bottom.
 #pragma once
 
 #include <map>
@@ -20,5 +20,10 @@ struct LoaderState {
   // The last command that set each camera vector, for errors found only after the whole file.
   std::optional<SourceLocation> eye_set_at, lookat_set_at, up_set_at;
 };
+
+// Appends an instance of `shape` placed by `to_world` with the current material; a SceneError at
+// `where` when the transform or its inverse is not finite.
+InstanceSpec& add_instance(LoaderState& s, const SourceLocation& where, ShapeKind shape,
+                           const Mat4& to_world);
 
 }  // namespace clrt

@@ -1,5 +1,4 @@
 // sphere, plane, cube, cylinder, cone, triangle, mesh: objects placed by the current transform.
-#include <cmath>
 #include <filesystem>
 
 #include "scene/command_table.hpp"
@@ -8,28 +7,9 @@
 namespace clrt {
 namespace {
 
-bool all_finite(const Mat4& m) {
-  for (const auto& row : m.m)
-    for (double v : row)
-      if (!std::isfinite(v)) return false;
-  return true;
-}
-
-// Appends an instance of a canonical shape placed by `to_world`.
-InstanceSpec& add_instance(LoaderState& s, const CommandArgs& a, ShapeKind shape,
-                           const Mat4& to_world) {
-  InstanceSpec instance = place_instance(shape, to_world, s.material);
-  instance.where = a.command_location();
-  // Extreme scale factors can overflow the product or make it numerically singular.
-  if (!all_finite(instance.transform) || !all_finite(instance.inverse))
-    throw SceneError(instance.where, "the current transform cannot be inverted");
-  s.scene.instances.push_back(instance);
-  return s.scene.instances.back();
-}
-
 void add_simple_shape(LoaderState& s, const CommandArgs& a, ShapeKind shape) {
   a.require_count({0});
-  add_instance(s, a, shape, s.transform);
+  add_instance(s, a.command_location(), shape, s.transform);
 }
 
 void sphere(LoaderState& s, const CommandArgs& a) {
@@ -41,7 +21,7 @@ void sphere(LoaderState& s, const CommandArgs& a) {
     if (radius <= 0) throw a.error_at(3, "the sphere radius must be > 0, found " + a.word(3).text);
     to_world = to_world * Mat4::translate(centre) * Mat4::scale({radius, radius, radius});
   }
-  add_instance(s, a, ShapeKind::Sphere, to_world);
+  add_instance(s, a.command_location(), ShapeKind::Sphere, to_world);
 }
 
 void plane(LoaderState& s, const CommandArgs& a) { add_simple_shape(s, a, ShapeKind::Plane); }
@@ -58,7 +38,7 @@ void cone(LoaderState& s, const CommandArgs& a) {
     }
     if (radii[0] == 0 && radii[1] == 0) throw a.error_at(0, "the cone radii must not both be 0");
   }
-  InstanceSpec& instance = add_instance(s, a, ShapeKind::Cone, s.transform);
+  InstanceSpec& instance = add_instance(s, a.command_location(), ShapeKind::Cone, s.transform);
   instance.cone_r0 = radii[0];
   instance.cone_r1 = radii[1];
 }
@@ -96,7 +76,7 @@ void mesh(LoaderState& s, const CommandArgs& a) {
                             " (put a path with spaces in double quotes)");
   a.require_count({1});
   const int index = mesh_index(s, a);
-  add_instance(s, a, ShapeKind::Mesh, s.transform).mesh = index;
+  add_instance(s, a.command_location(), ShapeKind::Mesh, s.transform).mesh = index;
 }
 
 }  // namespace

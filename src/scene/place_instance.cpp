@@ -1,6 +1,18 @@
-#include "scene/scene.hpp"
+#include <cmath>
+
+#include "scene/loader_state.hpp"
 
 namespace clrt {
+namespace {
+
+bool all_finite(const Mat4& m) {
+  for (const auto& row : m.m)
+    for (double v : row)
+      if (!std::isfinite(v)) return false;
+  return true;
+}
+
+}  // namespace
 
 InstanceSpec place_instance(ShapeKind shape, const Mat4& to_world, int material) {
   InstanceSpec instance;
@@ -10,6 +22,19 @@ InstanceSpec place_instance(ShapeKind shape, const Mat4& to_world, int material)
   instance.inverse = to_world.inverse();
   instance.normal_matrix = instance.inverse.transposed();
   return instance;
+}
+
+InstanceSpec& add_instance(LoaderState& s, const SourceLocation& where, ShapeKind shape,
+                           const Mat4& to_world) {
+  InstanceSpec instance = place_instance(shape, to_world, s.material);
+  instance.where = where;
+  // Extreme scale factors can overflow the product or make it numerically singular.
+  if (!all_finite(instance.transform) || !all_finite(instance.inverse))
+    throw SceneError(where,
+                     "the transform that places this object cannot be inverted (a scale factor "
+                     "too large or too small)");
+  s.scene.instances.push_back(instance);
+  return s.scene.instances.back();
 }
 
 }  // namespace clrt

@@ -1,4 +1,4 @@
-// The scene model: everything a .ray file describes, validated and ready to upload.
+// The scene model: everything a scene file (.ray or NFF) describes, validated and ready to upload.
 #pragma once
 
 #include <cstdint>
@@ -83,7 +83,8 @@ struct Scene {
   std::vector<TriangleSpec> triangles;
 };
 
-// Reads a .ray file (and the meshes it names). Throws SceneError on any problem in the file.
+// Reads a scene file: NFF when its name ends in `.nff` (any case), else `.ray` (and the meshes it
+// names). Throws SceneError on any problem in the file.
 Scene load_scene(const std::string& path);
 
 }  // namespace clrt

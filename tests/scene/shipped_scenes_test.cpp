@@ -27,12 +27,13 @@ double lowest_y_of_unit_sphere(const clrt::Mat4& m) {
 
 }  // namespace
 
-TEST_CASE("every .ray file in scenes/ loads", "[scene][shipped]") {
+TEST_CASE("every .ray and .nff file in scenes/ loads", "[scene][shipped]") {
   std::vector<std::filesystem::path> files;
   for (const auto& entry : std::filesystem::recursive_directory_iterator(kScenes))
-    if (entry.path().extension() == ".ray") files.push_back(entry.path());
+    if (entry.path().extension() == ".ray" || entry.path().extension() == ".nff")
+      files.push_back(entry.path());
   std::sort(files.begin(), files.end());
-  CHECK(files.size() >= 19);
+  CHECK(files.size() >= 21);
   for (const auto& file : files) {
     INFO(file.string());
     CHECK_NOTHROW(clrt::load_scene(file.string()));

@@ -1,0 +1,57 @@
+// Reads Eric Haines' Neutral File Format (the SPD benchmark scenes) into the same Scene as .ray.
+#include "scene/camera_check.hpp"
+#include "scene/nff_entities.hpp"
+#include "scene/nff_state.hpp"
+#include "scene/scene_loaders.hpp"
+
+namespace clrt {
+namespace {
+
+const NffTable& nff_table() {
+  static const NffTable table = [] {
+    NffTable t;
+    add_nff_view_entities(t);
+    add_nff_look_entities(t);
+    add_nff_shape_entities(t);
+    add_nff_polygon_entities(t);
+    return t;
+  }();
+  return table;
+}
+
+void apply(NffState& state, const Line& entity) {
+  const CommandArgs args(state.loader.scene.path, entity);
+  advance_view(state, args);
+  const auto handler = nff_table().find(args.name());
+  if (handler == nff_table().end() || args.command_word().quoted)
+    throw SceneError(args.command_location(), "unknown entity '" + args.command_word().text +
+                                                  "' (NFF has v, b, l, f, c, s, p and pp)");
+  handler->second(state, args);
+}
+
+// Just past the file's last word, where "the file ends too soon" errors point.
+SourceLocation end_of(const std::vector<Line>& entities, const std::string& path) {
+  if (entities.empty()) return {path, 1, 1};
+  const Word& last = entities.back().words.back();
+  return {path, last.line, last.end_column};
+}
+
+}  // namespace
+
+Scene load_nff_scene(const std::string& path) {
+  NffState state;
+  Scene& scene = state.loader.scene;
+  scene.path = path;
+  // SPD traces ray trees 5 deep counting the eye ray as the first; clrt counts it as depth 0.
+  scene.max_depth = 4;
+  scene.materials.push_back(MaterialSpec{});
+  const std::vector<Line> entities =
+      group_nff_entities(split_into_lines(read_scene_file(path), path), path);
+  for (const Line& entity : entities) apply(state, entity);
+  finish_view(state, end_of(entities, path));
+  finish_lights(state);
+  check_camera(state.loader);
+  return std::move(state.loader.scene);
+}
+
+}  // namespace clrt

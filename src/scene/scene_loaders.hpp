@@ -1,0 +1,16 @@
+// The loaders behind load_scene(), one per scene format, and what they share.
+#pragma once
+
+#include <string>
+
+#include "scene/scene.hpp"
+
+namespace clrt {
+
+// The whole file; a SceneError at 1:1 when it cannot be read (missing, a folder, a read error).
+std::string read_scene_file(const std::string& path);
+
+Scene load_ray_scene(const std::string& path);
+Scene load_nff_scene(const std::string& path);
+
+}  // namespace clrt
