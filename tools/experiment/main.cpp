@@ -1,0 +1,185 @@
+// clrt-experiment: throughput experiments across scenes, devices and designs in one command.
+// Every run is one clrt process, as a user runs it; runs are interleaved (repeat, scene,
+// device, variant) so that a noisy machine spreads its noise over every configuration. Each
+// image is compared with its scene's first. Writes results.json, runs.csv, report.md and plots.
+#include <CLI/CLI.hpp>
+
+#include <unistd.h>
+
+#include <ctime>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <thread>
+
+#include "device/opencl.hpp"
+#include "experiment_plan.hpp"
+#include "process_run.hpp"
+#include "report.hpp"
+#include "run_record.hpp"
+#include "version.hpp"
+
+namespace fs = std::filesystem;
+using namespace clrt::experiment;
+
+namespace {
+
+std::string now_text() {
+  const std::time_t t = std::time(nullptr);
+  char text[32];
+  std::strftime(text, sizeof text, "%Y-%m-%dT%H:%M:%SZ", std::gmtime(&t));
+  return text;
+}
+
+nlohmann::json machine() {
+  char host[256] = {};
+  gethostname(host, sizeof host - 1);
+  return {{"hostname", host},
+          {"hardware_threads", std::thread::hardware_concurrency()},
+          {"date", now_text()}};
+}
+
+void write_file(const fs::path& path, const std::string& text) {
+  std::ofstream out(path, std::ios::binary);
+  out << text;
+  if (!out) throw std::runtime_error("cannot write " + path.string());
+}
+
+std::string image_name(const RunKey& k, const std::string& format) {
+  return "s" + std::to_string(k.scene) + "-d" + std::to_string(k.device) + "-v" +
+         std::to_string(k.variant) + "-r" + std::to_string(k.repeat) + "." + format;
+}
+
+// Runs the whole plan; returns every run's record.
+nlohmann::json run_plan(const Plan& plan) {
+  const fs::path images = fs::path(plan.out_dir) / "images";
+  fs::create_directories(images);
+  const std::size_t total =
+      plan.scenes.size() * plan.devices.size() * plan.variants.size() * plan.repeats;
+  std::map<std::size_t, std::string> reference;  // scene -> its first successful image
+  nlohmann::json runs = nlohmann::json::array();
+  std::size_t done = 0;
+  for (int repeat = 0; repeat < plan.repeats; ++repeat)
+    for (std::size_t s = 0; s < plan.scenes.size(); ++s)
+      for (std::size_t d = 0; d < plan.devices.size(); ++d)
+        for (std::size_t v = 0; v < plan.variants.size(); ++v) {
+          const RunKey key{s, d, v, repeat};
+          const std::string image = (images / image_name(key, plan.format)).string();
+          nlohmann::json record = run_once(plan, key, image);
+          std::cerr << "[" << ++done << "/" << total << "] " << plan.scenes[s] << " on "
+                    << plan.devices[d].spec << ", " << plan.variants[v].name() << ": ";
+          if (record["exit_code"] != 0) {
+            std::cerr << "failed (exit " << record["exit_code"] << ")\n";
+          } else if (!reference.count(s)) {
+            reference[s] = image;
+            record["validation"] = {{"reference", image}, {"identical", true}, {"flagged", false}};
+          } else {
+            record["validation"] = validate(reference[s], image);
+            if (!record["validation"]["flagged"].get<bool>()) fs::remove(image);
+          }
+          if (record["exit_code"] == 0)
+            std::cerr << record["mrays_per_second"].get<double>() << " Mrays/s"
+                      << (record["validation"]["flagged"].get<bool>() ? ", image differs" : "")
+                      << "\n";
+          runs.push_back(record);
+        }
+  return runs;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"clrt-experiment: scenes x devices x variants x repeats, one clrt process each",
+               "clrt-experiment"};
+  app.set_version_flag("--version", std::string(clrt_version_string()));
+  std::vector<std::string> scene_paths, device_specs = {"cpu"}, extras;
+  std::string integrators = "wavefront", wavefronts, local_sizes, python = CLRT_PYTHON3;
+  std::string plot_script = CLRT_PLOT_SCRIPT;
+  bool plots = true;
+  Plan plan;
+  plan.clrt = CLRT_EXE;
+  plan.resolution = "1280x720";
+  plan.out_dir = "experiment";
+  app.add_option("scenes", scene_paths, ".ray or .nff files, or folders of them")->required();
+  app.add_option("--device", device_specs,
+                 "devices to compare, as clrt --device takes them; `all` is every device "
+                 "(repeatable; default cpu)");
+  app.add_option("--integrator", integrators, "comma-separated: wavefront, megakernel")
+      ->capture_default_str();
+  app.add_option("--wavefront", wavefronts, "comma-separated queue sizes (default: the device's)");
+  app.add_option("--local-size", local_sizes, "comma-separated work-group sizes (default: the device's)");
+  app.add_option("--variant", extras, "NAME=ARGS: further clrt arguments as one more variant (repeatable)");
+  app.add_option("--repeats", plan.repeats, "runs of each configuration")
+      ->check(CLI::Range(1, 1000))
+      ->capture_default_str();
+  app.add_option("--resolution", plan.resolution, "WxH for every scene; `scene` keeps each scene's")
+      ->capture_default_str();
+  app.add_option("--spp", plan.spp, "samples per pixel for every scene (default: each scene's)");
+  app.add_option("--format", plan.format, "image format clrt writes and the runner compares")
+      ->check(CLI::IsMember({"pfm", "png", "exr", "ppm"}))
+      ->capture_default_str();
+  app.add_option("--out", plan.out_dir, "folder for results.json, runs.csv, report.md, plots")
+      ->capture_default_str();
+  app.add_option("--clrt", plan.clrt, "the clrt executable")->capture_default_str();
+  app.add_option("--python", python, "the Python with matplotlib that draws the plots")
+      ->capture_default_str();
+  app.add_flag("!--no-plots", plots, "write no plots");
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int code = app.exit(e);
+    return code == 0 ? 0 : 2;
+  }
+  if (plan.resolution == "scene") plan.resolution.clear();
+  try {
+    plan.scenes = expand_scenes(scene_paths);
+    if (plan.scenes.empty()) throw CLI::ValidationError("no .ray or .nff scene found");
+    plan.variants = expand_variants(split_list(integrators), split_list(wavefronts),
+                                    split_list(local_sizes), extras);
+  } catch (const CLI::Error& e) {
+    std::cerr << "clrt-experiment: error: " << e.what() << "\n";
+    return 2;
+  }
+  try {
+    plan.devices = choose_devices(device_specs);
+    const nlohmann::json runs = run_plan(plan);
+    nlohmann::json results = {{"clrt", clrt_version_string()}, {"machine", machine()}};
+    results["settings"] = {{"scenes", plan.scenes},   {"repeats", plan.repeats},
+                           {"resolution", plan.resolution}, {"spp", plan.spp},
+                           {"format", plan.format},   {"clrt_executable", plan.clrt}};
+    results["runs"] = runs;
+    results["summary"] = summarize(runs);
+    results["scores"] = device_scores(results["summary"]);
+    const fs::path out(plan.out_dir);
+    write_file(out / "results.json", results.dump(2) + "\n");
+    write_file(out / "runs.csv", runs_csv(runs));
+    write_file(out / "report.md", markdown_report(results));
+    std::cout << markdown_report(results);
+    int failed = 0, flagged = 0;
+    for (const nlohmann::json& s : results["summary"]) {
+      failed += s["failed"].get<int>();
+      flagged += s["flagged"].get<int>();
+    }
+    if (plots) {
+      const ProcessResult p = run_process({python, plot_script, (out / "results.json").string(),
+                                           out.string()});
+      if (p.exit_code != 0) {
+        std::cerr << "clrt-experiment: error: the plots failed (" << python << " " << plot_script
+                  << "):\n" << p.err;
+        return 1;
+      }
+    }
+    std::cerr << "clrt-experiment: wrote " << out.string() << "/results.json, runs.csv, report.md"
+              << (plots ? ", plots" : "") << "\n";
+    if (failed || flagged) {
+      std::cerr << "clrt-experiment: " << failed << " runs failed, " << flagged
+                << " images differ from their scene's first\n";
+      return 1;
+    }
+    return 0;
+  } catch (const std::exception& e) {
+    std::cerr << "clrt-experiment: error: " << e.what() << "\n";
+    return 1;
+  }
+}

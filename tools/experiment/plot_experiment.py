@@ -1,0 +1,108 @@
+#!/usr/bin/python3
+"""Plots of a clrt-experiment run: python3 plot_experiment.py RESULTS.json OUT_DIR
+
+mrays.png      Mrays/s per scene, one bar per device and variant (medians over repeats)
+kernels.png    each kernel's share of the device time, per device and variant (all scenes)
+wavefront.png  Mrays/s against the wavefront size, when the experiment swept it
+"""
+import json
+import os
+import sys
+from collections import defaultdict
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+
+def label(entry):
+    return f"{entry['device_spec']} {entry['variant']}"
+
+
+def scene_name(entry):
+    return os.path.basename(entry["scene"])
+
+
+def plot_mrays(summary, out):
+    scenes = list(dict.fromkeys(scene_name(s) for s in summary))
+    configs = list(dict.fromkeys(label(s) for s in summary))
+    rate = {(scene_name(s), label(s)): s["mrays_per_second"] for s in summary}
+    width = 0.8 / len(configs)
+    fig, ax = plt.subplots(figsize=(max(6, 1.2 * len(scenes) * max(1, len(configs) / 2)), 4.5))
+    for k, config in enumerate(configs):
+        xs = [i + k * width for i in range(len(scenes))]
+        ax.bar(xs, [rate.get((sc, config), 0) for sc in scenes], width, label=config)
+    ax.set_xticks([i + 0.4 - width / 2 for i in range(len(scenes))])
+    ax.set_xticklabels(scenes, rotation=30, ha="right")
+    ax.set_ylabel("Mrays/s (all ray kinds, render time)")
+    ax.set_title("Throughput per scene, device and variant")
+    ax.legend(fontsize="small")
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, "mrays.png"), dpi=110)
+    plt.close(fig)
+
+
+def plot_kernels(summary, out):
+    seconds = defaultdict(lambda: defaultdict(float))
+    for s in summary:
+        for kernel, t in s["kernels"].items():
+            seconds[label(s)][kernel] += t
+    configs = list(seconds)
+    kernels = sorted({k for c in configs for k in seconds[c]},
+                     key=lambda k: -sum(seconds[c][k] for c in configs))
+    fig, ax = plt.subplots(figsize=(8, 1.2 + 0.6 * len(configs)))
+    left = [0.0] * len(configs)
+    for kernel in kernels:
+        shares = []
+        for c in configs:
+            total = sum(seconds[c].values()) or 1.0
+            shares.append(100.0 * seconds[c][kernel] / total)
+        ax.barh(configs, shares, left=left, label=kernel)
+        left = [a + b for a, b in zip(left, shares)]
+    ax.set_xlabel("% of device time (medians, summed over scenes)")
+    ax.set_title("Where the device time goes")
+    ax.legend(fontsize="x-small", ncol=4, loc="upper center", bbox_to_anchor=(0.5, -0.25))
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, "kernels.png"), dpi=110)
+    plt.close(fig)
+
+
+def plot_wavefront(summary, out):
+    sizes = {s.get("wavefront") for s in summary if s.get("wavefront")}
+    if len(sizes) < 2:
+        return
+    lines = defaultdict(list)
+    for s in summary:
+        if s.get("wavefront"):
+            key = f"{scene_name(s)}, {s['device_spec']}, {s.get('integrator', '')}"
+            lines[key].append((s["wavefront"], s["mrays_per_second"]))
+    fig, ax = plt.subplots(figsize=(7, 4.5))
+    for key, points in lines.items():
+        points.sort()
+        ax.plot([p[0] for p in points], [p[1] for p in points], marker="o", label=key)
+    ax.set_xscale("log", base=2)
+    ax.set_xlabel("wavefront (rays per queue)")
+    ax.set_ylabel("Mrays/s")
+    ax.set_title("Wavefront size sweep")
+    ax.legend(fontsize="x-small")
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, "wavefront.png"), dpi=110)
+    plt.close(fig)
+
+
+def main():
+    if len(sys.argv) != 3:
+        sys.exit(__doc__)
+    with open(sys.argv[1]) as f:
+        results = json.load(f)
+    summary = [s for s in results["summary"] if s["runs"] > s["failed"]]
+    if not summary:
+        sys.exit("plot_experiment.py: no successful run to plot")
+    plot_mrays(summary, sys.argv[2])
+    plot_kernels(summary, sys.argv[2])
+    plot_wavefront(summary, sys.argv[2])
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,226 @@
+#include "report.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <iomanip>
+#include <map>
+#include <set>
+#include <sstream>
+
+namespace clrt::experiment {
+namespace {
+
+double median(std::vector<double> v) {
+  if (v.empty()) return 0;
+  std::sort(v.begin(), v.end());
+  const std::size_t n = v.size();
+  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+std::string group_key(const nlohmann::json& run) {
+  return run["scene"].get<std::string>() + "\n" + run["device_spec"].get<std::string>() + "\n" +
+         run["variant"].get<std::string>();
+}
+
+bool succeeded(const nlohmann::json& run) { return run["exit_code"] == 0; }
+
+// The median of `field` (a JSON pointer) over the successful runs of a group.
+double median_of(const std::vector<const nlohmann::json*>& runs, const char* field) {
+  std::vector<double> v;
+  for (const nlohmann::json* r : runs)
+    if (succeeded(*r)) v.push_back(r->at(nlohmann::json::json_pointer(field)).get<double>());
+  return median(v);
+}
+
+std::string scene_name(const std::string& path) {
+  return std::filesystem::path(path).filename().string();
+}
+
+std::string fixed(double v, int digits) {
+  std::ostringstream out;
+  out << std::fixed << std::setprecision(digits) << v;
+  return out.str();
+}
+
+// CSV fields hold scene paths and device names: quote every text field.
+std::string csv_text(const std::string& s) {
+  std::string out = "\"";
+  for (char c : s) out += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return out + "\"";
+}
+
+}  // namespace
+
+nlohmann::json summarize(const nlohmann::json& runs) {
+  std::vector<std::string> order;
+  std::map<std::string, std::vector<const nlohmann::json*>> groups;
+  for (const nlohmann::json& run : runs) {
+    const std::string key = group_key(run);
+    if (!groups.count(key)) order.push_back(key);
+    groups[key].push_back(&run);
+  }
+  nlohmann::json out = nlohmann::json::array();
+  for (const std::string& key : order) {
+    const std::vector<const nlohmann::json*>& g = groups[key];
+    const nlohmann::json& first = *g.front();
+    nlohmann::json s = {{"scene", first["scene"]},
+                        {"device_spec", first["device_spec"]},
+                        {"device_name", first["device_name"]},
+                        {"variant", first["variant"]},
+                        {"runs", g.size()}};
+    int failed = 0, flagged = 0;
+    std::set<std::string> kernels;
+    for (const nlohmann::json* r : g) {
+      if (!succeeded(*r)) {
+        ++failed;
+        continue;
+      }
+      if (r->contains("validation") && (*r)["validation"]["flagged"].get<bool>()) ++flagged;
+      for (const auto& [name, k] : (*r)["kernels"].items()) kernels.insert(name);
+    }
+    s["failed"] = failed;
+    s["flagged"] = flagged;
+    // The settings the device really ran with (the variant may leave them to clrt).
+    for (const nlohmann::json* r : g)
+      if (succeeded(*r)) {
+        s["integrator"] = (*r)["integrator"];
+        s["wavefront"] = (*r)["devices"][0]["wavefront"];
+        s["local_size"] = (*r)["devices"][0]["local_size"];
+        break;
+      }
+    s["mrays_per_second"] = median_of(g, "/mrays_per_second");
+    s["msamples_per_second"] = median_of(g, "/samples_per_second") / 1e6;
+    s["render_seconds"] = median_of(g, "/seconds/render");
+    s["process_seconds"] = median_of(g, "/process_seconds");
+    s["device_busy"] = median_of(g, "/device_busy");
+    s["peak_mib"] = median_of(g, "/peak_bytes") / (1024.0 * 1024.0);
+    s["kernels"] = nlohmann::json::object();
+    for (const std::string& name : kernels) {
+      std::vector<double> v;
+      for (const nlohmann::json* r : g)
+        if (succeeded(*r) && (*r)["kernels"].contains(name))
+          v.push_back((*r)["kernels"][name]["device_seconds"].get<double>());
+      s["kernels"][name] = median(v);
+    }
+    out.push_back(s);
+  }
+  return out;
+}
+
+nlohmann::json device_scores(const nlohmann::json& summary) {
+  if (summary.empty()) return nlohmann::json::object();
+  const std::string first_variant = summary[0]["variant"];
+  std::map<std::string, std::vector<double>> rates;
+  std::set<std::string> incomplete;
+  std::map<std::string, std::string> names;
+  for (const nlohmann::json& s : summary) {
+    if (s["variant"] != first_variant) continue;
+    const std::string device = s["device_spec"];
+    names[device] = s["device_name"];
+    if (s["failed"].get<int>() > 0 || s["mrays_per_second"].get<double>() <= 0)
+      incomplete.insert(device);
+    else
+      rates[device].push_back(s["mrays_per_second"]);
+  }
+  nlohmann::json out = nlohmann::json::object();
+  for (const auto& [device, name] : names) {
+    if (incomplete.count(device)) {
+      out[device] = {{"name", name}, {"score", nullptr}, {"variant", first_variant}};
+      continue;
+    }
+    double log_sum = 0;
+    for (double r : rates[device]) log_sum += std::log(r);
+    const double geomean = std::exp(log_sum / static_cast<double>(rates[device].size()));
+    out[device] = {{"name", name}, {"score", std::round(100 * geomean)}, {"variant", first_variant}};
+  }
+  return out;
+}
+
+std::string runs_csv(const nlohmann::json& runs) {
+  std::ostringstream out;
+  out << "scene,device_spec,device,variant,repeat,exit_code,camera,reflection,refraction,shadow,"
+         "total,mrays_per_s,msamples_per_s,load_s,bvh_s,kernel_build_s,render_s,write_s,total_s,"
+         "process_s,device_s,device_busy,peak_mib,identical,psnr,differing_pixels,flagged\n";
+  for (const nlohmann::json& r : runs) {
+    out << csv_text(r["scene"]) << "," << csv_text(r["device_spec"]) << ","
+        << csv_text(r["device_name"]) << "," << csv_text(r["variant"]) << "," << r["repeat"] << ","
+        << r["exit_code"];
+    if (!succeeded(r)) {
+      out << std::string(21, ',') << "\n";
+      continue;
+    }
+    const nlohmann::json& rays = r["rays"];
+    const nlohmann::json& t = r["seconds"];
+    out << "," << rays["camera"] << "," << rays["reflection"] << "," << rays["refraction"] << ","
+        << rays["shadow"] << "," << rays["total"] << "," << r["mrays_per_second"] << ","
+        << r["samples_per_second"].get<double>() / 1e6 << "," << t["load"] << "," << t["bvh"] << ","
+        << t["kernel_build"] << "," << t["render"] << "," << t["write"] << "," << t["total"] << ","
+        << r["process_seconds"] << "," << t["device"] << "," << r["device_busy"] << ","
+        << r["peak_bytes"].get<double>() / (1024.0 * 1024.0);
+    const nlohmann::json& v = r["validation"];
+    out << "," << v["identical"] << "," << (v.contains("psnr") ? v["psnr"].dump() : "") << ","
+        << (v.contains("differing_pixels") ? v["differing_pixels"].dump() : "0") << ","
+        << v["flagged"] << "\n";
+  }
+  return out.str();
+}
+
+std::string markdown_report(const nlohmann::json& results) {
+  const nlohmann::json& summary = results["summary"];
+  std::ostringstream out;
+  out << "Medians over " << results["settings"]["repeats"] << " repeats; clrt "
+      << results["clrt"].get<std::string>() << ".\n\n";
+  out << "| scene | device | variant | Mrays/s | Msamples/s | render s | command s | device busy "
+         "| peak MiB | runs | flagged |\n|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+  for (const nlohmann::json& s : summary)
+    out << "| " << scene_name(s["scene"]) << " | " << s["device_spec"].get<std::string>() << " "
+        << s["device_name"].get<std::string>() << " | " << s["variant"].get<std::string>() << " | "
+        << fixed(s["mrays_per_second"], 2) << " | " << fixed(s["msamples_per_second"], 3) << " | "
+        << fixed(s["render_seconds"], 3) << " | " << fixed(s["process_seconds"], 3) << " | "
+        << fixed(100 * s["device_busy"].get<double>(), 0) << "% | " << fixed(s["peak_mib"], 0)
+        << " | " << s["runs"].get<int>() - s["failed"].get<int>() << "/" << s["runs"] << " | "
+        << s["flagged"] << " |\n";
+
+  std::set<std::string> kernels;
+  for (const nlohmann::json& s : summary)
+    for (const auto& [name, seconds] : s["kernels"].items()) kernels.insert(name);
+  out << "\nDevice seconds per kernel (medians):\n\n| scene | device | variant |";
+  for (const std::string& k : kernels) out << " " << k << " |";
+  out << "\n|---|---|---|";
+  for (std::size_t k = 0; k < kernels.size(); ++k) out << "---:|";
+  out << "\n";
+  for (const nlohmann::json& s : summary) {
+    out << "| " << scene_name(s["scene"]) << " | " << s["device_spec"].get<std::string>() << " | "
+        << s["variant"].get<std::string>() << " |";
+    for (const std::string& k : kernels)
+      out << " " << (s["kernels"].contains(k) ? fixed(s["kernels"][k], 4) : "") << " |";
+    out << "\n";
+  }
+
+  out << "\n| device | score (variant: " << (summary.empty() ? "" : summary[0]["variant"].get<std::string>())
+      << ") |\n|---|---:|\n";
+  for (const auto& [device, s] : results["scores"].items())
+    out << "| " << device << " " << s["name"].get<std::string>() << " | "
+        << (s["score"].is_null() ? std::string("(a scene failed)") : fixed(s["score"], 0)) << " |\n";
+
+  std::ostringstream flagged;
+  for (const nlohmann::json& r : results["runs"]) {
+    if (!succeeded(r)) {
+      flagged << "- failed: " << scene_name(r["scene"]) << " on " << r["device_spec"].get<std::string>()
+              << ", " << r["variant"].get<std::string>() << " (exit " << r["exit_code"] << ")\n";
+    } else if (r["validation"]["flagged"].get<bool>()) {
+      const nlohmann::json& v = r["validation"];
+      flagged << "- differs from the scene's first image: " << scene_name(r["scene"]) << " on "
+              << r["device_spec"].get<std::string>() << ", " << r["variant"].get<std::string>()
+              << ", repeat " << r["repeat"] << ": " << v["differing_pixels"]
+              << " pixels differ, PSNR " << (v["psnr"].is_null() ? "inf" : fixed(v["psnr"], 2))
+              << " dB\n";
+    }
+  }
+  out << "\n" << (flagged.str().empty() ? "Every image is identical to its scene's first.\n"
+                                        : "Flagged runs:\n\n" + flagged.str());
+  return out.str();
+}
+
+}  // namespace clrt::experiment

@@ -1,0 +1,25 @@
+// What an experiment's runs add up to: medians over repeats, a score per device, and the CSV
+// and Markdown forms of the results.
+#pragma once
+
+#include <nlohmann/json.hpp>
+#include <string>
+
+namespace clrt::experiment {
+
+// One entry per (scene, device, variant) that ran, in run order: the medians over its repeats
+// of Mrays/s, Msamples/s, render and process seconds, device busy share, peak MiB, and of each
+// kernel's device seconds; "runs", "failed" and "flagged" counts.
+nlohmann::json summarize(const nlohmann::json& runs);
+
+// The score of each device: 100 x the geometric mean over the experiment's scenes of the median
+// Mrays/s of its first variant (see README "Experiments"). Devices with a failed scene get none.
+nlohmann::json device_scores(const nlohmann::json& summary);
+
+// Every run, one line each, with a header line.
+std::string runs_csv(const nlohmann::json& runs);
+
+// The summary, the per-kernel breakdown, the scores and the flagged runs as Markdown tables.
+std::string markdown_report(const nlohmann::json& results);
+
+}  // namespace clrt::experiment
