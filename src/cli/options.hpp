@@ -4,6 +4,7 @@
 #include <optional>
 #include <string>
 
+#include "image/image.hpp"
 #include "render/render_options.hpp"
 
 namespace clrt {
@@ -13,6 +14,8 @@ enum class StatsFormat { None, Text, Json };
 struct CliOptions {
   std::string scene;
   std::string outfile;  // empty: the scene's name with .png, in the current directory
+  std::optional<ImageFormat> format;    // --format: the output's format, else its extension
+  ExrPixel exr_pixel = ExrPixel::Half;  // --exr-pixel
   std::optional<int> width, height, samples, max_depth;
   std::optional<RenderMode> mode;
   std::uint32_t seed = 0;
@@ -35,7 +38,7 @@ ParseResult parse_command_line(int argc, char** argv);
 // The scene's settings overridden by whatever the command line gave.
 RenderOptions resolve_render_options(const CliOptions& cli, const Scene& scene);
 
-// The output path: --outfile, or SCENE's stem + ".png".
+// The output path: --outfile, or SCENE's stem + "." + the --format name (default png).
 std::string output_path(const CliOptions& cli);
 
 }  // namespace clrt
