@@ -12,7 +12,11 @@ namespace clrt::image_detail {
 
 class MemoryOStream final : public Imf::OStream {
  public:
-  MemoryOStream() : Imf::OStream("memory") {}
+  // `expected_bytes` is reserved up front: untouched capacity costs no memory, and the bytes
+  // are never copied to a larger buffer as they grow.
+  explicit MemoryOStream(std::size_t expected_bytes) : Imf::OStream("memory") {
+    bytes_.reserve(expected_bytes);
+  }
   void write(const char c[], int n) override;
   std::uint64_t tellp() override { return position_; }
   void seekp(std::uint64_t position) override { position_ = position; }

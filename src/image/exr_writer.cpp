@@ -59,7 +59,12 @@ void encode_exr(const FloatImage& image, ExrPixel pixel, ByteSink& sink) {
   Imf::Header header(window(0, 0, placement.full_width, placement.full_height), data_window);
   const Imf::PixelType type = pixel == ExrPixel::Half ? Imf::HALF : Imf::FLOAT;
   for (const char* name : kChannels) header.channels().insert(name, Imf::Channel(type));
-  MemoryOStream stream;
+  // OpenEXR stores a block raw when ZIP would not shrink it, so the file is at most the raw
+  // samples, 16 bytes a block (its offset, row and size) and the header.
+  const std::size_t raw = 3 * static_cast<std::size_t>(image.width) *
+                          static_cast<std::size_t>(image.height) * (type == Imf::HALF ? 2 : 4);
+  const std::size_t blocks = static_cast<std::size_t>(image.height / kStripRows + 1);
+  MemoryOStream stream(raw + 16 * blocks + (std::size_t{1} << 16));
   try {
     // The file's destructor writes the offset table; in memory that cannot fail.
     Imf::OutputFile file(stream, header);

@@ -4,7 +4,7 @@
 
 #include "image/image.hpp"
 #include "image/image_info.hpp"
-#include "run_img_tool.hpp"
+#include "run_tool.hpp"
 
 using clrt::FloatImage;
 using clrt::Rgba8Image;

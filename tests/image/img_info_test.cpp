@@ -3,7 +3,7 @@
 #include <string>
 
 #include "image/image.hpp"
-#include "run_img_tool.hpp"
+#include "run_tool.hpp"
 
 using clrt::FloatImage;
 using clrt::Rgba8Image;

@@ -1,4 +1,4 @@
-// Runs the built clrt-img through the shell, for its end-to-end tests.
+// Runs the built executables through the shell, for their end-to-end tests.
 #pragma once
 
 #include <sys/wait.h>
@@ -20,15 +20,23 @@ struct ToolResult {
 
 inline std::string quoted(const std::string& path) { return "'" + path + "'"; }
 
-// clrt-img with `args` (already shell-quoted where needed); both streams go to files in `dir`.
-inline ToolResult run_img(const ScratchDir& dir, const std::string& args) {
+// `executable` with `args` (already shell-quoted where needed); both streams go to files in
+// `dir`.
+inline ToolResult run_tool(const ScratchDir& dir, const std::string& executable,
+                           const std::string& args) {
   const std::string out_path = dir.file("stdout.bin"), err_path = dir.file("stderr.txt");
   const std::string command =
-      "'" CLRT_IMG "' " + args + " >" + quoted(out_path) + " 2>" + quoted(err_path);
+      quoted(executable) + " " + args + " >" + quoted(out_path) + " 2>" + quoted(err_path);
   const int raw = std::system(command.c_str());
   REQUIRE(WIFEXITED(raw));
   const Bytes err = read_bytes(err_path);
   return {WEXITSTATUS(raw), read_bytes(out_path), std::string(err.begin(), err.end())};
 }
+
+#ifdef CLRT_IMG
+inline ToolResult run_img(const ScratchDir& dir, const std::string& args) {
+  return run_tool(dir, CLRT_IMG, args);
+}
+#endif
 
 }  // namespace clrt::test
