@@ -8,6 +8,10 @@
 
 namespace clrt::image_detail {
 
+// What every format's info holds: one frame, no placement, no details yet.
+ImageInfo basic_info(ImageFormat format, int width, int height, std::string channels,
+                     std::string samples);
+
 ImageInfo fsf_info(const std::string& path);
 ImageInfo png_info(const std::string& path);
 ImageInfo ppm_info(const std::string& path);

@@ -114,20 +114,18 @@ FloatImage read_exr(const std::string& path) {
 ImageInfo image_detail::exr_info(const std::string& path) {
   return read_exr_file(path, [](Imf::InputFile& file, const ExrLayout& layout) {
     const Imf::Header& header = file.header();
-    ImageInfo info;
-    info.format = ImageFormat::Exr;
-    info.width = layout.width;
-    info.height = layout.height;
+    std::string names;
     std::vector<Imf::PixelType> read_types;
     for (auto channel = header.channels().begin(); channel != header.channels().end();
          ++channel) {
-      info.channels += (info.channels.empty() ? "" : ", ") + std::string(channel.name());
+      names += (names.empty() ? "" : ", ") + std::string(channel.name());
       if (std::find(layout.read.begin(), layout.read.end(), channel.name()) != layout.read.end())
         read_types.push_back(channel.channel().type);
     }
     const bool uniform = std::all_of(read_types.begin(), read_types.end(),
                                      [&](Imf::PixelType t) { return t == read_types.front(); });
-    info.samples = uniform ? type_name(read_types.front()) : "mixed";
+    ImageInfo info = image_detail::basic_info(ImageFormat::Exr, layout.width, layout.height, names,
+                                              uniform ? type_name(read_types.front()) : "mixed");
     info.float32 = std::any_of(read_types.begin(), read_types.end(),
                                [](Imf::PixelType t) { return t != Imf::HALF; });
     info.placement = layout.placement;

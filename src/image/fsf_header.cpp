@@ -98,13 +98,9 @@ FsfHeader read_fsf_header(const std::string& path) {
 
 ImageInfo image_detail::fsf_info(const std::string& path) {
   const FsfHeader header = read_fsf_header(path);
-  ImageInfo info;
-  info.format = ImageFormat::Fsf;
-  info.width = static_cast<int>(header.width);
-  info.height = static_cast<int>(header.height);
+  ImageInfo info = basic_info(ImageFormat::Fsf, static_cast<int>(header.width),
+                              static_cast<int>(header.height), "RGBA", "8-bit");
   info.frames = header.frames;
-  info.channels = "RGBA";
-  info.samples = "8-bit";
   info.details = {{"byte order", header.big_endian ? "big-endian" : "little-endian"},
                   {"bytes", std::to_string(fsf_file_size(header))}};
   return info;

@@ -76,12 +76,8 @@ ImageInfo image_detail::pfm_info(const std::string& path) {
   const std::vector<std::uint8_t> bytes = read_file_bytes(path);
   NetpbmCursor cursor(bytes, "PFM", path);
   const PfmHeader header = read_header(cursor);
-  ImageInfo info;
-  info.format = ImageFormat::Pfm;
-  info.width = header.width;
-  info.height = header.height;
-  info.channels = header.channels == 3 ? "RGB" : "grey";
-  info.samples = "32-bit float";
+  ImageInfo info = basic_info(ImageFormat::Pfm, header.width, header.height,
+                              header.channels == 3 ? "RGB" : "grey", "32-bit float");
   info.float32 = true;
   info.details = {{"byte order", header.scale < 0.0f ? "little-endian" : "big-endian"},
                   {"scale", header.scale_text}};

@@ -106,13 +106,10 @@ class PngDecoder {
   int height() const { return static_cast<int>(height_); }
 
   ImageInfo info() const {
-    ImageInfo info;
-    info.format = ImageFormat::Png;
-    info.width = width();
-    info.height = height();
-    info.channels = colour_type_name(colour_type_, valid_ & PNG_INFO_tRNS);
-    info.samples = std::to_string(bit_depth_) + "-bit" +
-                   (colour_type_ == PNG_COLOR_TYPE_PALETTE ? " indices" : "");
+    ImageInfo info = image_detail::basic_info(
+        ImageFormat::Png, width(), height(), colour_type_name(colour_type_, valid_ & PNG_INFO_tRNS),
+        std::to_string(bit_depth_) + "-bit" +
+            (colour_type_ == PNG_COLOR_TYPE_PALETTE ? " indices" : ""));
     info.placement = placement_;
     info.details = {{"interlace", interlace_ == PNG_INTERLACE_NONE ? "none" : "Adam7"},
                     {"colour space", colour_space()}};

@@ -77,12 +77,8 @@ ImageInfo image_detail::ppm_info(const std::string& path) {
   const std::vector<std::uint8_t> bytes = read_file_bytes(path);
   NetpbmCursor cursor(bytes, "PPM", path);
   const PpmHeader header = read_header(cursor);
-  ImageInfo info;
-  info.format = ImageFormat::Ppm;
-  info.width = header.width;
-  info.height = header.height;
-  info.channels = "RGB";
-  info.samples = header.maxval > 255 ? "16-bit" : "8-bit";
+  ImageInfo info = basic_info(ImageFormat::Ppm, header.width, header.height, "RGB",
+                              header.maxval > 255 ? "16-bit" : "8-bit");
   info.details = {{"encoding", header.binary ? "binary (P6)" : "plain text (P3)"},
                   {"maxval", std::to_string(header.maxval)}};
   return info;

@@ -44,6 +44,17 @@ ImageInfo read_image_info(const std::string& path) {
   return image_detail::exr_info(path);
 }
 
+ImageInfo image_detail::basic_info(ImageFormat format, int width, int height,
+                                  std::string channels, std::string samples) {
+  ImageInfo info;
+  info.format = format;
+  info.width = width;
+  info.height = height;
+  info.channels = std::move(channels);
+  info.samples = std::move(samples);
+  return info;
+}
+
 bool records_placement(ImageFormat format) {
   return format == ImageFormat::Png || format == ImageFormat::Exr;
 }

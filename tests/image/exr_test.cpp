@@ -29,6 +29,13 @@ bool same_bits(const std::vector<float>& a, const std::vector<float>& b) {
   return a.size() == b.size() && std::memcmp(a.data(), b.data(), 4 * a.size()) == 0;
 }
 
+// What info says of the samples of the EXR at `path`.
+void check_samples(const std::string& path, const std::string& samples, bool float32) {
+  const clrt::ImageInfo info = clrt::read_image_info(path);
+  CHECK(info.samples == samples);
+  CHECK(info.float32 == float32);
+}
+
 // A one-channel file named `channel` over `data` (inclusive corners) inside `display`.
 void write_one_channel(const std::string& path, const char* channel, Imath::Box2i display,
                        Imath::Box2i data, const std::vector<float>& values) {
@@ -60,9 +67,7 @@ TEST_CASE("EXR is half by default: each float rounds once, to the nearest half, 
   CHECK_FALSE(back.placement);
   CHECK(same_bits(back.rgb, {0.0999755859375f, 0.333251953125f, 1000.5f, kInf, -2.0f, 0.0f,
                              0.0f, 1.0f, 1.001953125f}));
-  const clrt::ImageInfo info = clrt::read_image_info(path);
-  CHECK(info.samples == "16-bit float (half)");
-  CHECK_FALSE(info.float32);
+  check_samples(path, "16-bit float (half)", false);
 }
 
 TEST_CASE("EXR with --exr-pixel float keeps every float's bits", "[image][exr]") {
@@ -72,9 +77,7 @@ TEST_CASE("EXR with --exr-pixel float keeps every float's bits", "[image][exr]")
                                 9.0f, 1e-7f, 2e7f, -1.0f}};
   clrt::write_image(path, image, {clrt::ExrPixel::Float});
   CHECK(same_bits(clrt::read_exr(path).rgb, image.rgb));
-  const clrt::ImageInfo info = clrt::read_image_info(path);
-  CHECK(info.samples == "32-bit float");
-  CHECK(info.float32);
+  check_samples(path, "32-bit float", true);
 }
 
 TEST_CASE("every 8-bit value survives a half EXR and quantises back to itself", "[image][exr]") {

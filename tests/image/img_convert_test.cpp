@@ -25,6 +25,12 @@ const Rgba8Image kAnimation{3,
 const FloatImage kRender{2, 2, {0.1f, 0.5f, 1.5f, -0.2f, 0.25f, 0.75f, 1e-3f, 0.9f, 3.0f, 0.0f,
                                 0.2f, 0.4f}};
 
+// clrt-img convert IN OUT, then `extra` options.
+ToolResult convert(const ScratchDir& dir, const std::string& in, const std::string& out,
+                   const std::string& extra = "") {
+  return run_img(dir, "convert " + quoted(in) + " " + quoted(out) + extra);
+}
+
 }  // namespace
 
 TEST_CASE("convert: FSF -> PNG -> FSF gives back the same file", "[img][convert]") {
@@ -32,9 +38,9 @@ TEST_CASE("convert: FSF -> PNG -> FSF gives back the same file", "[img][convert]
   const std::string fsf = dir.file("in.fsf"), png = dir.file("mid.png"), back = dir.file("b.fsf");
   const Rgba8Image still{3, 2, {kAnimation.frames[0]}};
   clrt::write_image(fsf, still);
-  REQUIRE(run_img(dir, "convert " + quoted(fsf) + " " + quoted(png)).status == 0);
+  REQUIRE(convert(dir, fsf, png).status == 0);
   CHECK(clrt::read_png(png).frames == still.frames);
-  REQUIRE(run_img(dir, "convert " + quoted(png) + " " + quoted(back)).status == 0);
+  REQUIRE(convert(dir, png, back).status == 0);
   CHECK(read_bytes(back) == read_bytes(fsf));
 }
 
@@ -43,16 +49,16 @@ TEST_CASE("convert: PPM both ways, --frame picks a frame, FSF keeps every frame"
   ScratchDir dir;
   const std::string anim = dir.file("anim.fsf"), ppm = dir.file("f1.ppm"), fsf = dir.file("f1.fsf");
   clrt::write_image(anim, kAnimation);
-  REQUIRE(run_img(dir, "convert " + quoted(anim) + " " + quoted(ppm) + " --frame 1").status == 0);
-  REQUIRE(run_img(dir, "convert " + quoted(ppm) + " " + quoted(fsf)).status == 0);
+  REQUIRE(convert(dir, anim, ppm, " --frame 1").status == 0);
+  REQUIRE(convert(dir, ppm, fsf).status == 0);
   const Rgba8Image back = clrt::read_fsf(fsf);
   CHECK(back.width == 3);
   CHECK(back.frames == std::vector<Bytes>{kAnimation.frames[1]});
 
   const std::string copy = dir.file("copy.fsf");
-  REQUIRE(run_img(dir, "convert " + quoted(anim) + " " + quoted(copy)).status == 0);
+  REQUIRE(convert(dir, anim, copy).status == 0);
   CHECK(read_bytes(copy) == read_bytes(anim));
-  const ToolResult one = run_img(dir, "convert " + quoted(anim) + " " + quoted(dir.file("x.png")));
+  const ToolResult one = convert(dir, anim, dir.file("x.png"));
   CHECK(one.status == 1);
   CHECK_THAT(one.err, Contains("holds 2 frames: pick one with --frame N"));
 }
@@ -63,26 +69,25 @@ TEST_CASE("convert: PFM and EXR are read; float to 8-bit quantises as clrt does"
   const std::string pfm = dir.file("r.pfm"), png = dir.file("r.png"), direct = dir.file("d.png");
   clrt::write_image(pfm, kRender);
   clrt::write_image(direct, kRender);
-  REQUIRE(run_img(dir, "convert " + quoted(pfm) + " " + quoted(png)).status == 0);
+  REQUIRE(convert(dir, pfm, png).status == 0);
   CHECK(read_bytes(png) == read_bytes(direct));
 
   // PFM holds 32-bit floats, so EXR keeps them unless --exr-pixel half; PFM back is bit-exact.
   const std::string exr = dir.file("r.exr"), pfm_back = dir.file("back.pfm");
-  REQUIRE(run_img(dir, "convert " + quoted(pfm) + " " + quoted(exr)).status == 0);
+  REQUIRE(convert(dir, pfm, exr).status == 0);
   CHECK(clrt::read_exr(exr).rgb == kRender.rgb);
-  REQUIRE(run_img(dir, "convert " + quoted(exr) + " " + quoted(pfm_back)).status == 0);
+  REQUIRE(convert(dir, exr, pfm_back).status == 0);
   CHECK(read_bytes(pfm_back) == read_bytes(pfm));
   const std::string half = dir.file("h.exr"), half_direct = dir.file("hd.exr");
-  REQUIRE(run_img(dir, "convert " + quoted(pfm) + " " + quoted(half) + " --exr-pixel half")
-              .status == 0);
+  REQUIRE(convert(dir, pfm, half, " --exr-pixel half").status == 0);
   clrt::write_image(half_direct, kRender);
   CHECK(read_bytes(half) == read_bytes(half_direct));
 
   // 8-bit into EXR is half by default and loses nothing.
   const std::string eight_exr = dir.file("e.exr"), eight_png = dir.file("e.png");
-  REQUIRE(run_img(dir, "convert " + quoted(direct) + " " + quoted(eight_exr)).status == 0);
+  REQUIRE(convert(dir, direct, eight_exr).status == 0);
   CHECK(clrt::read_image_info(eight_exr).samples == "16-bit float (half)");
-  REQUIRE(run_img(dir, "convert " + quoted(eight_exr) + " " + quoted(eight_png)).status == 0);
+  REQUIRE(convert(dir, eight_exr, eight_png).status == 0);
   CHECK(read_bytes(eight_png) == read_bytes(direct));
 }
 
@@ -91,9 +96,9 @@ TEST_CASE("convert: a tile keeps its placement into PNG and EXR, with a warning 
   ScratchDir dir;
   const std::string png = dir.file("t.png"), exr = dir.file("t.exr"), ppm = dir.file("t.ppm");
   clrt::write_image(png, FloatImage(2, 2, kRender.rgb, clrt::Placement{3, 1, 8, 4}));
-  REQUIRE(run_img(dir, "convert " + quoted(png) + " " + quoted(exr)).status == 0);
+  REQUIRE(convert(dir, png, exr).status == 0);
   CHECK(clrt::read_exr(exr).placement == clrt::Placement{3, 1, 8, 4});
-  const ToolResult dropped = run_img(dir, "convert " + quoted(exr) + " " + quoted(ppm));
+  const ToolResult dropped = convert(dir, exr, ppm);
   CHECK(dropped.status == 0);
   CHECK_THAT(dropped.err, Contains("clrt-img: warning: ") && Contains("ppm cannot record"));
   CHECK(clrt::read_ppm(ppm).frames == clrt::read_png(png).frames);
@@ -123,16 +128,16 @@ TEST_CASE("convert fails with status 1 on bad files and 2 on bad usage", "[img][
                     out = dir.file("out.png");
   clrt::write_image(anim, kAnimation);
 
-  ToolResult result = run_img(dir, "convert " + quoted(missing) + " " + quoted(out));
+  ToolResult result = convert(dir, missing, out);
   CHECK(result.status == 1);
   CHECK_THAT(result.err, Contains("clrt-img: error: ") && Contains(missing));
-  result = run_img(dir, "convert " + quoted(anim) + " " + quoted(out) + " --frame 2");
+  result = convert(dir, anim, out, " --frame 2");
   CHECK(result.status == 1);
   CHECK_THAT(result.err, Contains("no frame 2"));
-  result = run_img(dir, "convert " + quoted(anim) + " " + quoted(dir.file("out.gif")));
+  result = convert(dir, anim, dir.file("out.gif"));
   CHECK(result.status == 2);
   CHECK_THAT(result.err, Contains("clrt-img: error: ") && Contains(".gif"));
-  result = run_img(dir, "convert " + quoted(anim) + " " + quoted(out) + " --format exr");
+  result = convert(dir, anim, out, " --format exr");
   CHECK(result.status == 2);
   CHECK_THAT(result.err, Contains("names png"));
 
