@@ -1,8 +1,10 @@
 #include "image/compare.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <type_traits>
 
 #include "image/image_checks.hpp"
 

@@ -1,7 +1,9 @@
 #include "image/stitch.hpp"
 
 #include <algorithm>
+#include <cstdint>
 #include <cstring>
+#include <utility>
 
 #include "image/image_checks.hpp"
 
@@ -32,7 +34,7 @@ Placement placement_of(const AnyImage& image) {
   return std::visit([](const auto& i) { return placement_of(i); }, image);
 }
 
-void check_tile(const Tile& tile) {
+void check_tile(const TileImage& tile) {
   std::visit([&](const auto& image) { image_detail::check_image(image, tile.name); }, tile.image);
   if (const auto* rgba = std::get_if<Rgba8Image>(&tile.image); rgba && rgba->frames.size() != 1)
     throw ImageError(tile.name + ": a tile has one frame, this image has " +
@@ -46,7 +48,7 @@ Rect rect_of(const AnyImage& image) {
   return {p.x, p.x + width, p.y, p.y + height};
 }
 
-void check_overlaps(const std::vector<Tile>& tiles, const std::vector<Rect>& rects) {
+void check_overlaps(const std::vector<TileImage>& tiles, const std::vector<Rect>& rects) {
   for (std::size_t i = 0; i < rects.size(); ++i)
     for (std::size_t j = i + 1; j < rects.size(); ++j) {
       const Rect shared{std::max(rects[i].x0, rects[j].x0), std::min(rects[i].x1, rects[j].x1),
@@ -104,11 +106,11 @@ void check_gaps(const std::vector<Rect>& rects, Frame frame) {
                    " frame's pixels uncovered: " + listed);
 }
 
-Frame check_tiling(const std::vector<Tile>& tiles, const std::vector<Rect>& rects) {
+Frame check_tiling(const std::vector<TileImage>& tiles, const std::vector<Rect>& rects) {
   if (tiles.empty()) throw ImageError("no tiles to stitch");
   const Placement first = placement_of(tiles.front().image);
   const Frame frame{first.full_width, first.full_height};
-  for (const Tile& tile : tiles) {
+  for (const TileImage& tile : tiles) {
     const Placement p = placement_of(tile.image);
     if (p.full_width != frame.width || p.full_height != frame.height)
       throw ImageError(tile.name + " belongs to a " + std::to_string(p.full_width) + "x" +
@@ -133,15 +135,15 @@ void copy_rows(const Sample* tile, const Rect& r, std::size_t channels, Sample* 
 
 }  // namespace
 
-AnyImage stitch_tiles(const std::vector<Tile>& tiles) {
+AnyImage stitch_tiles(const std::vector<TileImage>& tiles) {
   std::vector<Rect> rects;
-  for (const Tile& tile : tiles) {
+  for (const TileImage& tile : tiles) {
     check_tile(tile);
     rects.push_back(rect_of(tile.image));
   }
   const Frame frame = check_tiling(tiles, rects);
   const std::size_t pixels = static_cast<std::size_t>(frame.width) * frame.height;
-  const bool all_8bit = std::all_of(tiles.begin(), tiles.end(), [](const Tile& tile) {
+  const bool all_8bit = std::all_of(tiles.begin(), tiles.end(), [](const TileImage& tile) {
     return std::holds_alternative<Rgba8Image>(tile.image);
   });
   if (all_8bit) {

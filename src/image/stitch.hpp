@@ -8,7 +8,7 @@
 
 namespace clrt {
 
-struct Tile {
+struct TileImage {
   std::string name;  // for messages, usually the file's path
   AnyImage image;    // a one-frame image; no placement: a whole frame of its own size
 };
@@ -18,6 +18,6 @@ struct Tile {
 // ImageError, before copying any pixel, unless the tiles all belong to one full frame size and
 // cover each of its pixels exactly once; an overlap names both tiles and the pixels they share,
 // a gap the pixels no tile covers.
-AnyImage stitch_tiles(const std::vector<Tile>& tiles);
+AnyImage stitch_tiles(const std::vector<TileImage>& tiles);
 
 }  // namespace clrt

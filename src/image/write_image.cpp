@@ -29,14 +29,16 @@ void encode(ImageFormat format, const FloatImage& image, const WriteOptions& opt
 
 void encode(ImageFormat format, const Rgba8Image& image, const WriteOptions& options,
             ByteSink& sink) {
-  if (holds_floats(format)) return encode(format, to_float(image), options, sink);
   switch (format) {
     case ImageFormat::Fsf:
       return image_detail::encode_fsf(EightBitRows(image), sink);
     case ImageFormat::Png:
       return image_detail::encode_png(EightBitRows(image), sink);
-    default:
+    case ImageFormat::Ppm:
       return image_detail::encode_ppm(EightBitRows(image), sink);
+    case ImageFormat::Pfm:
+    case ImageFormat::Exr:
+      return encode(format, to_float(image), options, sink);
   }
 }
 

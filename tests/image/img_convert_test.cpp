@@ -63,7 +63,7 @@ TEST_CASE("convert: PPM both ways, --frame picks a frame, FSF keeps every frame"
   CHECK_THAT(one.err, Contains("holds 2 frames: pick one with --frame N"));
 }
 
-TEST_CASE("convert: PFM and EXR are read; float to 8-bit quantises as clrt does",
+TEST_CASE("convert: PFM and EXR are read, and float to 8-bit quantises as clrt does",
           "[img][convert]") {
   ScratchDir dir;
   const std::string pfm = dir.file("r.pfm"), png = dir.file("r.png"), direct = dir.file("d.png");

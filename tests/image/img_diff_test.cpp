@@ -44,7 +44,7 @@ TEST_CASE("diff of 8-bit images reports steps of 1/255 and exits 1 above the thr
   CHECK_THAT(result.out_text(), Contains("largest difference: 0 (of 255)\nPSNR: inf dB\n"));
 }
 
-TEST_CASE("diff of two float images compares floats; a float against 8-bit quantises",
+TEST_CASE("diff of two float images compares floats, a float against 8-bit quantises",
           "[img][diff]") {
   ScratchDir dir;
   const std::string a = dir.file("a.pfm"), b = dir.file("b.exr"), png = dir.file("a.png");

@@ -44,7 +44,7 @@ TEST_CASE("info prints each format's header, the frames and the placement", "[im
             "compression: ZIP\nstorage: scanlines\n");
 }
 
-TEST_CASE("info of a whole image says so; bad files fail with 1, bad names with 2", "[img][info]") {
+TEST_CASE("info of a whole image says so, bad files fail with 1, bad names with 2", "[img][info]") {
   ScratchDir dir;
   const std::string png = dir.file("whole.png");
   clrt::write_image(png, FloatImage(1, 1, {0, 0, 0}));

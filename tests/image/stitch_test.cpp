@@ -6,7 +6,7 @@ using clrt::AnyImage;
 using clrt::FloatImage;
 using clrt::Placement;
 using clrt::Rgba8Image;
-using clrt::Tile;
+using clrt::TileImage;
 using Catch::Matchers::Contains;
 using Catch::Matchers::Equals;
 
@@ -26,7 +26,7 @@ FloatImage full_image() {
 }
 
 // The tile [x0, x1) x [y0, y1) of full_image(), computed from sample() on its own.
-Tile tile(const std::string& name, int x0, int x1, int y0, int y1) {
+TileImage tile(const std::string& name, int x0, int x1, int y0, int y1) {
   std::vector<float> rgb;
   for (int y = y0; y < y1; ++y)
     for (int x = x0; x < x1; ++x)
@@ -34,7 +34,7 @@ Tile tile(const std::string& name, int x0, int x1, int y0, int y1) {
   return {name, FloatImage(x1 - x0, y1 - y0, rgb, Placement{x0, y0, kWidth, kHeight})};
 }
 
-std::string stitch_error(const std::vector<Tile>& tiles) {
+std::string stitch_error(const std::vector<TileImage>& tiles) {
   try {
     clrt::stitch_tiles(tiles);
   } catch (const clrt::ImageError& error) {
@@ -46,7 +46,7 @@ std::string stitch_error(const std::vector<Tile>& tiles) {
 }  // namespace
 
 TEST_CASE("tiles of uneven sizes, in any order, stitch to the full image", "[image][stitch]") {
-  const std::vector<Tile> tiles{tile("d", 3, 7, 2, 5), tile("a", 0, 3, 0, 2), tile("c", 0, 3, 2, 5),
+  const std::vector<TileImage> tiles{tile("d", 3, 7, 2, 5), tile("a", 0, 3, 0, 2), tile("c", 0, 3, 2, 5),
                                 tile("b", 3, 7, 0, 2)};
   const AnyImage stitched = clrt::stitch_tiles(tiles);
   REQUIRE(std::holds_alternative<FloatImage>(stitched));
@@ -56,14 +56,14 @@ TEST_CASE("tiles of uneven sizes, in any order, stitch to the full image", "[ima
   CHECK_FALSE(image.placement);
   CHECK(image.rgb == full_image().rgb);
 
-  const std::vector<Tile> rows{tile("r0", 0, 7, 0, 1), tile("r1", 0, 7, 1, 4), tile("r2", 0, 7, 4, 5)};
+  const std::vector<TileImage> rows{tile("r0", 0, 7, 0, 1), tile("r1", 0, 7, 1, 4), tile("r2", 0, 7, 4, 5)};
   CHECK(std::get<FloatImage>(clrt::stitch_tiles(rows)).rgb == full_image().rgb);
-  const std::vector<Tile> pixels{tile("p", 0, 1, 0, 1), tile("right", 1, 7, 0, 1),
+  const std::vector<TileImage> pixels{tile("p", 0, 1, 0, 1), tile("right", 1, 7, 0, 1),
                                  tile("below", 0, 7, 1, 5)};
   CHECK(std::get<FloatImage>(clrt::stitch_tiles(pixels)).rgb == full_image().rgb);
 }
 
-TEST_CASE("8-bit tiles stitch to 8-bit; a float tile among them makes the whole float",
+TEST_CASE("8-bit tiles stitch to 8-bit, and a float tile among them makes the whole float",
           "[image][stitch]") {
   const Rgba8Image left(1, 1, {{10, 20, 30, 40}}, Placement{0, 0, 2, 1});
   const Rgba8Image right(1, 1, {{50, 60, 70, 255}}, Placement{1, 0, 2, 1});
@@ -96,7 +96,7 @@ TEST_CASE("a gap names the pixels no tile covers", "[image][stitch]") {
 }
 
 TEST_CASE("tiles must share one full frame, have one frame each, and be given", "[image][stitch]") {
-  Tile other = tile("other", 3, 7, 0, 5);
+  TileImage other = tile("other", 3, 7, 0, 5);
   std::get<FloatImage>(other.image).placement = Placement{3, 0, 8, 5};
   CHECK_THAT(stitch_error({tile("a", 0, 3, 0, 5), other}),
              Equals("other belongs to a 8x5 frame, a to a 7x5 one"));

@@ -3,6 +3,8 @@
 #include <climits>
 #include <iostream>
 
+#include "image/image_info.hpp"
+
 namespace clrt::img {
 
 void add_format_option(CLI::App& command, std::optional<ImageFormat>& format) {
@@ -55,6 +57,11 @@ AnyImage pick_frame(AnyImage image, std::optional<int> frame, const std::string&
   if (frame && *frame != 0)
     throw ImageError(path + " has no frame " + std::to_string(*frame) + ": it holds one");
   return image;
+}
+
+bool holds_float32(const std::string& path, ImageFormat format) {
+  return format == ImageFormat::Pfm ||
+         (format == ImageFormat::Exr && read_image_info(path).float32);
 }
 
 ExrPixel exr_pixel_for(std::optional<ExrPixel> option, bool float32) {

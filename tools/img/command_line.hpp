@@ -43,6 +43,9 @@ ImageOutput output_argument(const std::string& path, std::optional<ImageFormat> 
 // One frame of an 8-bit image (`frame`, or the only one); a float image has just frame 0.
 AnyImage pick_frame(AnyImage image, std::optional<int> frame, const std::string& path);
 
+// Whether the file holds samples that half floats cannot (PFM always; EXR by its header).
+bool holds_float32(const std::string& path, ImageFormat format);
+
 // The EXR pixel type an output gets: --exr-pixel, else float when `float32` (an input held
 // 32-bit floats), else half.
 ExrPixel exr_pixel_for(std::optional<ExrPixel> option, bool float32);

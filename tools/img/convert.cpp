@@ -27,8 +27,8 @@ int convert(const ConvertOptions& options) {
   if (placement && !records_placement(output.format))
     warn(options.output + ": " + format_name(output.format) +
          " cannot record the placement; only the tile's pixels are written");
-  const bool float32 = holds_floats(input) && read_image_info(options.input).float32;
-  const WriteOptions write_options{exr_pixel_for(options.exr_pixel, float32)};
+  const WriteOptions write_options{
+      exr_pixel_for(options.exr_pixel, holds_float32(options.input, input))};
   std::visit([&](const auto& i) { write_image(output, i, write_options); }, image);
   return 0;
 }

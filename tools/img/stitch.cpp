@@ -19,17 +19,18 @@ struct StitchOptions {
 
 int stitch(const StitchOptions& options) {
   const ImageOutput output = output_argument(options.output, options.format);
+  std::vector<ImageFormat> formats;
   for (const std::string& path : options.tiles) {
-    const ImageFormat format = input_format(path);
-    if (!records_placement(format))
-      throw UsageError(path + ": " + format_name(format) +
+    formats.push_back(input_format(path));
+    if (!records_placement(formats.back()))
+      throw UsageError(path + ": " + format_name(formats.back()) +
                        " cannot record where a tile belongs; write tiles as PNG or EXR");
   }
-  std::vector<Tile> tiles;
+  std::vector<TileImage> tiles;
   bool float32 = false;
-  for (const std::string& path : options.tiles) {
-    tiles.push_back({path, read_any_image(path)});
-    float32 = float32 || (holds_floats(format_from_path(path)) && read_image_info(path).float32);
+  for (std::size_t i = 0; i < options.tiles.size(); ++i) {
+    tiles.push_back({options.tiles[i], read_any_image(options.tiles[i])});
+    float32 = float32 || holds_float32(options.tiles[i], formats[i]);
   }
   const WriteOptions write_options{exr_pixel_for(options.exr_pixel, float32)};
   std::visit([&](const auto& image) { write_image(output, image, write_options); },
