@@ -11,24 +11,12 @@ namespace {
 using image_detail::ByteSink;
 using image_detail::EightBitRows;
 
-void encode(ImageFormat format, const FloatImage& image, const WriteOptions& options,
-            ByteSink& sink) {
-  switch (format) {
-    case ImageFormat::Fsf:
-      return image_detail::encode_fsf(EightBitRows(image), sink);
-    case ImageFormat::Png:
-      return image_detail::encode_png(EightBitRows(image), sink);
-    case ImageFormat::Ppm:
-      return image_detail::encode_ppm(EightBitRows(image), sink);
-    case ImageFormat::Pfm:
-      return image_detail::encode_pfm(image, sink);
-    case ImageFormat::Exr:
-      return image_detail::encode_exr(image, options.exr_pixel, sink);
-  }
-}
+// The float encoders take an 8-bit image as value / 255.
+const FloatImage& as_float(const FloatImage& image) { return image; }
+FloatImage as_float(const Rgba8Image& image) { return to_float(image); }
 
-void encode(ImageFormat format, const Rgba8Image& image, const WriteOptions& options,
-            ByteSink& sink) {
+template <typename Image>
+void encode(ImageFormat format, const Image& image, const WriteOptions& options, ByteSink& sink) {
   switch (format) {
     case ImageFormat::Fsf:
       return image_detail::encode_fsf(EightBitRows(image), sink);
@@ -37,8 +25,9 @@ void encode(ImageFormat format, const Rgba8Image& image, const WriteOptions& opt
     case ImageFormat::Ppm:
       return image_detail::encode_ppm(EightBitRows(image), sink);
     case ImageFormat::Pfm:
+      return image_detail::encode_pfm(as_float(image), sink);
     case ImageFormat::Exr:
-      return encode(format, to_float(image), options, sink);
+      return image_detail::encode_exr(as_float(image), options.exr_pixel, sink);
   }
 }
 
