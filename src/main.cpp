@@ -24,11 +24,14 @@ double seconds_since(Clock::time_point start) {
 }
 
 // Fails before the render, not after it, when the image could not be written anyway.
-void check_output(const std::string& path) {
-  clrt::format_from_path(path);
+clrt::ImageOutput check_output(const clrt::CliOptions& cli) {
+  const clrt::ImageOutput output = clrt::resolve_output(clrt::output_path(cli), cli.format);
+  if (output.is_stdout()) return output;
+  const std::string& path = output.path;
   const std::filesystem::path dir = std::filesystem::path(path).parent_path();
   if (!dir.empty() && !std::filesystem::is_directory(dir))
     throw clrt::ImageError("cannot write " + path + ": " + dir.string() + " is not a directory");
+  return output;
 }
 
 int run(const clrt::CliOptions& cli) {
@@ -48,9 +51,9 @@ int run(const clrt::CliOptions& cli) {
     return 2;
   }
   stats.load_seconds = seconds_since(start);
-  const std::string out = clrt::output_path(cli);
+  clrt::ImageOutput out;
   try {
-    check_output(out);
+    out = check_output(cli);
   } catch (const clrt::ImageError& e) {
     std::cerr << "clrt: error: " << e.what() << "\n";
     return 2;
@@ -67,14 +70,16 @@ int run(const clrt::CliOptions& cli) {
 
   const clrt::FloatImage image = clrt::render(scene, setup, stats);
   const auto write_start = Clock::now();
-  clrt::write_image(out, image);
+  clrt::write_image(out, image, {cli.exr_pixel});
   stats.write_seconds = seconds_since(write_start);
   stats.total_seconds = seconds_since(start);
   struct rusage usage {};
   getrusage(RUSAGE_SELF, &usage);
   stats.peak_host_bytes = static_cast<std::uint64_t>(usage.ru_maxrss) * 1024;
-  if (cli.stats == clrt::StatsFormat::Text) std::cout << stats.to_text();
-  if (cli.stats == clrt::StatsFormat::Json) std::cout << stats.to_json().dump(2) << "\n";
+  // Standard output may carry the image itself.
+  std::ostream& stats_out = out.is_stdout() ? std::cerr : std::cout;
+  if (cli.stats == clrt::StatsFormat::Text) stats_out << stats.to_text();
+  if (cli.stats == clrt::StatsFormat::Json) stats_out << stats.to_json().dump(2) << "\n";
   return 0;
 }
 

@@ -34,8 +34,19 @@ ParseResult parse_command_line(int argc, char** argv) {
   app.set_version_flag("--version", std::string(clrt_version_string()));
   app.add_option("scene", o.scene, "the .ray scene to render");
   app.add_option("-o,--outfile", o.outfile,
-                 "output image; the extension picks the format: .png .ppm .fsf .pfm "
-                 "(default: SCENE's name with .png)");
+                 "output image; the extension picks the format: .png .ppm .fsf .pfm .exr; "
+                 "- writes to standard output (needs --format) (default: SCENE's name with .png)");
+  app.add_option_function<std::string>(
+         "--format", [&](const std::string& name) { o.format = format_from_name(name); },
+         "the output's format, whatever its extension: png ppm fsf pfm exr")
+      ->check(CLI::IsMember(format_names(), CLI::ignore_case));
+  app.add_option_function<std::string>(
+         "--exr-pixel",
+         [&](const std::string& pixel) {
+           o.exr_pixel = CLI::detail::to_lower(pixel) == "float" ? ExrPixel::Float : ExrPixel::Half;
+         },
+         "EXR channels: half (default) or float")
+      ->check(CLI::IsMember({"half", "float"}, CLI::ignore_case));
   app.add_option_function<std::string>(
       "--resolution", [&](const std::string& s) {
         const std::string error = parse_resolution(s, o);
@@ -97,6 +108,8 @@ ParseResult parse_command_line(int argc, char** argv) {
     app.parse(args);
     if (app.count("--stats")) o.stats = stats == "json" ? StatsFormat::Json : StatsFormat::Text;
     if (o.scene.empty() && !o.list_devices) throw CLI::RequiredError("scene");
+    if (o.outfile == kStdoutPath && !o.format)
+      throw CLI::ValidationError("-o -", "standard output needs --format png|ppm|pfm|fsf|exr");
   } catch (const CLI::ParseError& e) {
     const int code = app.exit(e);
     result.exit_code = code == 0 ? 0 : 2;
@@ -121,7 +134,8 @@ RenderOptions resolve_render_options(const CliOptions& cli, const Scene& scene) 
 
 std::string output_path(const CliOptions& cli) {
   if (!cli.outfile.empty()) return cli.outfile;
-  return std::filesystem::path(cli.scene).stem().string() + ".png";
+  return std::filesystem::path(cli.scene).stem().string() + "." +
+         format_name(cli.format.value_or(ImageFormat::Png));
 }
 
 }  // namespace clrt

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "cli/region_options.hpp"
+#include "image/image.hpp"
 #include "render/render_options.hpp"
 
 namespace clrt {
@@ -14,6 +15,8 @@ enum class StatsFormat { None, Text, Json };
 struct CliOptions {
   std::string scene;
   std::string outfile;  // empty: the scene's name with .png, in the current directory
+  std::optional<ImageFormat> format;    // --format: the output's format, else its extension
+  ExrPixel exr_pixel = ExrPixel::Half;  // --exr-pixel
   std::optional<int> width, height, samples, max_depth;
   std::optional<RenderMode> mode;
   std::uint32_t seed = 0;
@@ -40,7 +43,7 @@ ParseResult parse_command_line(int argc, char** argv);
 // region that does not fit the image.
 RenderOptions resolve_render_options(const CliOptions& cli, const Scene& scene);
 
-// The output path: --outfile, or SCENE's stem + ".png".
+// The output path: --outfile, or SCENE's stem + "." + the --format name (default png).
 std::string output_path(const CliOptions& cli);
 
 }  // namespace clrt

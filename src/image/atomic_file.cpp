@@ -7,7 +7,7 @@
 #include <cerrno>
 #include <cstring>
 
-#include "image/image.hpp"
+#include "image/sink_error.hpp"
 
 namespace clrt::image_detail {
 namespace {
@@ -38,20 +38,15 @@ AtomicFile::AtomicFile(std::string path) : path_(std::move(path)) {
 
 AtomicFile::~AtomicFile() { discard(); }
 
-void AtomicFile::write(const void* data, std::size_t size) {
-  const auto* bytes = static_cast<const char*>(data);
-  while (size > 0) {
-    const ssize_t written = ::write(fd_, bytes, size);
-    if (written < 0) {
-      if (errno == EINTR) continue;
-      fail("cannot write temporary");
-    }
-    bytes += written;
-    size -= static_cast<std::size_t>(written);
+void AtomicFile::write_through(const void* data, std::size_t size) {
+  if (const int error = write_all(fd_, data, size)) {
+    errno = error;
+    fail("cannot write temporary");
   }
 }
 
-void AtomicFile::commit() {
+void AtomicFile::finish() {
+  flush();
   if (::fsync(fd_) != 0) fail("cannot flush temporary");
   const int fd = fd_;
   fd_ = -1;
@@ -64,7 +59,7 @@ void AtomicFile::commit() {
 void AtomicFile::fail(const char* step) {
   const int error = errno;  // before discard() or any allocation can change it
   discard();
-  throw ImageError("cannot write " + path_ + ": " + step + " " + temp_path_ + ": " +
+  throw SinkError("cannot write " + path_ + ": " + step + " " + temp_path_ + ": " +
                    std::strerror(error));
 }
 
@@ -73,12 +68,6 @@ void AtomicFile::discard() noexcept {
   fd_ = -1;
   if (temp_exists_) ::unlink(temp_path_.c_str());
   temp_exists_ = false;
-}
-
-void write_file_atomically(const std::string& path, const std::vector<std::uint8_t>& bytes) {
-  AtomicFile file(path);
-  file.write(bytes.data(), bytes.size());
-  file.commit();
 }
 
 }  // namespace clrt::image_detail

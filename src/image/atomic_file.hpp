@@ -2,25 +2,25 @@
 #pragma once
 
 #include <cstddef>
-#include <cstdint>
 #include <string>
-#include <vector>
+
+#include "image/byte_sink.hpp"
 
 namespace clrt::image_detail {
 
 // Writes go to a temporary beside the target (same directory, hence same file system, so the
-// final rename is atomic). commit() flushes it to disk and renames it over the target; any
-// failure, or destruction before commit(), removes the temporary and leaves the target as it
+// final rename is atomic). finish() flushes it to disk and renames it over the target; any
+// failure, or destruction before finish(), removes the temporary and leaves the target as it
 // was. Errors are ImageError naming the target path and the system's reason.
-class AtomicFile {
+class AtomicFile final : public ByteSink {
  public:
   explicit AtomicFile(std::string path);
-  ~AtomicFile();
-  AtomicFile(const AtomicFile&) = delete;
-  AtomicFile& operator=(const AtomicFile&) = delete;
+  ~AtomicFile() override;
 
-  void write(const void* data, std::size_t size);
-  void commit();
+  void finish() override;
+
+ protected:
+  void write_through(const void* data, std::size_t size) override;
 
  private:
   // Reads errno, so call it straight after the failing system call.
@@ -31,8 +31,5 @@ class AtomicFile {
   int fd_ = -1;
   bool temp_exists_ = false;
 };
-
-// The whole of `bytes` as the file at `path`, through an AtomicFile.
-void write_file_atomically(const std::string& path, const std::vector<std::uint8_t>& bytes);
 
 }  // namespace clrt::image_detail

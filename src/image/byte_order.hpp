@@ -22,11 +22,23 @@ inline void append_u32_le(std::vector<std::uint8_t>& out, std::uint32_t value) {
     out.push_back(static_cast<std::uint8_t>(value >> shift));
 }
 
-inline void append_f32_le(std::vector<std::uint8_t>& out, float value) {
+// Shifts, not memcpy, so the order is the same on every host; compilers make it one store on a
+// little-endian one.
+inline void store_u32_le(std::uint8_t* out, std::uint32_t value) {
+  for (int i = 0; i < 4; ++i) out[i] = static_cast<std::uint8_t>(value >> (8 * i));
+}
+
+inline std::uint32_t float_bits(float value) {
   static_assert(sizeof(float) == sizeof(std::uint32_t), "PFM needs 32-bit IEEE floats");
   std::uint32_t bits;
   std::memcpy(&bits, &value, sizeof bits);
-  append_u32_le(out, bits);
+  return bits;
+}
+
+inline float float_from_bits(std::uint32_t bits) {
+  float value;
+  std::memcpy(&value, &bits, sizeof value);
+  return value;
 }
 
 }  // namespace clrt::image_detail

@@ -1,20 +1,17 @@
-// The writers behind write_image. Each takes an image check_image has accepted.
+// The writers behind write_image, each streaming into a ByteSink. Each takes an image
+// check_image has accepted.
 #pragma once
 
-#include <cstdint>
-#include <string>
-#include <vector>
-
+#include "image/byte_sink.hpp"
+#include "image/eight_bit_rows.hpp"
 #include "image/image.hpp"
 
 namespace clrt::image_detail {
 
-// All frames, streamed straight into an AtomicFile (an animation may be large).
-void write_fsf(const std::string& path, const Rgba8Image& image);
-
-// Frame 0 only, as whole files in memory.
-std::vector<std::uint8_t> encode_png(const Rgba8Image& image);
-std::vector<std::uint8_t> encode_ppm(const Rgba8Image& image);
-std::vector<std::uint8_t> encode_pfm(const FloatImage& image);
+void encode_fsf(const EightBitRows& rows, ByteSink& sink);  // every frame
+void encode_png(const EightBitRows& rows, ByteSink& sink);  // frame 0, and the placement
+void encode_ppm(const EightBitRows& rows, ByteSink& sink);  // frame 0
+void encode_pfm(const FloatImage& image, ByteSink& sink);
+void encode_exr(const FloatImage& image, ExrPixel pixel, ByteSink& sink);  // and the placement
 
 }  // namespace clrt::image_detail

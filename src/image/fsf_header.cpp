@@ -3,6 +3,7 @@
 
 #include "image/byte_order.hpp"
 #include "image/checked_size.hpp"
+#include "image/decoders.hpp"
 #include "image/fsf_layout.hpp"
 
 namespace clrt {
@@ -79,13 +80,6 @@ std::uint64_t fsf_file_size(const FsfHeader& header) {
   return *bytes;
 }
 
-std::string fsf_summary(const FsfHeader& header) {
-  return "width: " + std::to_string(header.width) + "\nheight: " + std::to_string(header.height) +
-         "\nframes: " + std::to_string(header.frames) +
-         "\nbyte order: " + (header.big_endian ? "big-endian" : "little-endian") +
-         "\nbytes: " + std::to_string(fsf_file_size(header)) + "\n";
-}
-
 FsfHeader image_detail::read_checked_fsf_header(InputFile& file) {
   if (file.size() < kFsfHeaderBytes)
     throw ImageError(file.path() + ": not an FSF file: " + std::to_string(file.size()) +
@@ -100,6 +94,16 @@ FsfHeader image_detail::read_checked_fsf_header(InputFile& file) {
 FsfHeader read_fsf_header(const std::string& path) {
   image_detail::InputFile file(path);
   return image_detail::read_checked_fsf_header(file);
+}
+
+ImageInfo image_detail::fsf_info(const std::string& path) {
+  const FsfHeader header = read_fsf_header(path);
+  ImageInfo info = basic_info(ImageFormat::Fsf, static_cast<int>(header.width),
+                              static_cast<int>(header.height), "RGBA", "8-bit");
+  info.frames = header.frames;
+  info.details = {{"byte order", header.big_endian ? "big-endian" : "little-endian"},
+                  {"bytes", std::to_string(fsf_file_size(header))}};
+  return info;
 }
 
 }  // namespace clrt

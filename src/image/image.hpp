@@ -2,22 +2,50 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <stdexcept>
 #include <string>
+#include <variant>
 #include <vector>
 
 namespace clrt {
 
-// The renderer's output: linear RGB, unclamped, row 0 at the top.
+// Where an image lies in a larger frame: its top-left pixel is (x, y) of a full_width x
+// full_height frame. A farm renders a frame as such tiles and stitches them (docs/images.md).
+struct Placement {
+  int x = 0, y = 0;
+  int full_width = 0, full_height = 0;
+  bool operator==(const Placement& other) const {
+    return x == other.x && y == other.y && full_width == other.full_width &&
+           full_height == other.full_height;
+  }
+  bool operator!=(const Placement& other) const { return !(*this == other); }
+};
+
+// The renderer's output: linear RGB, unclamped, row 0 at the top. No placement: the image is
+// the whole frame.
 struct FloatImage {
+  FloatImage() = default;
+  // The constructors keep the many whole-image call sites short.
+  FloatImage(int width_, int height_, std::vector<float> rgb_,
+             std::optional<Placement> placement_ = std::nullopt)
+      : width(width_), height(height_), rgb(std::move(rgb_)), placement(placement_) {}
+
   int width = 0, height = 0;
   std::vector<float> rgb;  // 3 * width * height
+  std::optional<Placement> placement;
 };
 
 // 8-bit RGBA, row 0 at the top; one entry per frame (FSF can hold an animation).
 struct Rgba8Image {
+  Rgba8Image() = default;
+  Rgba8Image(int width_, int height_, std::vector<std::vector<std::uint8_t>> frames_,
+             std::optional<Placement> placement_ = std::nullopt)
+      : width(width_), height(height_), frames(std::move(frames_)), placement(placement_) {}
+
   int width = 0, height = 0;
   std::vector<std::vector<std::uint8_t>> frames;  // each 4 * width * height
+  std::optional<Placement> placement;
 };
 
 class ImageError : public std::runtime_error {
@@ -28,17 +56,62 @@ class ImageError : public std::runtime_error {
 // The contract's quantisation: clamp each channel to [0, 1], scale by 255, round to nearest;
 // alpha 255.
 Rgba8Image quantize(const FloatImage& image);
+// Frame `frame` as value / 255 per channel (exact in float, and quantize() gives the bytes back);
+// alpha is dropped.
+FloatImage to_float(const Rgba8Image& image, std::size_t frame = 0);
 
-enum class ImageFormat { Fsf, Png, Ppm, Pfm };
+enum class ImageFormat { Fsf, Png, Ppm, Pfm, Exr };
 
-// By the path's extension (case-insensitive: .fsf .png .ppm .pfm); throws ImageError otherwise.
+// By the path's extension (case-insensitive: .fsf .png .ppm .pfm .exr); throws ImageError
+// otherwise.
 ImageFormat format_from_path(const std::string& path);
+// The same without the error: nothing for a path whose extension names no format.
+std::optional<ImageFormat> format_of_extension(const std::string& path);
+// By a name as --format takes it: fsf, png, ppm, pfm, exr (case-insensitive); ImageError otherwise.
+ImageFormat format_from_name(const std::string& name);
+std::string format_name(ImageFormat format);   // "png"
+std::vector<std::string> format_names();       // every name format_from_name takes
+bool holds_floats(ImageFormat format);          // PFM and EXR; the others store 8-bit samples
 
-// Writes `image` in the format its extension names. PFM keeps the unclamped floats; the others
-// quantise. The file is written to a temporary beside `path` and renamed into place, so a
-// failure (thrown as ImageError naming the path and the reason) leaves nothing behind.
-void write_image(const std::string& path, const FloatImage& image);
-void write_image(const std::string& path, const Rgba8Image& image);  // PNG/PPM take frame 0
+// OpenEXR channels: 16-bit half floats (the default: 3 significant decimal digits, a third of
+// float's size once compressed) or 32-bit floats (exactly what was rendered).
+enum class ExrPixel { Half, Float };
+
+struct WriteOptions {
+  ExrPixel exr_pixel = ExrPixel::Half;
+};
+
+// Writes `image` in the format its extension names. PFM and EXR keep the unclamped floats; the
+// others quantise. The file is written to a temporary beside `path` and renamed into place, so a
+// failure (thrown as ImageError naming the path and the reason) leaves nothing behind. PNG and
+// EXR record a placement; FSF, PPM and PFM cannot hold one and drop it.
+void write_image(const std::string& path, const FloatImage& image,
+                 const WriteOptions& options = {});
+void write_image(const std::string& path, const Rgba8Image& image,  // PNG/PPM/PFM/EXR: frame 0
+                 const WriteOptions& options = {});
+
+// An output named on a command line: a file, or "-" for standard output; the format given
+// explicitly or, for a file, by its extension.
+struct ImageOutput {
+  std::string path;
+  ImageFormat format = ImageFormat::Png;
+  bool is_stdout() const { return path == "-"; }
+};
+constexpr const char* kStdoutPath = "-";
+// Checks what can be checked before any work: "-" needs `format` and a standard output that is
+// not a terminal; a file's extension, when it names a format, must agree with `format`.
+ImageOutput resolve_output(const std::string& path, std::optional<ImageFormat> format);
+// A file as write_image(path) writes it; standard output through write_image_to_fd.
+void write_image(const ImageOutput& output, const FloatImage& image,
+                 const WriteOptions& options = {});
+void write_image(const ImageOutput& output, const Rgba8Image& image,
+                 const WriteOptions& options = {});
+// The whole encoded image to an open descriptor (standard output for `-o -`), the format given
+// explicitly. A pipe cannot be written atomically: on failure the reader may have received part.
+void write_image_to_fd(int fd, ImageFormat format, const FloatImage& image,
+                       const WriteOptions& options = {});
+void write_image_to_fd(int fd, ImageFormat format, const Rgba8Image& image,
+                       const WriteOptions& options = {});
 
 // FSF reader: either byte order (the magic 575 tells which); rejects a size that disagrees with
 // the header. Throws ImageError.
@@ -52,16 +125,22 @@ FsfHeader read_fsf_header(const std::string& path);
 // The size of the whole file the header describes (header included); ImageError if it does not
 // fit in 64 bits.
 std::uint64_t fsf_file_size(const FsfHeader& header);
-// One "key: value" line each for width, height, frames, byte order and bytes (clrt-fsfconv --info).
-std::string fsf_summary(const FsfHeader& header);
 
-// Readers for converting into FSF. Both give one frame of 8-bit RGBA, row 0 at the top.
-// PNG: any bit depth and colour type (16-bit samples are taken as sRGB-encoded, like 8-bit ones).
+// PNG: any bit depth and colour type, as 8-bit RGBA (16-bit samples rounded to 8 bits); samples
+// are taken as they are (no gamma or ICC conversion). The placement comes from clrt's text chunk.
 Rgba8Image read_png(const std::string& path);
 // PPM: binary P6 or plain P3, any maxval up to 65535 (scaled to 255, rounded); alpha 255.
 Rgba8Image read_ppm(const std::string& path);
-// By the path's extension: .fsf, .png or .ppm (case-insensitive); ImageError otherwise.
+// PFM: colour (PF) or grey (Pf, copied to R, G and B), either byte order, times |scale|.
+FloatImage read_pfm(const std::string& path);
+// OpenEXR: the R, G and B channels (or Y copied to all three) of the data window, as floats; the
+// data window's place in the display window is the placement.
+FloatImage read_exr(const std::string& path);
+// By the path's extension; 8-bit formats as they are, PFM and EXR quantised.
 Rgba8Image read_image(const std::string& path);
+// An image as its file stores it: 8-bit frames (FSF, PNG, PPM) or floats (PFM, EXR).
+using AnyImage = std::variant<Rgba8Image, FloatImage>;
+AnyImage read_any_image(const std::string& path);
 
 // A one-frame image holding frame `frame` (counted from 0) of `image`; ImageError if out of range.
 Rgba8Image select_frame(const Rgba8Image& image, int frame);

@@ -2,6 +2,8 @@
 
 #include <cstddef>
 
+#include "image/placement.hpp"
+
 namespace clrt::image_detail {
 namespace {
 
@@ -26,12 +28,14 @@ std::size_t pixel_count(int width, int height) {
 
 void check_image(const FloatImage& image, const std::string& context) {
   check_size(image.width, image.height, context);
+  if (image.placement) check_placement(*image.placement, image.width, image.height, context);
   check_length(image.rgb.size(), 3 * pixel_count(image.width, image.height), "the RGB array",
                context);
 }
 
 void check_image(const Rgba8Image& image, const std::string& context) {
   check_size(image.width, image.height, context);
+  if (image.placement) check_placement(*image.placement, image.width, image.height, context);
   if (image.frames.empty()) throw ImageError(context + ": the image has no frames");
   for (std::size_t frame = 0; frame < image.frames.size(); ++frame)
     check_length(image.frames[frame].size(), 4 * pixel_count(image.width, image.height),

@@ -1,5 +1,5 @@
 // Preconditions every writer and converter shares: a non-empty image whose pixel arrays match
-// its size.
+// its size, and a placement inside its frame.
 #pragma once
 
 #include <string>

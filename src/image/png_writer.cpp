@@ -1,56 +1,91 @@
-// PNG through libpng's simplified API: it encodes into memory and reports errors by return value,
-// so no longjmp crosses C++ frames; the bytes then go through the atomic writer.
+// PNG through libpng's full API (the simplified one cannot write text chunks): rows are
+// quantised one at a time and the encoded bytes stream into the sink as libpng produces them.
 #include <png.h>
 
-#include <algorithm>
-#include <cstring>
+#include <vector>
 
 #include "image/encoders.hpp"
+#include "image/placement.hpp"
+#include "image/png_errors.hpp"
 
 namespace clrt::image_detail {
 namespace {
 
-bool all_opaque(const std::vector<std::uint8_t>& rgba) {
-  for (std::size_t i = 3; i < rgba.size(); i += 4)
-    if (rgba[i] != 255) return false;
-  return true;
+struct PngOutput {
+  PngErrors errors;
+  ByteSink* sink;
+};
+
+void write_to_sink(png_structp png, png_bytep data, std::size_t size) {
+  auto* output = static_cast<PngOutput*>(png_get_io_ptr(png));
+  bool failed = false;
+  try {
+    output->sink->write(data, size);
+  } catch (...) {
+    output->errors.failure = std::current_exception();
+    failed = true;
+  }
+  if (failed) png_error(png, "the output failed");
 }
 
-std::vector<std::uint8_t> without_alpha(const std::vector<std::uint8_t>& rgba) {
-  std::vector<std::uint8_t> rgb;
-  rgb.reserve(rgba.size() / 4 * 3);
-  for (std::size_t i = 0; i < rgba.size(); i += 4)
-    rgb.insert(rgb.end(), rgba.begin() + i, rgba.begin() + i + 3);
-  return rgb;
-}
+void flush_nothing(png_structp) {}
+
+class PngWriteStructs {
+ public:
+  explicit PngWriteStructs(PngErrors& errors)
+      : png_(png_create_write_struct(PNG_LIBPNG_VER_STRING, &errors, png_record_error,
+                                     png_ignore_warning)),
+        info_(png_ ? png_create_info_struct(png_) : nullptr) {
+    if (!info_) throw ImageError("PNG encoding failed: libpng could not allocate its state");
+  }
+  ~PngWriteStructs() { png_destroy_write_struct(&png_, &info_); }
+  PngWriteStructs(const PngWriteStructs&) = delete;
+  PngWriteStructs& operator=(const PngWriteStructs&) = delete;
+
+  png_structp png() const { return png_; }
+  png_infop info() const { return info_; }
+
+ private:
+  png_structp png_;
+  png_infop info_;
+};
 
 }  // namespace
 
 // An opaque frame (everything clrt renders) is stored as RGB: a quarter smaller, same pixels.
-std::vector<std::uint8_t> encode_png(const Rgba8Image& image) {
-  const std::vector<std::uint8_t>& rgba = image.frames.front();
-  const bool opaque = all_opaque(rgba);
-  const std::vector<std::uint8_t> pixels = opaque ? without_alpha(rgba) : rgba;
+// The sRGB chunk says the samples are display values, as the contract's quantisation makes them.
+void encode_png(const EightBitRows& rows, ByteSink& sink) {
+  PngOutput output{{}, &sink};
+  const PngWriteStructs structs(output.errors);
+  png_structp png = structs.png();
+  png_infop info = structs.info();
+  const bool opaque = rows.opaque();
+  const auto placement = recorded_placement(rows.placement(), rows.width(), rows.height());
+  std::string placement_value =
+      placement ? placement_text(*placement, rows.width(), rows.height()) : "";
+  std::string key = kPngPlacementKey;
+  png_text text{};
+  text.compression = PNG_TEXT_COMPRESSION_NONE;
+  text.key = key.data();
+  text.text = placement_value.data();
+  text.text_length = placement_value.size();
+  std::vector<std::uint8_t> scratch(4 * static_cast<std::size_t>(rows.width()));
+  std::uint8_t* row = scratch.data();
 
-  png_image header;
-  std::memset(&header, 0, sizeof header);
-  header.version = PNG_IMAGE_VERSION;
-  header.width = static_cast<png_uint_32>(image.width);
-  header.height = static_cast<png_uint_32>(image.height);
-  header.format = opaque ? PNG_FORMAT_RGB : PNG_FORMAT_RGBA;
-
-  // The bound is exact enough to succeed at once; if libpng still needs more it says how much.
-  std::vector<std::uint8_t> png(PNG_IMAGE_PNG_SIZE_MAX(header));
-  for (int attempt = 0; attempt < 2; ++attempt) {
-    png_alloc_size_t size = png.size();
-    if (png_image_write_to_memory(&header, png.data(), &size, 0, pixels.data(), 0, nullptr)) {
-      png.resize(size);
-      return png;
-    }
-    if (size <= png.size()) break;
-    png.resize(size);
-  }
-  throw ImageError(std::string("PNG encoding failed: ") + header.message);
+  const bool ok = png_guarded(png, [&] {
+    png_set_write_fn(png, &output, write_to_sink, flush_nothing);
+    png_set_IHDR(png, info, static_cast<png_uint_32>(rows.width()),
+                 static_cast<png_uint_32>(rows.height()), 8,
+                 opaque ? PNG_COLOR_TYPE_RGB : PNG_COLOR_TYPE_RGBA, PNG_INTERLACE_NONE,
+                 PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+    png_set_sRGB(png, info, PNG_sRGB_INTENT_PERCEPTUAL);
+    if (placement) png_set_text(png, info, &text, 1);
+    png_write_info(png, info);
+    for (int y = 0; y < rows.height(); ++y)
+      png_write_row(png, opaque ? rows.rgb_row(0, y, row) : rows.rgba_row(0, y, row));
+    png_write_end(png, nullptr);
+  });
+  if (!ok) throw_png_failure(output.errors, "PNG encoding failed: ");
 }
 
 }  // namespace clrt::image_detail

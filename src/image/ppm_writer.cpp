@@ -1,19 +1,18 @@
 #include <string>
+#include <vector>
 
 #include "image/encoders.hpp"
 
 namespace clrt::image_detail {
 
 // Binary P6 with maxval 255; PPM has no alpha, so it is dropped.
-std::vector<std::uint8_t> encode_ppm(const Rgba8Image& image) {
+void encode_ppm(const EightBitRows& rows, ByteSink& sink) {
   const std::string header =
-      "P6\n" + std::to_string(image.width) + " " + std::to_string(image.height) + "\n255\n";
-  const std::vector<std::uint8_t>& rgba = image.frames.front();
-  std::vector<std::uint8_t> ppm(header.begin(), header.end());
-  ppm.reserve(header.size() + rgba.size() / 4 * 3);
-  for (std::size_t i = 0; i < rgba.size(); i += 4)
-    ppm.insert(ppm.end(), rgba.begin() + i, rgba.begin() + i + 3);
-  return ppm;
+      "P6\n" + std::to_string(rows.width()) + " " + std::to_string(rows.height()) + "\n255\n";
+  sink.write(header.data(), header.size());
+  std::vector<std::uint8_t> scratch(4 * static_cast<std::size_t>(rows.width()));
+  for (int y = 0; y < rows.height(); ++y)
+    sink.write(rows.rgb_row(0, y, scratch.data()), 3 * static_cast<std::size_t>(rows.width()));
 }
 
 }  // namespace clrt::image_detail

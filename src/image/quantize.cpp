@@ -1,36 +1,29 @@
-#include <cmath>
 #include <cstddef>
 #include <cstdint>
 
+#include "image/eight_bit_rows.hpp"
 #include "image/image.hpp"
 #include "image/image_checks.hpp"
 
 namespace clrt {
-namespace {
-
-// Written so that NaN fails the first test and becomes 0 (a black pixel rather than undefined
-// behaviour in the conversion); +inf saturates to 255 like any value above 1.
-std::uint8_t quantize_channel(float value) {
-  if (!(value > 0.0f)) return 0;
-  if (value >= 1.0f) return 255;
-  return static_cast<std::uint8_t>(std::lround(static_cast<double>(value) * 255.0));
-}
-
-}  // namespace
 
 Rgba8Image quantize(const FloatImage& image) {
   image_detail::check_image(image, "cannot quantize");
-  Rgba8Image out;
-  out.width = image.width;
-  out.height = image.height;
-  const std::size_t pixels = image.rgb.size() / 3;
-  std::vector<std::uint8_t> rgba(4 * pixels);
-  for (std::size_t i = 0; i < pixels; ++i) {
-    for (std::size_t c = 0; c < 3; ++c) rgba[4 * i + c] = quantize_channel(image.rgb[3 * i + c]);
-    rgba[4 * i + 3] = 255;
-  }
-  out.frames.push_back(std::move(rgba));
-  return out;
+  const image_detail::EightBitRows rows(image);
+  const std::size_t row_bytes = 4 * static_cast<std::size_t>(image.width);
+  std::vector<std::uint8_t> rgba(row_bytes * static_cast<std::size_t>(image.height));
+  for (int y = 0; y < image.height; ++y)
+    rows.rgba_row(0, y, rgba.data() + static_cast<std::size_t>(y) * row_bytes);
+  return Rgba8Image(image.width, image.height, {std::move(rgba)}, image.placement);
+}
+
+FloatImage to_float(const Rgba8Image& image, std::size_t frame) {
+  image_detail::check_image(image, "cannot convert to float");
+  const std::vector<std::uint8_t>& rgba = image.frames.at(frame);
+  std::vector<float> rgb(rgba.size() / 4 * 3);
+  for (std::size_t i = 0; i < rgb.size(); ++i)
+    rgb[i] = static_cast<float>(rgba[i + i / 3]) / 255.0f;
+  return FloatImage(image.width, image.height, std::move(rgb), image.placement);
 }
 
 }  // namespace clrt

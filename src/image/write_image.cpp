@@ -1,61 +1,117 @@
+#include <unistd.h>
+
 #include "image/atomic_file.hpp"
 #include "image/encoders.hpp"
 #include "image/image_checks.hpp"
+#include "image/sink_error.hpp"
 
 namespace clrt {
 namespace {
 
-using image_detail::encode_pfm;
-using image_detail::encode_png;
-using image_detail::encode_ppm;
+using image_detail::ByteSink;
+using image_detail::EightBitRows;
 
-// Bytes to value / 255, so an 8-bit image saved as PFM keeps its values exactly; alpha is dropped.
-FloatImage to_float(const Rgba8Image& image) {
-  FloatImage out;
-  out.width = image.width;
-  out.height = image.height;
-  const std::vector<std::uint8_t>& rgba = image.frames.front();
-  out.rgb.reserve(rgba.size() / 4 * 3);
-  for (std::size_t i = 0; i < rgba.size(); ++i)
-    if (i % 4 != 3) out.rgb.push_back(static_cast<float>(rgba[i]) / 255.0f);
-  return out;
+// The float encoders take an 8-bit image as value / 255.
+const FloatImage& as_float(const FloatImage& image) { return image; }
+FloatImage as_float(const Rgba8Image& image) { return to_float(image); }
+
+template <typename Image>
+void encode(ImageFormat format, const Image& image, const WriteOptions& options, ByteSink& sink) {
+  switch (format) {
+    case ImageFormat::Fsf:
+      return image_detail::encode_fsf(EightBitRows(image), sink);
+    case ImageFormat::Png:
+      return image_detail::encode_png(EightBitRows(image), sink);
+    case ImageFormat::Ppm:
+      return image_detail::encode_ppm(EightBitRows(image), sink);
+    case ImageFormat::Pfm:
+      return image_detail::encode_pfm(as_float(image), sink);
+    case ImageFormat::Exr:
+      return image_detail::encode_exr(as_float(image), options.exr_pixel, sink);
+  }
 }
 
-template <typename Encode, typename Image>
-void encode_and_write(const std::string& path, Encode encode, const Image& image) {
-  std::vector<std::uint8_t> bytes;
+// An encoder's error gets the output's name; a failing output's error already has it.
+template <typename Image>
+void encode_into(ByteSink& sink, const std::string& name, ImageFormat format, const Image& image,
+                 const WriteOptions& options) {
   try {
-    bytes = encode(image);
+    encode(format, image, options, sink);
+  } catch (const image_detail::SinkError&) {
+    throw;
   } catch (const ImageError& error) {
-    throw ImageError("cannot write " + path + ": " + error.what());
+    throw ImageError("cannot write " + name + ": " + error.what());
   }
-  image_detail::write_file_atomically(path, bytes);
+  sink.finish();
+}
+
+// Each checks the image before it touches the output.
+template <typename Image>
+void write_file(const std::string& path, ImageFormat format, const Image& image,
+                const WriteOptions& options) {
+  image_detail::check_image(image, "cannot write " + path);
+  image_detail::AtomicFile file(path);
+  encode_into(file, path, format, image, options);
+}
+
+template <typename Image>
+void write_fd(int fd, ImageFormat format, const Image& image, const WriteOptions& options) {
+  const std::string name =
+      fd == STDOUT_FILENO ? "standard output" : "file descriptor " + std::to_string(fd);
+  image_detail::check_image(image, "cannot write " + name);
+  image_detail::FdSink sink(fd, name);
+  encode_into(sink, name, format, image, options);
+}
+
+template <typename Image>
+void write_output(const ImageOutput& output, const Image& image, const WriteOptions& options) {
+  if (output.is_stdout())
+    write_fd(STDOUT_FILENO, output.format, image, options);
+  else
+    write_file(output.path, output.format, image, options);
 }
 
 }  // namespace
 
-void write_image(const std::string& path, const FloatImage& image) {
-  const ImageFormat format = format_from_path(path);
-  image_detail::check_image(image, "cannot write " + path);
-  if (format == ImageFormat::Pfm)
-    encode_and_write(path, encode_pfm, image);
-  else
-    write_image(path, quantize(image));
+void write_image(const std::string& path, const FloatImage& image, const WriteOptions& options) {
+  write_file(path, format_from_path(path), image, options);
 }
 
-void write_image(const std::string& path, const Rgba8Image& image) {
-  const ImageFormat format = format_from_path(path);
-  image_detail::check_image(image, "cannot write " + path);
-  switch (format) {
-    case ImageFormat::Fsf:
-      return image_detail::write_fsf(path, image);
-    case ImageFormat::Png:
-      return encode_and_write(path, encode_png, image);
-    case ImageFormat::Ppm:
-      return encode_and_write(path, encode_ppm, image);
-    case ImageFormat::Pfm:
-      return encode_and_write(path, encode_pfm, to_float(image));
+void write_image(const std::string& path, const Rgba8Image& image, const WriteOptions& options) {
+  write_file(path, format_from_path(path), image, options);
+}
+
+void write_image(const ImageOutput& output, const FloatImage& image, const WriteOptions& options) {
+  write_output(output, image, options);
+}
+
+void write_image(const ImageOutput& output, const Rgba8Image& image, const WriteOptions& options) {
+  write_output(output, image, options);
+}
+
+void write_image_to_fd(int fd, ImageFormat format, const FloatImage& image,
+                       const WriteOptions& options) {
+  write_fd(fd, format, image, options);
+}
+
+void write_image_to_fd(int fd, ImageFormat format, const Rgba8Image& image,
+                       const WriteOptions& options) {
+  write_fd(fd, format, image, options);
+}
+
+ImageOutput resolve_output(const std::string& path, std::optional<ImageFormat> format) {
+  if (path == kStdoutPath) {
+    if (!format) throw ImageError("writing to standard output needs the image format given");
+    if (::isatty(STDOUT_FILENO))
+      throw ImageError("standard output is a terminal; redirect it to a file or a pipe");
+    return {path, *format};
   }
+  if (!format) return {path, format_from_path(path)};
+  const std::optional<ImageFormat> named = format_of_extension(path);
+  if (named && *named != *format)
+    throw ImageError(path + ": the extension names " + format_name(*named) +
+                     " but the format asked for is " + format_name(*format));
+  return {path, *format};
 }
 
 }  // namespace clrt

@@ -2,6 +2,7 @@
 #include <string>
 
 #include "image/image.hpp"
+#include "image/image_info.hpp"
 #include "test_files.hpp"
 
 using clrt::ImageError;
@@ -139,19 +140,21 @@ TEST_CASE("FSF reader rejects absurd sizes without overflowing or allocating", "
   CHECK_THAT(read_error(path), Contains("too large"));
 }
 
-TEST_CASE("FSF header summary lists width, height, frames, byte order and bytes", "[image][fsf]") {
+TEST_CASE("FSF info lists size, frames, byte order and bytes", "[image][fsf]") {
   ScratchDir dir;
   const std::string path = dir.file("anim.fsf");
   clrt::write_image(path, Rgba8Image{3, 2, {Bytes(24, 7), Bytes(24, 8)}});
   const clrt::FsfHeader header = clrt::read_fsf_header(path);
   CHECK_FALSE(header.big_endian);
   CHECK(clrt::fsf_file_size(header) == 16 + 2 * 24);
-  CHECK(clrt::fsf_summary(header) ==
-        "width: 3\nheight: 2\nframes: 2\nbyte order: little-endian\nbytes: 64\n");
+  CHECK(clrt::info_text(clrt::read_image_info(path)) ==
+        "format: FSF\nwidth: 3\nheight: 2\nframes: 2\nchannels: RGBA\nsamples: 8-bit\n"
+        "placement: none (FSF cannot record one)\nbyte order: little-endian\nbytes: 64\n");
 
-  clrt::FsfHeader big{1, 1, 1, true};
-  CHECK(clrt::fsf_summary(big) ==
-        "width: 1\nheight: 1\nframes: 1\nbyte order: big-endian\nbytes: 20\n");
+  write_bytes(path, concat({{0x00, 0x00, 0x02, 0x3f, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1},
+                            {1, 2, 3, 4}}));
+  const clrt::ImageInfo big = clrt::read_image_info(path);
+  CHECK(big.details == decltype(big.details){{"byte order", "big-endian"}, {"bytes", "20"}});
   CHECK_THROWS_AS(clrt::fsf_file_size({0xffffffffu, 0xffffffffu, 0xffffffffu, false}), ImageError);
 }
 

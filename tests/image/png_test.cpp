@@ -1,7 +1,9 @@
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <string>
 
 #include "image/image.hpp"
+#include "image/image_info.hpp"
 #include "test_files.hpp"
 
 using clrt::ImageError;
@@ -96,4 +98,121 @@ TEST_CASE("PNG reader rejects a file that is not a PNG or is cut short, naming i
   write_bytes(path, Bytes(good.begin(), good.begin() + 50));
   CHECK_THROWS_WITH(clrt::read_png(path), Contains(path));
   CHECK_THROWS_AS(clrt::read_png(dir.file("missing.png")), ImageError);
+}
+
+namespace {
+
+// CRC-32 as PNG defines it (ISO 3309, reflected 0xedb88320), bit by bit.
+std::uint32_t png_crc(const Bytes& bytes) {
+  std::uint32_t crc = 0xffffffffu;
+  for (std::uint8_t byte : bytes) {
+    crc ^= byte;
+    for (int bit = 0; bit < 8; ++bit) crc = crc & 1 ? (crc >> 1) ^ 0xedb88320u : crc >> 1;
+  }
+  return crc ^ 0xffffffffu;
+}
+
+Bytes u32_be(std::uint32_t v) {
+  return {Bytes::value_type(v >> 24), Bytes::value_type(v >> 16), Bytes::value_type(v >> 8),
+          Bytes::value_type(v)};
+}
+
+Bytes text_chunk(const std::string& key, const std::string& text) {
+  const Bytes body = concat({bytes_of("tEXt" + key), {0}, bytes_of(text)});
+  return concat({u32_be(static_cast<std::uint32_t>(body.size() - 4)), body, u32_be(png_crc(body))});
+}
+
+constexpr std::size_t kAfterIhdr = 8 + 25;  // signature, then IHDR's length, type, 13 bytes, CRC
+
+// A 3x2 PNG as clrt writes it, with `chunks` inserted straight after IHDR.
+std::string png_with_chunks(const ScratchDir& dir, const Bytes& chunks) {
+  const std::string path = dir.file("chunks.png");
+  clrt::write_image(path, Rgba8Image{3, 2, {Bytes(24, 255)}});
+  Bytes file = read_bytes(path);
+  file.insert(file.begin() + kAfterIhdr, chunks.begin(), chunks.end());
+  write_bytes(path, file);
+  return path;
+}
+
+}  // namespace
+
+TEST_CASE("PNG records a placement in a clrt:placement text chunk before the image data",
+          "[image][png][placement]") {
+  ScratchDir dir;
+  const std::string path = dir.file("tile.png");
+  clrt::write_image(path, clrt::FloatImage(3, 2, std::vector<float>(18, 0.5f),
+                                           clrt::Placement{64, 30, 256, 128}));
+  const Bytes file = read_bytes(path);
+  const Bytes chunk = text_chunk("clrt:placement", "64,30 3x2 of 256x128");
+  const auto found = std::search(file.begin(), file.end(), chunk.begin(), chunk.end());
+  REQUIRE(found != file.end());
+  const Bytes idat = bytes_of("IDAT");
+  CHECK(found < std::search(file.begin(), file.end(), idat.begin(), idat.end()));
+
+  const Rgba8Image back = clrt::read_png(path);
+  CHECK(back.placement == clrt::Placement{64, 30, 256, 128});
+  Bytes grey(24, 128);  // 0.5 quantises to 128; alpha 255
+  for (std::size_t alpha = 3; alpha < grey.size(); alpha += 4) grey[alpha] = 255;
+  CHECK(back.frames == std::vector<Bytes>{grey});
+  CHECK(clrt::info_text(clrt::read_image_info(path)) ==
+        "format: PNG\nwidth: 3\nheight: 2\nframes: 1\nchannels: RGB\nsamples: 8-bit\n"
+        "placement: 64,30 3x2 of 256x128\ninterlace: none\ncolour space: sRGB\n");
+}
+
+TEST_CASE("PNG without a placement, or with a whole-frame one, has no text chunk",
+          "[image][png][placement]") {
+  ScratchDir dir;
+  const std::string whole = dir.file("whole.png"), plain = dir.file("plain.png");
+  const std::vector<float> grey(18, 0.25f);
+  clrt::write_image(whole, clrt::FloatImage(3, 2, grey, clrt::Placement{0, 0, 3, 2}));
+  clrt::write_image(plain, clrt::FloatImage(3, 2, grey));
+  CHECK(read_bytes(whole) == read_bytes(plain));
+  CHECK_FALSE(clrt::read_png(plain).placement);
+  CHECK(clrt::read_image_info(plain).placement == std::nullopt);
+}
+
+TEST_CASE("PNG placement chunks are read strictly", "[image][png][placement]") {
+  ScratchDir dir;
+  const auto placement_of = [&](const Bytes& chunks) {
+    return clrt::read_png(png_with_chunks(dir, chunks)).placement;
+  };
+  const auto error_of = [&](const Bytes& chunks) {
+    const std::string path = png_with_chunks(dir, chunks);
+    try {
+      clrt::read_png(path);
+    } catch (const ImageError& error) {
+      return std::string(error.what());
+    }
+    return std::string("no error");
+  };
+  const std::string key = "clrt:placement";
+  CHECK(placement_of(text_chunk(key, "1,2 3x2 of 10x10")) == clrt::Placement{1, 2, 10, 10});
+  CHECK(placement_of(text_chunk(key, "0,0 3x2 of 3x2")) == std::nullopt);
+  CHECK(placement_of(text_chunk("Comment", "1,2 3x2 of 10x10")) == std::nullopt);
+  CHECK_THAT(error_of(text_chunk(key, "1,2 4x2 of 10x10")),
+             Contains("chunks.png") && Contains("for a 4x2 image, but the image is 3x2"));
+  CHECK_THAT(error_of(text_chunk(key, "8,2 3x2 of 10x10")), Contains("does not fit"));
+  CHECK_THAT(error_of(text_chunk(key, "01,2 3x2 of 10x10")), Contains("not of the form"));
+  CHECK_THAT(error_of(text_chunk(key, "1,2 3x2 of 10x10 ")), Contains("not of the form"));
+  CHECK_THAT(error_of(text_chunk(key, "1,2 3x2 of 99999999999x10")), Contains("not of the form"));
+  CHECK_THAT(error_of(text_chunk(key, "1,2 3x2 of 3000000000x10")), Contains("above"));
+  CHECK_THAT(error_of(concat({text_chunk(key, "1,2 3x2 of 10x10"),
+                              text_chunk(key, "1,2 3x2 of 10x10")})),
+             Contains("appears twice"));
+  Bytes damaged = text_chunk(key, "1,2 3x2 of 10x10");
+  damaged.back() ^= 1;
+  CHECK_THAT(error_of(damaged), Contains("not a readable PNG") && Contains("CRC"));
+}
+
+TEST_CASE("PNG info describes colour types and bit depths as stored", "[image][png]") {
+  const clrt::ImageInfo rgb16 = clrt::read_image_info(fixture("rgb16.png"));
+  CHECK(rgb16.channels == "RGB");
+  CHECK(rgb16.samples == "16-bit");
+  CHECK(rgb16.details == decltype(rgb16.details){{"interlace", "none"},
+                                                 {"colour space", "unspecified"}});
+  const clrt::ImageInfo palette = clrt::read_image_info(fixture("palette2.png"));
+  CHECK(palette.channels == "palette with transparency (tRNS)");
+  CHECK(palette.samples == "2-bit indices");
+  CHECK(clrt::read_image_info(fixture("gray_alpha8.png")).channels == "grey, alpha");
+  CHECK(clrt::read_image_info(fixture("gray1.png")).samples == "1-bit");
 }

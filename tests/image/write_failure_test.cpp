@@ -55,7 +55,7 @@ std::string error_under_limit(int resource, rlim_t limit, const std::function<vo
 TEST_CASE("a write into a directory that does not exist fails and creates nothing",
           "[image][write]") {
   ScratchDir dir;
-  for (const char* name : {"a.fsf", "a.png", "a.ppm", "a.pfm"}) {
+  for (const char* name : {"a.fsf", "a.png", "a.ppm", "a.pfm", "a.exr"}) {
     const std::string path = dir.file(std::string("missing/") + name);
     CHECK_THAT(error_of([&] { clrt::write_image(path, kImage); }),
                Contains(path) && Contains("No such file"));
@@ -122,7 +122,7 @@ TEST_CASE("an unknown extension or an invalid image is refused before any file i
   ScratchDir dir;
   const std::string unknown = dir.file("out.jpg");
   CHECK_THAT(error_of([&] { clrt::write_image(unknown, kImage); }),
-             Contains(unknown) && Contains(".jpg") && Contains(".fsf, .png, .ppm, .pfm"));
+             Contains(unknown) && Contains(".jpg") && Contains(".fsf, .png, .ppm, .pfm, .exr"));
   CHECK_THAT(error_of([&] { clrt::write_image(dir.file("noext"), kImage); }),
              Contains("no extension"));
   CHECK_THAT(error_of([&] {
@@ -137,6 +137,11 @@ TEST_CASE("an unknown extension or an invalid image is refused before any file i
                clrt::write_image(dir.file("a.pfm"), clrt::FloatImage{1, 1, {0.5f}});
              }),
              Contains("RGB array"));
+  CHECK_THAT(error_of([&] {
+               clrt::write_image(dir.file("a.exr"), clrt::FloatImage(2, 1, {0, 0, 0, 0, 0, 0},
+                                                                     clrt::Placement{3, 0, 4, 1}));
+             }),
+             Contains("a.exr") && Contains("does not fit in its 4x1 frame"));
   CHECK(dir.entries().empty());
 }
 
@@ -146,7 +151,8 @@ TEST_CASE("format_from_path reads the extension case-insensitively", "[image][wr
   CHECK(clrt::format_from_path("B.PnG") == ImageFormat::Png);
   CHECK(clrt::format_from_path("x.y.PPM") == ImageFormat::Ppm);
   CHECK(clrt::format_from_path("out.pfm") == ImageFormat::Pfm);
+  CHECK(clrt::format_from_path("out.Exr") == ImageFormat::Exr);
   CHECK_THROWS_AS(clrt::format_from_path("dir.png/file"), ImageError);
   CHECK_THROWS_AS(clrt::format_from_path("a.fsf.bak"), ImageError);
-  CHECK_THROWS_WITH(clrt::read_image("a.pfm"), Contains("reading PFM is not supported"));
+  CHECK_FALSE(clrt::format_of_extension("a.fsf.bak"));
 }

@@ -1,0 +1,170 @@
+// clrt-img convert end to end (what clrt-fsfconv's tests checked, and the formats it lacked).
+#include <catch2/catch.hpp>
+#include <string>
+
+#include "image/image.hpp"
+#include "image/image_info.hpp"
+#include "run_tool.hpp"
+
+using clrt::FloatImage;
+using clrt::Rgba8Image;
+using namespace clrt::test;
+using Catch::Matchers::Contains;
+
+namespace {
+
+// Opaque pixels with distinct channels: PNG and PPM keep them exactly.
+const Rgba8Image kAnimation{3,
+                            2,
+                            {{10, 20, 30, 255, 40, 50, 60, 255, 70, 80, 90, 255,  //
+                              1,  2,  3,  255, 4,  5,  6,  255, 7,  8,  9,  255},
+                             {200, 201, 202, 255, 203, 204, 205, 255, 206, 207, 208, 255,  //
+                              0,   0,   0,   255, 255, 255, 255, 255, 128, 64,  32,  255}}};
+
+// What a render holds: unclamped floats, some beyond what 8 bits keep.
+const FloatImage kRender{2, 2, {0.1f, 0.5f, 1.5f, -0.2f, 0.25f, 0.75f, 1e-3f, 0.9f, 3.0f, 0.0f,
+                                0.2f, 0.4f}};
+
+// clrt-img convert IN OUT, then `extra` options.
+ToolResult convert(const ScratchDir& dir, const std::string& in, const std::string& out,
+                   const std::string& extra = "") {
+  return run_img(dir, "convert " + quoted(in) + " " + quoted(out) + extra);
+}
+
+}  // namespace
+
+TEST_CASE("convert: FSF -> PNG -> FSF gives back the same file", "[img][convert]") {
+  ScratchDir dir;
+  const std::string fsf = dir.file("in.fsf"), png = dir.file("mid.png"), back = dir.file("b.fsf");
+  const Rgba8Image still{3, 2, {kAnimation.frames[0]}};
+  clrt::write_image(fsf, still);
+  REQUIRE(convert(dir, fsf, png).status == 0);
+  CHECK(clrt::read_png(png).frames == still.frames);
+  REQUIRE(convert(dir, png, back).status == 0);
+  CHECK(read_bytes(back) == read_bytes(fsf));
+}
+
+TEST_CASE("convert: PPM both ways, --frame picks a frame, FSF keeps every frame",
+          "[img][convert]") {
+  ScratchDir dir;
+  const std::string anim = dir.file("anim.fsf"), ppm = dir.file("f1.ppm"), fsf = dir.file("f1.fsf");
+  clrt::write_image(anim, kAnimation);
+  REQUIRE(convert(dir, anim, ppm, " --frame 1").status == 0);
+  REQUIRE(convert(dir, ppm, fsf).status == 0);
+  const Rgba8Image back = clrt::read_fsf(fsf);
+  CHECK(back.width == 3);
+  CHECK(back.frames == std::vector<Bytes>{kAnimation.frames[1]});
+
+  const std::string copy = dir.file("copy.fsf");
+  REQUIRE(convert(dir, anim, copy).status == 0);
+  CHECK(read_bytes(copy) == read_bytes(anim));
+  const ToolResult one = convert(dir, anim, dir.file("x.png"));
+  CHECK(one.status == 1);
+  CHECK_THAT(one.err, Contains("holds 2 frames: pick one with --frame N"));
+}
+
+TEST_CASE("convert: PFM and EXR are read, and float to 8-bit quantises as clrt does",
+          "[img][convert]") {
+  ScratchDir dir;
+  const std::string pfm = dir.file("r.pfm"), png = dir.file("r.png"), direct = dir.file("d.png");
+  clrt::write_image(pfm, kRender);
+  clrt::write_image(direct, kRender);
+  REQUIRE(convert(dir, pfm, png).status == 0);
+  CHECK(read_bytes(png) == read_bytes(direct));
+
+  // PFM holds 32-bit floats, so EXR keeps them unless --exr-pixel half; PFM back is bit-exact.
+  const std::string exr = dir.file("r.exr"), pfm_back = dir.file("back.pfm");
+  REQUIRE(convert(dir, pfm, exr).status == 0);
+  CHECK(clrt::read_exr(exr).rgb == kRender.rgb);
+  REQUIRE(convert(dir, exr, pfm_back).status == 0);
+  CHECK(read_bytes(pfm_back) == read_bytes(pfm));
+  const std::string half = dir.file("h.exr"), half_direct = dir.file("hd.exr");
+  REQUIRE(convert(dir, pfm, half, " --exr-pixel half").status == 0);
+  clrt::write_image(half_direct, kRender);
+  CHECK(read_bytes(half) == read_bytes(half_direct));
+
+  // 8-bit into EXR is half by default and loses nothing.
+  const std::string eight_exr = dir.file("e.exr"), eight_png = dir.file("e.png");
+  REQUIRE(convert(dir, direct, eight_exr).status == 0);
+  CHECK(clrt::read_image_info(eight_exr).samples == "16-bit float (half)");
+  REQUIRE(convert(dir, eight_exr, eight_png).status == 0);
+  CHECK(read_bytes(eight_png) == read_bytes(direct));
+}
+
+TEST_CASE("convert: a tile keeps its placement into PNG and EXR, with a warning elsewhere",
+          "[img][convert][placement]") {
+  ScratchDir dir;
+  const std::string png = dir.file("t.png"), exr = dir.file("t.exr"), ppm = dir.file("t.ppm");
+  clrt::write_image(png, FloatImage(2, 2, kRender.rgb, clrt::Placement{3, 1, 8, 4}));
+  REQUIRE(convert(dir, png, exr).status == 0);
+  CHECK(clrt::read_exr(exr).placement == clrt::Placement{3, 1, 8, 4});
+  const ToolResult dropped = convert(dir, exr, ppm);
+  CHECK(dropped.status == 0);
+  CHECK_THAT(dropped.err, Contains("clrt-img: warning: ") && Contains("ppm cannot record"));
+  CHECK(clrt::read_ppm(ppm).frames == clrt::read_png(png).frames);
+}
+
+TEST_CASE("convert: - writes to standard output in the format --format names", "[img][convert]") {
+  ScratchDir dir;
+  const std::string png = dir.file("a.png"), ppm = dir.file("a.ppm"), exr = dir.file("a.exr");
+  clrt::write_image(png, kRender);
+  clrt::write_image(ppm, kRender);
+  clrt::write_image(exr, clrt::read_png(png));  // the 8-bit values, as half floats
+  ToolResult piped = run_img(dir, "convert " + quoted(png) + " - --format ppm");
+  CHECK(piped.status == 0);
+  CHECK(piped.out == read_bytes(ppm));
+  piped = run_img(dir, "convert " + quoted(png) + " - --format EXR");
+  CHECK(piped.status == 0);
+  CHECK(piped.out == read_bytes(exr));
+  const ToolResult missing = run_img(dir, "convert " + quoted(png) + " -");
+  CHECK(missing.status == 2);
+  CHECK_THAT(missing.err, Contains("clrt-img: error: ") && Contains("format"));
+  CHECK(missing.out.empty());
+}
+
+TEST_CASE("convert fails with status 1 on bad files and 2 on bad usage", "[img][convert]") {
+  ScratchDir dir;
+  const std::string anim = dir.file("anim.fsf"), missing = dir.file("missing.fsf"),
+                    out = dir.file("out.png");
+  clrt::write_image(anim, kAnimation);
+
+  ToolResult result = convert(dir, missing, out);
+  CHECK(result.status == 1);
+  CHECK_THAT(result.err, Contains("clrt-img: error: ") && Contains(missing));
+  result = convert(dir, anim, out, " --frame 2");
+  CHECK(result.status == 1);
+  CHECK_THAT(result.err, Contains("no frame 2"));
+  result = convert(dir, anim, dir.file("out.gif"));
+  CHECK(result.status == 2);
+  CHECK_THAT(result.err, Contains("clrt-img: error: ") && Contains(".gif"));
+  result = convert(dir, anim, out, " --format exr");
+  CHECK(result.status == 2);
+  CHECK_THAT(result.err, Contains("names png"));
+
+  for (const std::string& args :
+       std::vector<std::string>{"", "convert", "convert " + quoted(anim),
+        "convert " + quoted(anim) + " " + quoted(out) + " --frame -1",
+        "convert " + quoted(anim) + " " + quoted(out) + " --format gif",
+        "convert " + quoted(anim) + " " + quoted(out) + " --exr-pixel double", "--bogus",
+        "bogus"}) {
+    INFO(args);
+    result = run_img(dir, args);
+    CHECK(result.status == 2);
+    CHECK_THAT(result.err, Contains("clrt-img: error: "));
+  }
+  CHECK(dir.entries() == std::set<std::string>{"anim.fsf", "stdout.bin", "stderr.txt"});
+}
+
+TEST_CASE("clrt-img --version and --help", "[img]") {
+  ScratchDir dir;
+  ToolResult result = run_img(dir, "--version");
+  CHECK(result.status == 0);
+  CHECK(result.out_text() == "clrt-img 0.1.0\n");
+  result = run_img(dir, "--help");
+  CHECK(result.status == 0);
+  for (const char* command : {"convert", "info", "diff", "stitch"})
+    CHECK_THAT(result.out_text(), Contains(command));
+  result = run_img(dir, "stitch --help");
+  CHECK(result.status == 0);
+  CHECK_THAT(result.out_text(), Contains("tiles"));
+}

@@ -1,0 +1,87 @@
+// clrt-img diff end to end: the report, the exit status, the difference image.
+#include <catch2/catch.hpp>
+#include <string>
+
+#include "image/image.hpp"
+#include "run_tool.hpp"
+
+using clrt::FloatImage;
+using clrt::Rgba8Image;
+using namespace clrt::test;
+using Catch::Matchers::Contains;
+
+namespace {
+
+const Rgba8Image kA(2, 1, {{10, 20, 30, 255, 100, 100, 100, 255}});
+const Rgba8Image kB(2, 1, {{10, 22, 30, 255, 100, 100, 95, 255}});
+
+}  // namespace
+
+TEST_CASE("diff of 8-bit images reports steps of 1/255 and exits 1 above the threshold",
+          "[img][diff]") {
+  ScratchDir dir;
+  const std::string a = dir.file("a.png"), b = dir.file("b.ppm"), out = dir.file("d.png");
+  clrt::write_image(a, kA);
+  clrt::write_image(b, kB);
+  ToolResult result =
+      run_img(dir, "diff " + quoted(a) + " " + quoted(b) + " --out " + quoted(out));
+  CHECK(result.status == 1);
+  CHECK(result.out_text() ==
+        "compared: R, G, B as 8-bit samples (differences in steps of 1/255)\npixels: 2\n"
+        "differing pixels: 2 (a channel differs by more than 0)\n"
+        "largest difference: 5 (of 255)\nPSNR: 41.2883361 dB\n");
+  // |A - B| scaled by 1/5: green 2/5 of pixel 0, blue 1 of pixel 1.
+  CHECK(clrt::read_png(out).frames == std::vector<Bytes>{{0, 102, 0, 255, 0, 0, 255, 255}});
+
+  result = run_img(dir, "diff " + quoted(a) + " " + quoted(b) + " --threshold 2");
+  CHECK(result.status == 1);
+  CHECK_THAT(result.out_text(),
+             Contains("differing pixels: 1 (a channel differs by more than 2)"));
+  result = run_img(dir, "diff " + quoted(a) + " " + quoted(b) + " --threshold 5");
+  CHECK(result.status == 0);
+  result = run_img(dir, "diff " + quoted(a) + " " + quoted(a));
+  CHECK(result.status == 0);
+  CHECK_THAT(result.out_text(), Contains("largest difference: 0 (of 255)\nPSNR: inf dB\n"));
+}
+
+TEST_CASE("diff of two float images compares floats, a float against 8-bit quantises",
+          "[img][diff]") {
+  ScratchDir dir;
+  const std::string a = dir.file("a.pfm"), b = dir.file("b.exr"), png = dir.file("a.png");
+  clrt::write_image(a, FloatImage(2, 1, {0, 0, 0, 1, 0.5f, 3}));
+  clrt::write_image(b, FloatImage(2, 1, {0, 0, 0.001f, 1, 0.5f, 3}), {clrt::ExrPixel::Float});
+  clrt::write_image(png, FloatImage(2, 1, {0, 0, 0, 1, 0.5f, 3}));
+  ToolResult result = run_img(dir, "diff " + quoted(a) + " " + quoted(b));
+  CHECK(result.status == 1);
+  CHECK(result.out_text() ==
+        "compared: R, G, B as floats (differences in linear units)\npixels: 2\n"
+        "differing pixels: 1 (a channel differs by more than 0)\n"
+        "largest difference: 0.00100000005\nPSNR: 67.7815121 dB\n");
+  CHECK(run_img(dir, "diff " + quoted(a) + " " + quoted(b) + " --threshold 0.0011").status == 0);
+  result = run_img(dir, "diff " + quoted(a) + " " + quoted(png));
+  CHECK(result.status == 0);
+  CHECK_THAT(result.out_text(), Contains("as 8-bit samples") && Contains("PSNR: inf dB"));
+}
+
+TEST_CASE("diff refuses different sizes (1), animations without --frame (1) and bad options (2)",
+          "[img][diff]") {
+  ScratchDir dir;
+  const std::string a = dir.file("a.png"), small = dir.file("s.png"), anim = dir.file("anim.fsf");
+  clrt::write_image(a, kA);
+  clrt::write_image(small, Rgba8Image(1, 1, {{1, 2, 3, 255}}));
+  clrt::write_image(anim, Rgba8Image(2, 1, {kA.frames[0], kB.frames[0]}));
+  ToolResult result = run_img(dir, "diff " + quoted(a) + " " + quoted(small));
+  CHECK(result.status == 1);
+  CHECK_THAT(result.err, Contains("2x1") && Contains("1x1"));
+  CHECK(run_img(dir, "diff " + quoted(a) + " " + quoted(anim)).status == 1);
+  CHECK(run_img(dir, "diff " + quoted(a) + " " + quoted(anim) + " --frame 0").status == 0);
+  CHECK(run_img(dir, "diff " + quoted(a) + " " + quoted(anim) + " --frame 1").status == 1);
+  for (const char* threshold : {"-1", "nan", "inf", "x", "1e999"}) {
+    INFO(threshold);
+    result = run_img(dir, "diff " + quoted(a) + " " + quoted(a) + " --threshold " + threshold);
+    CHECK(result.status == 2);
+    CHECK_THAT(result.err, Contains("clrt-img: error: "));
+  }
+  CHECK(run_img(dir, "diff " + quoted(a) + " " + quoted(a) + " --out d.gif").status == 2);
+  CHECK(run_img(dir, "diff " + quoted(a)).status == 2);
+}

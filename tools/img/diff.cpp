@@ -1,0 +1,79 @@
+// clrt-img diff A B: how far two renders of one frame are apart; exit 1 when a pixel differs by
+// more than the threshold.
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <iostream>
+#include <limits>
+#include <memory>
+
+#include "command_line.hpp"
+#include "image/compare.hpp"
+
+namespace clrt::img {
+namespace {
+
+struct DiffOptions {
+  std::string a, b, out;
+  double threshold = 0;
+  std::optional<int> frame;
+};
+
+std::string number(double value) {
+  if (std::isinf(value)) return value > 0 ? "inf" : "-inf";
+  char text[32];
+  std::snprintf(text, sizeof text, "%.9g", value);
+  return text;
+}
+
+std::string report(const ImageDifference& d, double threshold) {
+  const std::string unit = d.floats ? "" : " (of 255)";
+  return std::string("compared: R, G, B as ") +
+         (d.floats ? "floats (differences in linear units)"
+                   : "8-bit samples (differences in steps of 1/255)") +
+         "\npixels: " + std::to_string(d.pixels) + "\ndiffering pixels: " +
+         std::to_string(d.differing) + " (a channel differs by more than " + number(threshold) +
+         ")\nlargest difference: " + number(d.largest) + unit + "\nPSNR: " + number(d.psnr) +
+         " dB\n";
+}
+
+int diff(const DiffOptions& options) {
+  input_format(options.a);
+  input_format(options.b);
+  std::optional<ImageOutput> out;
+  if (!options.out.empty()) out = output_argument(options.out, std::nullopt);
+  const AnyImage a = pick_frame(read_any_image(options.a), options.frame, options.a);
+  const AnyImage b = pick_frame(read_any_image(options.b), options.frame, options.b);
+  const ImageDifference difference = compare_images(a, b, options.threshold);
+  std::cout << report(difference, options.threshold) << std::flush;
+  if (out) write_image(*out, difference.difference);
+  return difference.differing > 0 ? 1 : 0;
+}
+
+}  // namespace
+
+void add_diff(CLI::App& app, Command& command) {
+  auto options = std::make_shared<DiffOptions>();
+  CLI::App* sub = app.add_subcommand(
+      "diff", "compare two images of the same size; exit 1 when they differ beyond --threshold");
+  sub->add_option("a", options->a, "first image")->required();
+  sub->add_option("b", options->b, "second image")->required();
+  sub->add_option("--threshold", options->threshold,
+                  "largest channel difference still counted as equal: in steps of 1/255 for "
+                  "8-bit comparisons, linear units for float ones (default 0)")
+      ->check(CLI::Validator(
+          [](std::string& text) {
+            char* end = nullptr;
+            const double value = std::strtod(text.c_str(), &end);
+            const bool ok = end != text.c_str() && *end == '\0' && std::isfinite(value) &&
+                            value >= 0;
+            return ok ? std::string() : "--threshold must be a finite number >= 0";
+          },
+          "NUMBER>=0"));
+  sub->add_option("--out", options->out,
+                  "write |A - B| per channel, scaled so the largest difference is white");
+  add_frame_option(*sub, options->frame, "the frame to compare in animations");
+  sub->callback([&command, options] { command = [options] { return diff(*options); }; });
+}
+
+}  // namespace clrt::img

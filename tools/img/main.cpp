@@ -1,0 +1,40 @@
+// clrt-img: one tool for the images clrt writes, in the spirit of pbrt's imgtool.
+// Exit status: 0 success, 1 a file could not be read or written, its contents did not allow the
+// command, or (diff) the images differ; 2 a usage error.
+#include <CLI/CLI.hpp>
+
+#include <iostream>
+
+#include "command_line.hpp"
+
+int main(int argc, char** argv) {
+  using namespace clrt::img;
+  CLI::App app{"Convert, describe, compare and stitch the images clrt writes (FSF, PNG, PPM, "
+               "PFM, OpenEXR).",
+               "clrt-img"};
+  app.set_version_flag("--version", "clrt-img " CLRT_VERSION);
+  app.require_subcommand(1);
+  app.failure_message([](const CLI::App*, const CLI::Error& error) {
+    return std::string("clrt-img: error: ") + error.what() +
+           "\nRun 'clrt-img --help' or 'clrt-img COMMAND --help' for usage.\n";
+  });
+  Command command;
+  add_convert(app, command);
+  add_info(app, command);
+  add_diff(app, command);
+  add_stitch(app, command);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& error) {
+    return app.exit(error) == 0 ? 0 : 2;
+  }
+  try {
+    return command();
+  } catch (const UsageError& error) {
+    std::cerr << "clrt-img: error: " << error.what() << "\n";
+    return 2;
+  } catch (const std::exception& error) {
+    std::cerr << "clrt-img: error: " << error.what() << "\n";
+    return 1;
+  }
+}
