@@ -135,6 +135,11 @@ int main(int argc, char** argv) {
   try {
     plan.scenes = expand_scenes(scene_paths);
     if (plan.scenes.empty()) throw CLI::ValidationError("no .ray or .nff scene found");
+    for (const std::string& scene : plan.scenes)
+      if (!fs::is_regular_file(scene)) throw CLI::ValidationError("no scene file " + scene);
+    for (const std::string& name : split_list(integrators))
+      if (name != "wavefront" && name != "megakernel")
+        throw CLI::ValidationError("--integrator takes wavefront and megakernel, not '" + name + "'");
     plan.variants = expand_variants(split_list(integrators), split_list(wavefronts),
                                     split_list(local_sizes), extras);
   } catch (const CLI::Error& e) {

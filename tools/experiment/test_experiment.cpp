@@ -1,0 +1,143 @@
+// clrt-experiment end to end on tiny scenes: two PoCL devices x two integrators x repeats in one
+// command, with every output (JSON, CSV, Markdown, plots) and the validation of every image;
+// a variant that changes the picture is flagged with its PSNR; a wavefront sweep draws its plot.
+#include <catch2/catch.hpp>
+
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "image/image.hpp"
+#include "process_run.hpp"
+#include "scratch_dir.hpp"
+
+using namespace clrt;
+using namespace clrt::experiment;
+
+namespace {
+
+const std::string kTwoDevices = "POCL_DEVICES=pthread pthread";
+
+std::string source_file(const std::string& relative) {
+  return std::string(CLRT_SOURCE_DIR) + "/" + relative;
+}
+
+ProcessResult run_experiment(std::vector<std::string> args, const std::vector<std::string>& env = {}) {
+  args.insert(args.begin(), CLRT_EXPERIMENT);
+  return run_process(args, env);
+}
+
+std::string text_of(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+nlohmann::json results_in(const test::ScratchDir& dir) {
+  return nlohmann::json::parse(text_of(dir.file("results.json")));
+}
+
+void check_plot(const std::string& path) {
+  INFO(path);
+  const Rgba8Image plot = read_png(path);
+  CHECK(plot.width > 100);
+  CHECK(plot.height > 100);
+}
+
+}  // namespace
+
+TEST_CASE("two devices, two integrators and repeats in one command, every image validated",
+          "[experiment]") {
+  test::ScratchDir dir;
+  const ProcessResult r =
+      run_experiment({source_file("tests/render/scenes/test2.ray"), "--device", "all", "--integrator",
+                  "wavefront,megakernel", "--repeats", "2", "--resolution", "32x24", "--out",
+                  dir.path().string()},
+                 {kTwoDevices});
+  INFO(r.out << r.err);
+  REQUIRE(r.exit_code == 0);
+  const nlohmann::json results = results_in(dir);
+  CHECK(results["clrt"].get<std::string>().find("clrt ") == 0);
+  const nlohmann::json& runs = results["runs"];
+  REQUIRE(runs.size() == 8);  // 1 scene x 2 devices x 2 integrators x 2 repeats
+  for (const nlohmann::json& run : runs) {
+    CHECK(run["exit_code"] == 0);
+    CHECK(run["rays"]["camera"] == 32 * 24);
+    CHECK(run["rays"]["total"].get<int>() > 32 * 24);
+    CHECK(run["mrays_per_second"].get<double>() > 0);
+    CHECK(run["peak_bytes"].get<double>() > 0);
+    CHECK(run["process_seconds"].get<double>() >= run["seconds"]["total"].get<double>());
+    CHECK(run["devices"][0]["name"].get<std::string>().size() > 0);
+    CHECK(run["devices"][0]["driver"].get<std::string>().size() > 0);
+    CHECK(run["devices"][0]["opencl_c"].get<std::string>().find("OpenCL C") == 0);
+    CHECK(run["kernels"].size() > 0);
+    CHECK(run["validation"]["identical"] == true);
+    CHECK(run["validation"]["flagged"] == false);
+  }
+  CHECK(runs[0]["device_spec"] == "0:0");
+  CHECK(runs[2]["device_spec"] == "0:1");
+  CHECK(runs[1]["integrator"] == "megakernel");
+  CHECK(results["summary"].size() == 4);
+  REQUIRE(results["scores"].size() == 2);
+  for (const auto& [device, score] : results["scores"].items()) CHECK(score["score"].get<double>() > 0);
+
+  const std::string csv = text_of(dir.file("runs.csv"));
+  CHECK(std::count(csv.begin(), csv.end(), '\n') == 9);
+  CHECK(csv.rfind("scene,device_spec,device,variant,repeat,", 0) == 0);
+  const std::string report = text_of(dir.file("report.md"));
+  CHECK(report.find("| scene | device | variant | Mrays/s") != std::string::npos);
+  CHECK(report.find("megakernel") != std::string::npos);
+  CHECK(report.find("Every image is identical to its scene's first.") != std::string::npos);
+  check_plot(dir.file("mrays.png"));
+  check_plot(dir.file("kernels.png"));
+  CHECK_FALSE(std::filesystem::exists(dir.file("wavefront.png")));
+}
+
+TEST_CASE("a run whose picture differs is flagged with its PSNR and kept", "[experiment]") {
+  test::ScratchDir dir;
+  const ProcessResult r = run_experiment(
+      {source_file("tests/render/scenes/area.ray"), "--repeats", "1", "--resolution", "24x16",
+       "--variant", "seed0=", "--variant", "seed9=--seed 9", "--out", dir.path().string(), "--no-plots"});
+  INFO(r.out << r.err);
+  CHECK(r.exit_code == 1);
+  CHECK(r.err.find("1 images differ") != std::string::npos);
+  const nlohmann::json runs = results_in(dir)["runs"];
+  REQUIRE(runs.size() == 2);
+  CHECK(runs[0]["validation"]["flagged"] == false);
+  const nlohmann::json& v = runs[1]["validation"];
+  CHECK(v["flagged"] == true);
+  CHECK(v["identical"] == false);
+  CHECK(v["differing_pixels"].get<int>() > 0);
+  CHECK(v["psnr"].get<double>() > 0);
+  CHECK(std::filesystem::exists(runs[1]["command"][7].get<std::string>()));
+  CHECK(text_of(dir.file("report.md")).find("differs from the scene's first image: area.ray") !=
+        std::string::npos);
+}
+
+TEST_CASE("a wavefront sweep draws its plot", "[experiment]") {
+  test::ScratchDir dir;
+  const ProcessResult r =
+      run_experiment({source_file("tests/render/scenes/test2.ray"), "--repeats", "1", "--resolution",
+                  "32x24", "--wavefront", "1024,4096", "--out", dir.path().string()});
+  INFO(r.out << r.err);
+  REQUIRE(r.exit_code == 0);
+  const nlohmann::json summary = results_in(dir)["summary"];
+  REQUIRE(summary.size() == 2);
+  CHECK(summary[0]["wavefront"] == 1024);
+  CHECK(summary[1]["wavefront"] == 4096);
+  check_plot(dir.file("wavefront.png"));
+}
+
+TEST_CASE("usage errors exit 2 and a device that matches nothing exits 1", "[experiment]") {
+  test::ScratchDir dir;
+  CHECK(run_experiment({}).exit_code == 2);
+  CHECK(run_experiment({dir.path().string() + "/nothing-here", "--out", dir.path().string()}).exit_code == 2);
+  const ProcessResult bad = run_experiment({source_file("tests/render/scenes/test2.ray"),
+                                        "--integrator", "pathtracer", "--out", dir.path().string()});
+  CHECK(bad.exit_code == 2);
+  const ProcessResult device = run_experiment({source_file("tests/render/scenes/test2.ray"),
+                                           "--device", "no-such-device", "--out", dir.path().string()});
+  CHECK(device.exit_code == 1);
+  CHECK(device.err.find("clrt-experiment: error:") == 0);
+}
