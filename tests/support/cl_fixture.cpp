@@ -1,18 +1,27 @@
 #include "cl_fixture.hpp"
 
+#include <cstdlib>
 #include <map>
 #include <memory>
 #include <stdexcept>
 
 #include "device/device_select.hpp"
+#include "device/device_tuning.hpp"
 #include "device/kernel_source.hpp"
 #include "render/renderer_program.hpp"
 
 namespace clrt::test {
 
 DeviceContext& device() {
-  static DeviceContext context(select_devices("cpu").front());
+  static DeviceContext context(select_devices(test_device_spec()).front());
   return context;
+}
+
+std::size_t local_size() { return tuning_for(classify(device().device())).local_size; }
+
+std::string test_device_spec() {
+  const char* spec = std::getenv("CLRT_TEST_DEVICE");
+  return spec && *spec ? spec : "cpu";
 }
 
 compute::program& test_program(const std::string& text) {

@@ -12,8 +12,11 @@
 
 namespace clrt::test {
 
-// The first CPU device (PoCL in CI), created on first use and kept for the whole binary.
+// The device the kernel tests run on: CLRT_TEST_DEVICE names it as clrt's --device does
+// (tools/gpu_check.sh sets it to `gpu`); unset, the first CPU device (PoCL in CI). Created on
+// first use and kept for the whole binary.
 DeviceContext& device();
+std::string test_device_spec();
 
 // Builds (once per binary, cached by text) a test program: `text` may #include any file of
 // kernels/ by its path, e.g. #include "geometry/shapes.h".
@@ -37,8 +40,8 @@ std::vector<std::remove_const_t<T>> download(const Global<T>& buffer, std::size_
   return clrt::download(device(), buffer, count);
 }
 
-// The local size kernel tests launch with (the CPU class's).
-constexpr std::size_t kLocalSize = 64;
+// The local size kernel tests launch with: the test device class's, as the renderer's.
+std::size_t local_size();
 
 // Throws std::logic_error naming every mismatch when `kernel`'s signature and `Args` disagree.
 void check_binding(const compute::kernel& kernel, const std::vector<ExpectedArg>& expected);
@@ -49,7 +52,7 @@ template <class Args>
 void run(const compute::program& program, const Args& args, std::size_t count) {
   TypedKernel<Args> kernel(program);
   check_binding(kernel.kernel(), expected_args(args));
-  kernel.launch(device().queue(), args, count, kLocalSize);
+  kernel.launch(device().queue(), args, count, local_size());
   device().queue().finish();
 }
 

@@ -169,7 +169,7 @@ std::string runs_csv(const nlohmann::json& runs) {
 std::string markdown_report(const nlohmann::json& results) {
   const nlohmann::json& summary = results["summary"];
   std::ostringstream out;
-  out << "Medians over " << results["settings"]["repeats"] << " repeats; clrt "
+  out << "Medians over " << results["settings"]["repeats"] << " repeats; "
       << results["clrt"].get<std::string>() << ".\n\n";
   out << "| scene | device | variant | Mrays/s | Msamples/s | render s | command s | device busy "
          "| peak MiB | runs | flagged |\n|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|\n";
