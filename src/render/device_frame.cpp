@@ -15,4 +15,9 @@ DeviceFrame::DeviceFrame(DeviceContext& device, const FrameData& frame, const Ge
             sizeof(dev::Material) * frame.materials.size() +
             sizeof(dev::Light) * frame.lights.size()) {}
 
+void DeviceFrame::set_camera(DeviceContext& device, const dev::Camera& new_camera) {
+  host.camera = new_camera;
+  device.queue().enqueue_write_buffer(camera.buffer, 0, sizeof new_camera, &new_camera);
+}
+
 }  // namespace clrt

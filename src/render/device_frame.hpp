@@ -11,6 +11,9 @@ namespace clrt {
 struct DeviceFrame {
   DeviceFrame(DeviceContext& device, const FrameData& frame, const GeometryData& tables);
 
+  // Replaces the camera for the launches queued after this.
+  void set_camera(DeviceContext& device, const dev::Camera& camera);
+
   FrameData host;  // the same records as on the device, for the host's own decisions
   DeviceGeometry geometry;
   Global<const dev::Camera> camera;

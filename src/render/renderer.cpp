@@ -96,19 +96,22 @@ void check_render_setup(const RenderSetup& setup) {
                            tuning_of(entry, setup.options).megakernel_depth);
 }
 
-FloatImage render(const Scene& scene, const RenderSetup& setup, RenderStats& stats) {
-  check_render_setup(setup);
-  const RenderOptions& options = setup.options;
-  const GeometryData geometry = build_geometry(scene);
-  stats.bvh_seconds = geometry.build_seconds;
-  stats.geometry_bytes = geometry.device_bytes();
-  stats.bvh_bytes = geometry.nodes.size() * sizeof(dev::BvhNode);
-  const FrameData frame = make_frame(scene, options);
-
-  auto start = Clock::now();
+struct Renderer::Devices {
   std::vector<DeviceWorker> workers;
+};
+
+Renderer::Renderer(const Scene& scene, const RenderSetup& setup)
+    : options_(setup.options), devices_(std::make_unique<Devices>()) {
+  check_render_setup(setup);
+  const GeometryData geometry = build_geometry(scene);
+  setup_stats_.bvh_seconds = geometry.build_seconds;
+  setup_stats_.geometry_bytes = geometry.device_bytes();
+  setup_stats_.bvh_bytes = geometry.nodes.size() * sizeof(dev::BvhNode);
+  const FrameData frame = make_frame(scene, options_);
+
+  const auto start = Clock::now();
   for (const DeviceEntry& entry : setup.devices) {
-    const DeviceTuning tuning = tuning_of(entry, options);
+    const DeviceTuning tuning = tuning_of(entry, options_);
     DeviceWorker w;
     w.context = std::make_unique<DeviceContext>(entry);
     const compute::program program = build_renderer_program(*w.context);
@@ -118,20 +121,29 @@ FloatImage render(const Scene& scene, const RenderSetup& setup, RenderStats& sta
     config.local_size = tuning.local_size;
     config.megakernel_depth = tuning.megakernel_depth;
     config.profile = setup.profile;
-    w.integrator = make_integrator(options.integrator, *w.context, program, *w.frame, config);
+    w.integrator = make_integrator(options_.integrator, *w.context, program, *w.frame, config);
     w.report = report_of(entry, tuning);
-    workers.push_back(std::move(w));
+    devices_->workers.push_back(std::move(w));
   }
-  stats.build_seconds = seconds_since(start);
+  setup_stats_.build_seconds = seconds_since(start);
+  setup_stats_.integrator = integrator_name(options_.integrator);
+  setup_stats_.samples_per_pixel = static_cast<std::uint64_t>(options_.samples);
+}
 
-  start = Clock::now();
-  const PixelRect region = render_region(options);
+Renderer::~Renderer() = default;
+
+FloatImage Renderer::render(const PixelRect& region, Progress* progress) {
+  const auto start = Clock::now();
   FloatImage image;
   image.width = static_cast<int>(region.width);
   image.height = static_cast<int>(region.height);
   image.rgb.assign(3 * region.pixel_count(), 0.0f);
+  if (region.width != static_cast<std::uint32_t>(options_.width) ||
+      region.height != static_cast<std::uint32_t>(options_.height))
+    image.placement = Placement{static_cast<int>(region.x), static_cast<int>(region.y),
+                                options_.width, options_.height};
+  std::vector<DeviceWorker>& workers = devices_->workers;
   RowDealer dealer(region);
-  Progress progress(region.pixel_count(), setup.progress);
   std::vector<std::exception_ptr> errors(workers.size());
   const auto work = [&](std::size_t i) {
     try {
@@ -140,7 +152,7 @@ FloatImage render(const Scene& scene, const RenderSetup& setup, RenderStats& sta
       while (dealer.next(integrator.pixels_per_wave(), band)) {
         const std::uint64_t offset = std::uint64_t{band.y - region.y} * region.width;
         integrator.render(band, image.rgb.data() + 3 * offset);
-        progress.advance(band.pixel_count());
+        if (progress) progress->advance(band.pixel_count());
       }
     } catch (...) {
       errors[i] = std::current_exception();
@@ -153,19 +165,44 @@ FloatImage render(const Scene& scene, const RenderSetup& setup, RenderStats& sta
     for (std::size_t i = 0; i < workers.size(); ++i) threads.emplace_back(work, i);
     for (auto& t : threads) t.join();
   }
-  progress.finish();
   for (const auto& e : errors)
     if (e) std::rethrow_exception(e);
-  for (DeviceWorker& w : workers) {
-    w.integrator->harvest(stats);
-    stats.devices.push_back(w.report);
-    stats.device_bytes += w.frame->bytes + w.integrator->device_bytes();
+  render_seconds_ += seconds_since(start);
+  return image;
+}
+
+void Renderer::set_camera(const dev::Camera& camera) {
+  for (DeviceWorker& w : devices_->workers) w.frame->set_camera(*w.context, camera);
+}
+
+void Renderer::report(RenderStats& stats) {
+  const auto start = Clock::now();
+  RenderStats own;
+  for (DeviceWorker& w : devices_->workers) {
+    w.integrator->harvest(own);
+    own.devices.push_back(w.report);
+    own.device_bytes += w.frame->bytes + w.integrator->device_bytes();
   }
-  stats.render_seconds = seconds_since(start);
-  stats.integrator = integrator_name(options.integrator);
+  stats.merge(own);
+  stats.render_seconds += render_seconds_ + seconds_since(start);
+  stats.bvh_seconds = setup_stats_.bvh_seconds;
+  stats.build_seconds = setup_stats_.build_seconds;
+  stats.geometry_bytes = setup_stats_.geometry_bytes;
+  stats.bvh_bytes = setup_stats_.bvh_bytes;
+  stats.integrator = setup_stats_.integrator;
+  stats.samples_per_pixel = setup_stats_.samples_per_pixel;
+  render_seconds_ = 0;
+}
+
+FloatImage render(const Scene& scene, const RenderSetup& setup, RenderStats& stats) {
+  Renderer renderer(scene, setup);
+  const PixelRect region = render_region(setup.options);
+  Progress progress(region.pixel_count(), setup.progress);
+  FloatImage image = renderer.render(region, &progress);
+  progress.finish();
+  renderer.report(stats);
   stats.width = region.width;
   stats.height = region.height;
-  stats.samples_per_pixel = static_cast<std::uint64_t>(options.samples);
   return image;
 }
 

@@ -1,14 +1,19 @@
-// A whole render: the geometry built once, a program, frame and integrator per device, and the
-// image's rows dealt out among the devices.
+// Rendering a scene: a Renderer builds the geometry once, and a program, frame and integrator
+// per device, then renders any number of regions with them (a frame, the tiles of a farm or of
+// an MPI rank, the frames of an animation), dealing each region's rows out among its devices.
 #pragma once
 
+#include <memory>
 #include <vector>
 
 #include "device/device_select.hpp"
 #include "image/image.hpp"
+#include "render/pixel_rect.hpp"
+#include "render/progress.hpp"
 #include "render/render_options.hpp"
 #include "render/render_stats.hpp"
 #include "scene/scene.hpp"
+#include "shared/scene.h"
 
 namespace clrt {
 
@@ -26,7 +31,34 @@ PixelRect render_region(const RenderOptions& options);
 // megakernel stack too shallow for the depth), before any work.
 void check_render_setup(const RenderSetup& setup);
 
-// Renders `scene`; fills the timing, device and ray fields of `stats` (not load or write).
+class Renderer {
+ public:
+  // Builds everything a render needs; checks `setup` first (check_render_setup).
+  Renderer(const Scene& scene, const RenderSetup& setup);
+  ~Renderer();
+  Renderer(const Renderer&) = delete;
+  Renderer& operator=(const Renderer&) = delete;
+
+  // Renders `region` of the image. The image records its placement in the frame unless it is
+  // the whole frame; every pixel has the bits of the same pixel of a full render.
+  FloatImage render(const PixelRect& region, Progress* progress = nullptr);
+
+  // The camera of the renders that follow (an animation's next frame).
+  void set_camera(const dev::Camera& camera);
+
+  // Waits for the devices and adds what was rendered so far, the set-up times and the devices
+  // to `stats` (not load or write).
+  void report(RenderStats& stats);
+
+ private:
+  struct Devices;
+  const RenderOptions options_;
+  std::unique_ptr<Devices> devices_;
+  RenderStats setup_stats_;  // BVH and kernel build, reported once
+  double render_seconds_ = 0;
+};
+
+// The whole render of the command line: the options' region with a progress bar.
 FloatImage render(const Scene& scene, const RenderSetup& setup, RenderStats& stats);
 
 }  // namespace clrt

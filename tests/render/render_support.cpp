@@ -37,8 +37,13 @@ std::array<int, 3> pixel_rgb(const Rgba8Image& image, int i, int j) {
 std::string quoted(const std::string& path) { return "'" + path + "'"; }
 
 CommandResult run_clrt(const std::string& arguments, const std::string& environment) {
-  const std::string command =
-      (environment.empty() ? "" : "env " + environment + " ") + "'" CLRT_EXE "' " + arguments + " 2>&1";
+  return run_program(CLRT_EXE, arguments, environment);
+}
+
+CommandResult run_program(const std::string& program, const std::string& arguments,
+                          const std::string& environment) {
+  const std::string command = (environment.empty() ? "" : "env " + environment + " ") + "'" +
+                              program + "' " + arguments + " 2>&1";
   FILE* pipe = popen(command.c_str(), "r");
   if (!pipe) throw std::runtime_error("cannot run " + command);
   CommandResult result;

@@ -33,6 +33,9 @@ struct CommandResult {
 // Runs the clrt executable with `arguments` (already quoted where needed), with `environment`
 // (e.g. "POCL_MAX_PTHREAD_COUNT=1") added to the inherited environment.
 CommandResult run_clrt(const std::string& arguments, const std::string& environment = "");
+// The same for any program.
+CommandResult run_program(const std::string& program, const std::string& arguments,
+                          const std::string& environment = "");
 
 // The whole file, or an empty string when it does not exist.
 std::string file_bytes(const std::string& path);

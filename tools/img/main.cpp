@@ -6,13 +6,14 @@
 #include <iostream>
 
 #include "command_line.hpp"
+#include "version.hpp"
 
 int main(int argc, char** argv) {
   using namespace clrt::img;
   CLI::App app{"Convert, describe, compare and stitch the images clrt writes (FSF, PNG, PPM, "
                "PFM, OpenEXR).",
                "clrt-img"};
-  app.set_version_flag("--version", "clrt-img " CLRT_VERSION);
+  app.set_version_flag("--version", std::string("clrt-img, from ") + clrt_version_string());
   app.require_subcommand(1);
   app.failure_message([](const CLI::App*, const CLI::Error& error) {
     return std::string("clrt-img: error: ") + error.what() +
