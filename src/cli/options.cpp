@@ -92,6 +92,9 @@ ParseResult parse_command_line(int argc, char** argv) {
           if (!error.empty()) throw CLI::ValidationError(name + " " + error);
         },
         help);
+  app.add_option("--lanes", o.lanes,
+                 "waves in flight per device, each with its own queues (default: per device class)")
+      ->check(CLI::Range(1, 16));
   app.add_option("--local-size", o.local_size,
                  "work-items per work-group for every kernel (default: per device class)")
       ->check(CLI::Range(1, 1024));
@@ -127,6 +130,7 @@ RenderOptions resolve_render_options(const CliOptions& cli, const Scene& scene) 
   r.seed = cli.seed;
   r.wavefront = cli.wavefront;
   r.local_size = cli.local_size;
+  r.lanes = cli.lanes;
   r.integrator = cli.integrator;
   r.region = resolve_region(cli.region, r.width, r.height);
   return r;

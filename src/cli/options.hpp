@@ -22,6 +22,7 @@ struct CliOptions {
   std::uint32_t seed = 0;
   std::uint32_t wavefront = 0;  // 0: per device class, see device_tuning.cpp
   std::size_t local_size = 0;   // 0: per device class
+  std::uint32_t lanes = 0;      // 0: per device class
   IntegratorKind integrator = IntegratorKind::Wavefront;
   RegionRequest region;
   std::string device = "cpu";

@@ -19,9 +19,14 @@ std::string mib(std::size_t bytes) {
 }  // namespace
 
 DeviceContext::DeviceContext(const DeviceEntry& entry)
+    : DeviceContext(entry, compute::context(entry.device)) {}
+
+DeviceContext::DeviceContext(const DeviceEntry& entry, const compute::context& context)
     : entry_(entry),
-      context_(entry.device),
+      context_(context),
       queue_(context_, entry.device, compute::command_queue::enable_profiling) {}
+
+DeviceContext DeviceContext::lane() const { return DeviceContext(entry_, context_); }
 
 compute::program DeviceContext::build(const std::string& source, const std::string& options) const {
   compute::program program = compute::program::create_with_source(source, context_);

@@ -14,6 +14,10 @@ class DeviceContext {
  public:
   explicit DeviceContext(const DeviceEntry& entry);
 
+  // Another command queue on the same device and context: buffers and programs are shared, and
+  // the device may run the two queues' commands in any interleaving (a lane of work).
+  DeviceContext lane() const;
+
   const DeviceEntry& entry() const { return entry_; }
   const compute::device& device() const { return entry_.device; }
   compute::context& context() { return context_; }
@@ -31,6 +35,8 @@ class DeviceContext {
   DeviceEntry entry_;
   compute::context context_;
   compute::command_queue queue_;
+
+  DeviceContext(const DeviceEntry& entry, const compute::context& context);
 };
 
 // The options every clrt program is built with; fixed so that PoCL's kernel cache stays warm.

@@ -16,6 +16,9 @@ struct DeviceTuning {
   DeviceClass device_class = DeviceClass::Cpu;
   std::size_t local_size = 64;           // work-items per work-group, every kernel
   std::uint32_t wavefront = 1u << 14;    // rays per queue when the user names none
+  // Waves in flight on the device, each on its own command queue with its own queues: while
+  // one waits for the host, the other's kernels run.
+  std::uint32_t lanes = 2;
   std::uint32_t megakernel_depth = 32;   // deepest ray tree the megakernel's private stack holds
 
   // The options that make the program of this class (see kernels/megakernel.cl).

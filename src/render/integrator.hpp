@@ -8,6 +8,7 @@
 #include <optional>
 #include <string>
 
+#include "render/busy_timeline.hpp"
 #include "render/device_frame.hpp"
 #include "render/pixel_rect.hpp"
 #include "render/render_stats.hpp"
@@ -22,6 +23,7 @@ struct IntegratorConfig {
   std::size_t local_size = 64;
   std::uint32_t megakernel_depth = 0;  // the megakernel's stack, from the device's program
   bool profile = false;            // per-kernel device times and rays by kind (--stats)
+  BusyTimeline* timeline = nullptr;  // the device's, shared by its lanes (profiling only)
 };
 
 class Integrator {

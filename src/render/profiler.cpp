@@ -10,18 +10,16 @@ void fill_zero(DeviceContext& device, const Global<cl_ulong>& buffer, std::size_
   device.queue().enqueue_fill_buffer(buffer.buffer, &zero, sizeof zero, 0, sizeof zero * count);
 }
 
-double seconds_of(const compute::event& e) {
-  return static_cast<double>(e.get_profiling_info<cl_ulong>(CL_PROFILING_COMMAND_END) -
-                             e.get_profiling_info<cl_ulong>(CL_PROFILING_COMMAND_START)) *
-         1e-9;
-}
+
 
 }  // namespace
 
 Profiler::Profiler(DeviceContext& device, const compute::program& program, bool enabled,
-                   std::size_t local_size, std::uint32_t passes, std::uint32_t partial_rows)
+                   std::size_t local_size, std::uint32_t passes, std::uint32_t partial_rows,
+                   BusyTimeline* timeline)
     : device_(device),
       enabled_(enabled),
+      timeline_(timeline),
       local_size_(local_size),
       passes_(passes),
       partial_(allocate<cl_uint>(device, enabled ? std::size_t{partial_rows} * CLRT_RAY_KINDS : 1,
@@ -71,7 +69,10 @@ void Profiler::drop_wave(std::size_t mark) {
 
 void Profiler::settle() {
   for (const Timed& t : timed_) {
-    const double seconds = seconds_of(t.event);
+    const auto start = t.event.get_profiling_info<cl_ulong>(CL_PROFILING_COMMAND_START);
+    const auto end = t.event.get_profiling_info<cl_ulong>(CL_PROFILING_COMMAND_END);
+    if (timeline_) timeline_->add(start, end);
+    const double seconds = static_cast<double>(end - start) * 1e-9;
     KernelStats& k = kernels_[t.kernel];
     ++k.launches;
     k.device_seconds += seconds;

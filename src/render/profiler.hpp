@@ -12,6 +12,7 @@
 
 #include "device/device_context.hpp"
 #include "device/typed_kernel.hpp"
+#include "render/busy_timeline.hpp"
 #include "render/render_stats.hpp"
 #include "render/stage_args.hpp"
 
@@ -20,8 +21,10 @@ namespace clrt {
 class Profiler {
  public:
   // `passes`: the most passes a wave can take (the deepest ray plus one).
+  // `timeline` (may be null) collects the kernels' execution intervals.
   Profiler(DeviceContext& device, const compute::program& program, bool enabled,
-           std::size_t local_size, std::uint32_t passes, std::uint32_t partial_rows);
+           std::size_t local_size, std::uint32_t passes, std::uint32_t partial_rows,
+           BusyTimeline* timeline = nullptr);
 
   bool enabled() const { return enabled_; }
   std::size_t local_size() const { return local_size_; }
@@ -63,6 +66,7 @@ class Profiler {
 
   DeviceContext& device_;
   bool enabled_;
+  BusyTimeline* timeline_;
   std::size_t local_size_;
   std::uint32_t passes_;
   std::vector<Timed> timed_;

@@ -28,6 +28,8 @@ struct RenderOptions {
   IntegratorKind integrator = IntegratorKind::Wavefront;
   // Work-items per work-group; 0 picks the device class's (src/device/device_tuning.cpp).
   std::size_t local_size = 0;
+  // Waves in flight per device (each with its own queues); 0 picks the device class's.
+  std::uint32_t lanes = 0;
   // The pixels to render (pbrt's pixel bounds); the whole image when empty. Every pixel of a
   // region has the bits of the same pixel of the full render.
   std::optional<PixelRect> region;

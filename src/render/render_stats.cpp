@@ -31,6 +31,13 @@ double RenderStats::device_seconds() const {
   return sum;
 }
 
+double RenderStats::device_busy() const {
+  if (devices.empty() || render_seconds <= 0) return 0;
+  double sum = 0;
+  for (const DeviceReport& d : devices) sum += d.busy_seconds;
+  return sum / static_cast<double>(devices.size()) / render_seconds;
+}
+
 void RenderStats::merge(const RenderStats& o) {
   devices.insert(devices.end(), o.devices.begin(), o.devices.end());
   for (unsigned k = 0; k < CLRT_RAY_KINDS; ++k) rays[k] += o.rays[k];
@@ -58,7 +65,8 @@ std::string RenderStats::to_text() const {
       << " samples per pixel)\n";
   for (const DeviceReport& d : devices)
     out << "device:        " << d.name << " (" << d.platform << ", driver " << d.driver << ", "
-        << d.opencl_c << "; local size " << d.local_size << ", wavefront " << d.wavefront << ")\n";
+        << d.opencl_c << "; local size " << d.local_size << ", wavefront " << d.wavefront
+        << ", lanes " << d.lanes << ")\n";
   out << "integrator:    " << integrator << "\n";
   out << "rays:          " << total_rays() << " (";
   for (unsigned k = 0; k < CLRT_RAY_KINDS; ++k)
@@ -66,7 +74,8 @@ std::string RenderStats::to_text() const {
   out << ")\n";
   out << "throughput:    " << std::setprecision(2) << per_second(total_rays(), render_seconds) / 1e6
       << " Mrays/s, " << per_second(camera_samples(), render_seconds) / 1e6
-      << " Msamples/s over the render time; kernels busy " << device_seconds() << " s\n"
+      << " Msamples/s over the render time; devices busy " << std::setprecision(0)
+      << 100 * device_busy() << "% of it\n"
       << std::setprecision(3);
   out << "time (s):      load " << load_seconds << ", bvh " << bvh_seconds << ", kernel build "
       << build_seconds << ", render " << render_seconds << ", write " << write_seconds
@@ -108,13 +117,16 @@ nlohmann::json RenderStats::to_json() const {
                             {"opencl_c", d.opencl_c},
                             {"class", d.device_class},
                             {"local_size", d.local_size},
-                            {"wavefront", d.wavefront}});
+                            {"wavefront", d.wavefront},
+                            {"lanes", d.lanes},
+                            {"busy_seconds", d.busy_seconds}});
   json by_kind = json::object();
   for (unsigned k = 0; k < CLRT_RAY_KINDS; ++k) by_kind[ray_kind_name(k)] = rays[k];
   by_kind["total"] = total_rays();
   j["rays"] = by_kind;
   j["mrays_per_second"] = per_second(total_rays(), render_seconds) / 1e6;
   j["samples_per_second"] = per_second(camera_samples(), render_seconds);
+  j["device_busy"] = device_busy();
   j["seconds"] = {{"load", load_seconds},     {"bvh", bvh_seconds},
                   {"kernel_build", build_seconds}, {"render", render_seconds},
                   {"write", write_seconds},   {"total", total_seconds},

@@ -19,6 +19,8 @@ struct DeviceReport {
   std::string platform, name, driver, opencl_c, device_class;
   std::size_t local_size = 0;
   std::uint64_t wavefront = 0;  // rays per queue (camera samples per launch for the megakernel)
+  std::uint32_t lanes = 0;      // waves in flight
+  double busy_seconds = 0;      // time some kernel of this device was executing
 };
 
 struct PassStats {
@@ -55,6 +57,8 @@ struct RenderStats {
   std::uint64_t total_rays() const;
   std::uint64_t camera_samples() const { return rays[CLRT_RAY_CAMERA]; }
   double device_seconds() const;  // the sum over kernels
+  // The share of the render time the devices were executing kernels (their mean).
+  double device_busy() const;
   // Another device's share of the same render (its rays, passes, kernels and buffers).
   void merge(const RenderStats& other);
   std::string to_text() const;

@@ -28,6 +28,7 @@ DeviceTuning tuning_of(const DeviceEntry& entry, const RenderOptions& options) {
   DeviceTuning t = tuning_for(classify(entry.device));
   if (options.local_size) t.local_size = options.local_size;
   if (options.wavefront) t.wavefront = options.wavefront;
+  if (options.lanes) t.lanes = options.lanes;
   return t;
 }
 
@@ -41,13 +42,22 @@ DeviceReport report_of(const DeviceEntry& entry, const DeviceTuning& tuning) {
   r.device_class = class_name(tuning.device_class);
   r.local_size = tuning.local_size;
   r.wavefront = tuning.wavefront;
+  r.lanes = tuning.lanes;
   return r;
 }
 
+// One wave in flight: its own command queue and integrator (with its own queues).
+struct Lane {
+  std::unique_ptr<DeviceContext> context;
+  std::unique_ptr<Integrator> integrator;
+};
+
+// One device: the frame every lane reads, and the lanes.
 struct DeviceWorker {
   std::unique_ptr<DeviceContext> context;
   std::unique_ptr<DeviceFrame> frame;
-  std::unique_ptr<Integrator> integrator;
+  std::vector<Lane> lanes;
+  std::unique_ptr<BusyTimeline> timeline;
   DeviceReport report;
 };
 
@@ -116,12 +126,20 @@ Renderer::Renderer(const Scene& scene, const RenderSetup& setup)
     w.context = std::make_unique<DeviceContext>(entry);
     const compute::program program = build_renderer_program(*w.context);
     w.frame = std::make_unique<DeviceFrame>(*w.context, frame, geometry);
+    w.timeline = std::make_unique<BusyTimeline>();
     IntegratorConfig config;
     config.capacity = tuning.wavefront;
     config.local_size = tuning.local_size;
     config.megakernel_depth = tuning.megakernel_depth;
     config.profile = setup.profile;
-    w.integrator = make_integrator(options_.integrator, *w.context, program, *w.frame, config);
+    config.timeline = w.timeline.get();
+    for (std::uint32_t k = 0; k < tuning.lanes; ++k) {
+      Lane lane;
+      lane.context = std::make_unique<DeviceContext>(w.context->lane());
+      lane.integrator =
+          make_integrator(options_.integrator, *lane.context, program, *w.frame, config);
+      w.lanes.push_back(std::move(lane));
+    }
     w.report = report_of(entry, tuning);
     devices_->workers.push_back(std::move(w));
   }
@@ -142,12 +160,14 @@ FloatImage Renderer::render(const PixelRect& region, Progress* progress) {
       region.height != static_cast<std::uint32_t>(options_.height))
     image.placement = Placement{static_cast<int>(region.x), static_cast<int>(region.y),
                                 options_.width, options_.height};
-  std::vector<DeviceWorker>& workers = devices_->workers;
+  std::vector<Integrator*> workers;
+  for (DeviceWorker& d : devices_->workers)
+    for (Lane& lane : d.lanes) workers.push_back(lane.integrator.get());
   RowDealer dealer(region);
   std::vector<std::exception_ptr> errors(workers.size());
   const auto work = [&](std::size_t i) {
     try {
-      Integrator& integrator = *workers[i].integrator;
+      Integrator& integrator = *workers[i];
       PixelRect band;
       while (dealer.next(integrator.pixels_per_wave(), band)) {
         const std::uint64_t offset = std::uint64_t{band.y - region.y} * region.width;
@@ -179,9 +199,13 @@ void Renderer::report(RenderStats& stats) {
   const auto start = Clock::now();
   RenderStats own;
   for (DeviceWorker& w : devices_->workers) {
-    w.integrator->harvest(own);
+    own.device_bytes += w.frame->bytes;
+    for (Lane& lane : w.lanes) {
+      lane.integrator->harvest(own);
+      own.device_bytes += lane.integrator->device_bytes();
+    }
     own.devices.push_back(w.report);
-    own.device_bytes += w.frame->bytes + w.integrator->device_bytes();
+    own.devices.back().busy_seconds = w.timeline->take_busy_seconds();
   }
   stats.merge(own);
   stats.render_seconds += render_seconds_ + seconds_since(start);

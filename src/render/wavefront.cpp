@@ -26,7 +26,7 @@ WavefrontIntegrator::WavefrontIntegrator(DeviceContext& device, const compute::p
       queues_(device, queue_capacity(config, frame), frame.host.params.shadow_samples),
       resolver_(device, program, queues_.capacity(), wave_pixels_),
       profiler_(device, program, config.profile, config.local_size, pass_limit(frame),
-                queues_.capacity() / Profiler::kCountChunk + 1),
+                queues_.capacity() / Profiler::kCountChunk + 1, config.timeline),
       compactor_(device, program,
                  std::max(2 * std::size_t{queues_.capacity()}, queues_.shadow_slots_per_chunk())),
       generate_(program),

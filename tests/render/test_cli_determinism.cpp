@@ -1,6 +1,6 @@
 // The clrt executable gives the same bytes for the same scene and seed whatever the run: twice
 // over, with other --wavefront sizes (including one small enough that waves restart), on one
-// PoCL thread, on two devices splitting the pixels, with another local size, with the megakernel,
+// PoCL thread, on two devices splitting the pixels, with another local size, with one or three waves in flight, with the megakernel,
 // and the same as clrt::render() in this process. PFM output holds the unclamped
 // floats, so equal files mean bit-identical renders.
 #include <catch2/catch.hpp>
@@ -30,6 +30,8 @@ const std::vector<Run> kRuns = {
     {"one PoCL thread", "", "POCL_MAX_PTHREAD_COUNT=1"},
     {"two devices sharing the image", "--device all --wavefront 1024", "POCL_DEVICES='pthread pthread'"},
     {"local size 128", "--local-size 128", ""},
+    {"one lane", "--lanes 1", ""},
+    {"three lanes of small waves", "--lanes 3 --wavefront 1024", ""},
     {"the megakernel", "--integrator megakernel", ""},
     {"the megakernel on two devices", "--integrator megakernel --device all --wavefront 1024",
      "POCL_DEVICES='pthread pthread'"},

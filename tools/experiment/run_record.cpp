@@ -51,8 +51,6 @@ nlohmann::json run_once(const Plan& plan, const RunKey& key, const std::string& 
   record.update(stats);
   record["process_seconds"] = p.wall_seconds;
   record["peak_bytes"] = p.peak_rss_bytes;
-  const double render = stats["seconds"]["render"].get<double>();
-  record["device_busy"] = render > 0 ? stats["seconds"]["device"].get<double>() / render : 0.0;
   return record;
 }
 

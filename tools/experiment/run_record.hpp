@@ -15,8 +15,8 @@ struct RunKey {
 };
 
 // Runs clrt for `key`, writing its image to `image`. The record holds the run's settings,
-// "exit_code", and when it succeeded clrt's statistics plus "process_seconds", "peak_bytes" and
-// "device_busy" (kernel time over render time); when it failed, "error" with clrt's message.
+// "exit_code", and when it succeeded clrt's statistics plus "process_seconds" and "peak_bytes";
+// when it failed, "error" with clrt's message.
 nlohmann::json run_once(const Plan& plan, const RunKey& key, const std::string& image);
 
 // How `image` compares with `reference`: "identical" (the same bytes) or else the PSNR, the
