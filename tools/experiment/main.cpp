@@ -46,6 +46,16 @@ void write_file(const fs::path& path, const std::string& text) {
   if (!out) throw std::runtime_error("cannot write " + path.string());
 }
 
+// Installed, clrt and the plot script sit beside this program (bin/, share/clrt/); in the build
+// tree they are where the build put them.
+std::string installed_or(const fs::path& relative, const std::string& built) {
+  std::error_code error;
+  const fs::path self = fs::read_symlink("/proc/self/exe", error);
+  if (!error && fs::exists(self.parent_path() / relative))
+    return (self.parent_path() / relative).lexically_normal().string();
+  return built;
+}
+
 std::string image_name(const RunKey& k, const std::string& format) {
   return "s" + std::to_string(k.scene) + "-d" + std::to_string(k.device) + "-v" +
          std::to_string(k.variant) + "-r" + std::to_string(k.repeat) + "." + format;
@@ -95,10 +105,11 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", std::string(clrt_version_string()));
   std::vector<std::string> scene_paths, device_specs = {"cpu"}, extras;
   std::string integrators = "wavefront", wavefronts, local_sizes, python = CLRT_PYTHON3;
-  std::string plot_script = CLRT_PLOT_SCRIPT;
+  const std::string plot_script =
+      installed_or("../share/clrt/plot_experiment.py", CLRT_PLOT_SCRIPT);
   bool plots = true;
   Plan plan;
-  plan.clrt = CLRT_EXE;
+  plan.clrt = installed_or("clrt", CLRT_EXE);
   plan.resolution = "1280x720";
   plan.out_dir = "experiment";
   app.add_option("scenes", scene_paths, ".ray or .nff files, or folders of them")->required();

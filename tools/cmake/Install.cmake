@@ -1,0 +1,15 @@
+# `cmake --install build [--prefix DIR]`: clrt, its tools, the plot script they run and the
+# documentation. The kernels are compiled into the executables, so nothing else is needed at
+# run time.
+include(GNUInstallDirs)
+
+set(clrt_installed_programs clrt clrt-img clrt-experiment clrt-make-scenes clrt-bench-bvh)
+foreach(optional clrt-mpi clrt-embree-compare)
+  if(TARGET ${optional})
+    list(APPEND clrt_installed_programs ${optional})
+  endif()
+endforeach()
+install(TARGETS ${clrt_installed_programs} RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+install(PROGRAMS tools/experiment/plot_experiment.py DESTINATION ${CMAKE_INSTALL_DATADIR}/clrt)
+install(FILES README.md DESTINATION ${CMAKE_INSTALL_DOCDIR})
+install(DIRECTORY docs/ DESTINATION ${CMAKE_INSTALL_DOCDIR} FILES_MATCHING PATTERN "*.md")

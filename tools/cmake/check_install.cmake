@@ -1,0 +1,21 @@
+# Installs the build tree BUILD into PREFIX and checks that the programs, the plot script and the
+# documentation are there and that the installed programs run.
+execute_process(COMMAND ${CMAKE_COMMAND} --install ${BUILD} --prefix ${PREFIX}
+                RESULT_VARIABLE status OUTPUT_QUIET)
+if(NOT status EQUAL 0)
+  message(FATAL_ERROR "cmake --install failed (${status})")
+endif()
+foreach(file bin/clrt bin/clrt-img bin/clrt-experiment bin/clrt-make-scenes bin/clrt-bench-bvh
+             share/clrt/plot_experiment.py share/doc/clrt/README.md
+             share/doc/clrt/scene-format.md share/doc/clrt/images.md)
+  if(NOT EXISTS ${PREFIX}/${file})
+    message(FATAL_ERROR "cmake --install did not install ${file}")
+  endif()
+endforeach()
+foreach(program clrt clrt-img clrt-experiment)
+  execute_process(COMMAND ${PREFIX}/bin/${program} --version RESULT_VARIABLE status
+                  OUTPUT_VARIABLE version)
+  if(NOT status EQUAL 0 OR NOT version MATCHES "clrt [0-9]")
+    message(FATAL_ERROR "the installed ${program} --version failed: ${version}")
+  endif()
+endforeach()
