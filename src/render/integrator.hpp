@@ -11,6 +11,7 @@
 #include "render/busy_timeline.hpp"
 #include "render/device_frame.hpp"
 #include "render/pixel_rect.hpp"
+#include "render/pixel_store.hpp"
 #include "render/render_stats.hpp"
 
 namespace clrt {
@@ -29,8 +30,8 @@ struct IntegratorConfig {
 class Integrator {
  public:
   virtual ~Integrator() = default;
-  // Renders `rect` into rgb[3 * rect.pixel_count()], its pixels in row-major order.
-  virtual void render(const PixelRect& rect, float* rgb) = 0;
+  // Renders `rect`, its pixels in row-major order, into `store` from its pixel `first` on.
+  virtual void render(const PixelRect& rect, PixelStore& store, std::uint64_t first) = 0;
   // Pixels one wave takes: a good size for a piece of work to hand this integrator.
   virtual std::uint32_t pixels_per_wave() const = 0;
   // Waits for the device and adds what was rendered since the last call to `stats`.

@@ -29,7 +29,7 @@ MegakernelIntegrator::MegakernelIntegrator(DeviceContext& device, const compute:
   check_megakernel_depth(frame.host.params.max_depth, config.megakernel_depth);
 }
 
-void MegakernelIntegrator::render(const PixelRect& rect, float* rgb) {
+void MegakernelIntegrator::render(const PixelRect& rect, PixelStore& store, std::uint64_t first) {
   const std::uint64_t total = rect.pixel_count();
   for (std::uint64_t done = 0; done < total;) {
     const auto n = static_cast<std::uint32_t>(std::min<std::uint64_t>(wave_pixels_, total - done));
@@ -41,7 +41,7 @@ void MegakernelIntegrator::render(const PixelRect& rect, float* rgb) {
                      samples, 0);
     profiler_.count_rows(ray_counts_, samples, 0);
     profiler_.commit_wave();
-    resolver_.resolve(profiler_, samples_per_pixel_, n, rgb + 3 * done);
+    resolver_.resolve(profiler_, samples_per_pixel_, n, store, first + done);
     profiler_.settle();
     ++waves_;
     done += n;

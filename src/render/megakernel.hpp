@@ -13,7 +13,7 @@ class MegakernelIntegrator final : public Integrator {
   MegakernelIntegrator(DeviceContext& device, const compute::program& program,
                        const DeviceFrame& frame, const IntegratorConfig& config);
 
-  void render(const PixelRect& rect, float* rgb) override;
+  void render(const PixelRect& rect, PixelStore& store, std::uint64_t first) override;
   std::uint32_t pixels_per_wave() const override { return wave_pixels_; }
   void harvest(RenderStats& stats) override;
   std::uint64_t device_bytes() const override;

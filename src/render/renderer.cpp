@@ -150,16 +150,26 @@ Renderer::Renderer(const Scene& scene, const RenderSetup& setup)
 
 Renderer::~Renderer() = default;
 
-FloatImage Renderer::render(const PixelRect& region, Progress* progress) {
+AnyImage Renderer::render(const PixelRect& region, bool eight_bit, Progress* progress) {
   const auto start = Clock::now();
-  FloatImage image;
-  image.width = static_cast<int>(region.width);
-  image.height = static_cast<int>(region.height);
-  image.rgb.assign(3 * region.pixel_count(), 0.0f);
+  std::optional<Placement> placement;
   if (region.width != static_cast<std::uint32_t>(options_.width) ||
       region.height != static_cast<std::uint32_t>(options_.height))
-    image.placement = Placement{static_cast<int>(region.x), static_cast<int>(region.y),
-                                options_.width, options_.height};
+    placement = Placement{static_cast<int>(region.x), static_cast<int>(region.y), options_.width,
+                          options_.height};
+  const int width = static_cast<int>(region.width), height = static_cast<int>(region.height);
+  AnyImage image;
+  std::unique_ptr<PixelStore> store;
+  if (eight_bit) {
+    Rgba8Image& bytes = image.emplace<Rgba8Image>(
+        width, height, std::vector<std::vector<std::uint8_t>>(1), placement);
+    bytes.frames[0].resize(4 * region.pixel_count());
+    store = std::make_unique<BytePixelStore>(bytes);
+  } else {
+    FloatImage& floats = image.emplace<FloatImage>(
+        width, height, std::vector<float>(3 * region.pixel_count()), placement);
+    store = std::make_unique<FloatPixelStore>(floats);
+  }
   std::vector<Integrator*> workers;
   for (DeviceWorker& d : devices_->workers)
     for (Lane& lane : d.lanes) workers.push_back(lane.integrator.get());
@@ -171,7 +181,7 @@ FloatImage Renderer::render(const PixelRect& region, Progress* progress) {
       PixelRect band;
       while (dealer.next(integrator.pixels_per_wave(), band)) {
         const std::uint64_t offset = std::uint64_t{band.y - region.y} * region.width;
-        integrator.render(band, image.rgb.data() + 3 * offset);
+        integrator.render(band, *store, offset);
         if (progress) progress->advance(band.pixel_count());
       }
     } catch (...) {
@@ -222,7 +232,7 @@ FloatImage render(const Scene& scene, const RenderSetup& setup, RenderStats& sta
   Renderer renderer(scene, setup);
   const PixelRect region = render_region(setup.options);
   Progress progress(region.pixel_count(), setup.progress);
-  FloatImage image = renderer.render(region, &progress);
+  FloatImage image = std::get<FloatImage>(renderer.render(region, false, &progress));
   progress.finish();
   renderer.report(stats);
   stats.width = region.width;

@@ -39,9 +39,11 @@ class Renderer {
   Renderer(const Renderer&) = delete;
   Renderer& operator=(const Renderer&) = delete;
 
-  // Renders `region` of the image. The image records its placement in the frame unless it is
-  // the whole frame; every pixel has the bits of the same pixel of a full render.
-  FloatImage render(const PixelRect& region, Progress* progress = nullptr);
+  // Renders `region` of the image, as linear floats or, `eight_bit`, quantised as the contract
+  // says (for the formats that store 8 bits: a quarter of the memory). The image records its
+  // placement in the frame unless it is the whole frame; every pixel has the bits of the same
+  // pixel of a full render.
+  AnyImage render(const PixelRect& region, bool eight_bit, Progress* progress = nullptr);
 
   // The camera of the renders that follow (an animation's next frame).
   void set_camera(const dev::Camera& camera);
@@ -58,7 +60,7 @@ class Renderer {
   double render_seconds_ = 0;
 };
 
-// The whole render of the command line: the options' region with a progress bar.
+// One render of the options' region, in floats, with a progress bar when asked.
 FloatImage render(const Scene& scene, const RenderSetup& setup, RenderStats& stats);
 
 }  // namespace clrt

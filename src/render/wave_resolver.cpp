@@ -21,16 +21,12 @@ void WaveResolver::clear(std::uint32_t samples) {
 }
 
 void WaveResolver::resolve(Profiler& profiler, std::uint32_t samples_per_pixel,
-                           std::uint32_t pixel_count, float* rgb) {
+                           std::uint32_t pixel_count, PixelStore& store, std::uint64_t first) {
   profiler.launch(resolve_, {sample_colour_, samples_per_pixel, pixel_count, pixels_},
                   pixel_count, 0);
   device_.queue().enqueue_read_buffer(pixels_.buffer, 0, sizeof(dev::f4) * pixel_count,
                                       host_pixels_.data());
-  for (std::uint32_t p = 0; p < pixel_count; ++p) {
-    rgb[3 * p + 0] = host_pixels_[p].x;
-    rgb[3 * p + 1] = host_pixels_[p].y;
-    rgb[3 * p + 2] = host_pixels_[p].z;
-  }
+  store.store(first, pixel_count, host_pixels_.data());
 }
 
 std::uint64_t WaveResolver::bytes() const {

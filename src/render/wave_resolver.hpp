@@ -4,6 +4,7 @@
 
 #include <vector>
 
+#include "render/pixel_store.hpp"
 #include "render/profiler.hpp"
 
 namespace clrt {
@@ -17,9 +18,9 @@ class WaveResolver {
   const Global<dev::f4>& sample_colour() const { return sample_colour_; }
   void clear(std::uint32_t samples);
 
-  // Resolves the wave's pixels and copies them into rgb[3 * pixel_count].
+  // Resolves the wave's pixels and stores them as pixels [first, first + pixel_count).
   void resolve(Profiler& profiler, std::uint32_t samples_per_pixel, std::uint32_t pixel_count,
-               float* rgb);
+               PixelStore& store, std::uint64_t first);
 
   std::uint64_t bytes() const;
 

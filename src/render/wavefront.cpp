@@ -40,12 +40,12 @@ std::uint64_t WavefrontIntegrator::device_bytes() const {
   return queues_.bytes() + resolver_.bytes();
 }
 
-void WavefrontIntegrator::render(const PixelRect& rect, float* rgb) {
+void WavefrontIntegrator::render(const PixelRect& rect, PixelStore& store, std::uint64_t first) {
   const std::uint64_t total = rect.pixel_count();
   std::uint64_t done = 0;
   while (done < total) {
     const auto n = static_cast<std::uint32_t>(std::min<std::uint64_t>(wave_pixels_, total - done));
-    if (render_wave(rect, static_cast<std::uint32_t>(done), n, rgb + 3 * done)) {
+    if (render_wave(rect, static_cast<std::uint32_t>(done), n, store, first + done)) {
       done += n;
       continue;
     }
@@ -59,7 +59,8 @@ void WavefrontIntegrator::render(const PixelRect& rect, float* rgb) {
 }
 
 bool WavefrontIntegrator::render_wave(const PixelRect& rect, std::uint32_t first,
-                                      std::uint32_t pixel_count, float* rgb) {
+                                      std::uint32_t pixel_count, PixelStore& store,
+                                      std::uint64_t stored_at) {
   const std::size_t mark = profiler_.wave_mark();
   const std::uint32_t samples = pixel_count * samples_per_pixel_;
   resolver_.clear(samples);
@@ -92,7 +93,7 @@ bool WavefrontIntegrator::render_wave(const PixelRect& rect, std::uint32_t first
     counted_.passes[p].max_queue = std::max(counted_.passes[p].max_queue, passes[p].max_queue);
   }
   ++counted_.waves;
-  resolver_.resolve(profiler_, samples_per_pixel_, pixel_count, rgb);
+  resolver_.resolve(profiler_, samples_per_pixel_, pixel_count, store, stored_at);
   profiler_.settle();
   return true;
 }

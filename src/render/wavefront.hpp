@@ -18,7 +18,7 @@ class WavefrontIntegrator final : public Integrator {
   WavefrontIntegrator(DeviceContext& device, const compute::program& program,
                       const DeviceFrame& frame, const IntegratorConfig& config);
 
-  void render(const PixelRect& rect, float* rgb) override;
+  void render(const PixelRect& rect, PixelStore& store, std::uint64_t first) override;
   std::uint32_t pixels_per_wave() const override { return wave_pixels_; }
   void harvest(RenderStats& stats) override;
   std::uint64_t device_bytes() const override;
@@ -26,7 +26,7 @@ class WavefrontIntegrator final : public Integrator {
  private:
   // False when a pass spawned more rays than a queue holds: the caller retries with fewer pixels.
   bool render_wave(const PixelRect& rect, std::uint32_t first, std::uint32_t pixel_count,
-                   float* rgb);
+                   PixelStore& store, std::uint64_t stored_at);
   void run_pass(std::uint32_t pass, std::uint32_t count);
   void shade_chunk(std::uint32_t pass, std::uint32_t first, std::uint32_t count);
   bool tracing() const { return frame_.host.params.mode == CLRT_MODE_TRACE; }
