@@ -1,15 +1,12 @@
 #include "cli/options.hpp"
 
-#include <CLI/CLI.hpp>
-
-#include <algorithm>
 #include <filesystem>
-#include <iostream>
 #include <regex>
 #include <tuple>
 
+#include "cli/argument_words.hpp"
+#include "cli/tool_command_line.hpp"
 #include "render/integrator.hpp"
-#include "version.hpp"
 
 namespace clrt {
 namespace {
@@ -25,14 +22,7 @@ std::string parse_resolution(const std::string& text, CliOptions& o) {
   return {};
 }
 
-}  // namespace
-
-ParseResult parse_command_line(int argc, char** argv) {
-  ParseResult result;
-  CliOptions& o = result.options;
-  CLI::App app{"clrt: a wavefront OpenCL ray tracer for .ray scenes", "clrt"};
-  app.set_version_flag("--version", std::string(clrt_version_string()));
-  app.add_option("scene", o.scene, "the .ray scene to render");
+void add_image_options(CLI::App& app, CliOptions& o) {
   app.add_option("-o,--outfile", o.outfile,
                  "output image; the extension picks the format: .png .ppm .fsf .pfm .exr; "
                  "- writes to standard output (needs --format) (default: SCENE's name with .png)");
@@ -48,38 +38,12 @@ ParseResult parse_command_line(int argc, char** argv) {
          "EXR channels: half (default) or float")
       ->check(CLI::IsMember({"half", "float"}, CLI::ignore_case));
   app.add_option_function<std::string>(
-      "--resolution", [&](const std::string& s) {
+      "--resolution",
+      [&](const std::string& s) {
         const std::string error = parse_resolution(s, o);
         if (!error.empty()) throw CLI::ValidationError(error);
       },
       "image size WxH (overrides the scene's `resolution`)");
-  app.add_option("--spp", o.samples, "camera samples per pixel (overrides `samples`)")
-      ->check(CLI::Range(1, 1 << 16));
-  app.add_option("--max-depth", o.max_depth, "deepest reflection/refraction bounce (overrides `maxdepth`)")
-      ->check(CLI::Range(0, 1 << 16));
-  app.add_option_function<std::string>(
-         "--mode",
-         [&](const std::string& mode) {
-           o.mode = CLI::detail::to_lower(mode) == "cast" ? RenderMode::Cast : RenderMode::Trace;
-         },
-         "trace (shadows, reflection, refraction) or cast (local shading only)")
-      ->check(CLI::IsMember({"trace", "cast"}, CLI::ignore_case));
-  app.add_option("--device", o.device,
-                 "cpu, gpu, all, P:D (platform:device index) or part of a device name")
-      ->capture_default_str();
-  app.add_flag("--list-devices", o.list_devices, "list the OpenCL devices and exit");
-  app.add_option("--seed", o.seed, "seed of the random numbers (jitter, area lights)")
-      ->capture_default_str();
-  app.add_option("--wavefront", o.wavefront,
-                 "rays in flight per queue: device memory grows with it "
-                 "(default: 16384 on CPU devices, 1048576 on others)")
-      ->check(CLI::Range(1u << 10, 1u << 26));
-  app.add_option_function<std::string>(
-         "--integrator",
-         [&](const std::string& name) { o.integrator = *parse_integrator(name); },
-         "wavefront (default: one kernel per stage, queues compacted every pass) or megakernel "
-         "(one kernel walks each sample's whole ray tree; same image, for comparison)")
-      ->check(CLI::IsMember({"wavefront", "megakernel"}, CLI::ignore_case));
   for (const auto& [name, whole, field, help] :
        {std::tuple{"--pixel-bounds", true, &o.region.pixel_bounds,
                    "render only pixels x0,x1,y0,y1 (half-open; four words also do)"},
@@ -92,30 +56,90 @@ ParseResult parse_command_line(int argc, char** argv) {
           if (!error.empty()) throw CLI::ValidationError(name + " " + error);
         },
         help);
+}
+
+void add_shading_options(CLI::App& app, CliOptions& o) {
+  app.add_option("--spp", o.samples, "camera samples per pixel (overrides `samples`)")
+      ->check(CLI::Range(1, 1 << 16));
+  app.add_option("--max-depth", o.max_depth,
+                 "deepest reflection/refraction bounce (overrides `maxdepth`)")
+      ->check(CLI::Range(0, 1 << 16));
+  app.add_option_function<std::string>(
+         "--mode",
+         [&](const std::string& mode) {
+           o.mode = CLI::detail::to_lower(mode) == "cast" ? RenderMode::Cast : RenderMode::Trace;
+         },
+         "trace (shadows, reflection, refraction) or cast (local shading only)")
+      ->check(CLI::IsMember({"trace", "cast"}, CLI::ignore_case));
+  app.add_option("--seed", o.seed, "seed of the random numbers (jitter, area lights)")
+      ->capture_default_str();
+}
+
+void add_animation_options(CLI::App& app, CliOptions& o) {
+  app.add_option("--frames", o.animation.frames,
+                 "render N frames of a turntable around lookat (FSF: one file; else name-0001.png...)")
+      ->check(CLI::Range(1u, 1u << 24));
+  app.add_option("--orbit", o.animation.orbit_degrees,
+                 "degrees the camera turns over all the frames (default 360)");
+  app.add_option("--frame-range", o.animation.frame_range,
+                 "render frames FIRST:LAST only (from 1, inclusive), e.g. a farm's share");
+}
+
+void add_device_options(CLI::App& app, CliOptions& o) {
+  app.add_option("--device", o.device,
+                 "cpu, gpu, all, P:D (platform:device index) or part of a device name")
+      ->capture_default_str();
+  app.add_flag("--list-devices", o.list_devices, "list the OpenCL devices and exit");
+  app.add_option("--threads", o.threads, "CPU threads of PoCL's device (default: every core)")
+      ->check(CLI::Range(1u, 4096u));
+  app.add_option_function<std::string>(
+         "--integrator", [&](const std::string& name) { o.integrator = *parse_integrator(name); },
+         "wavefront (default: one kernel per stage, queues compacted every pass) or megakernel "
+         "(one kernel walks each sample's whole ray tree; same image, for comparison)")
+      ->check(CLI::IsMember({"wavefront", "megakernel"}, CLI::ignore_case));
+  app.add_option("--wavefront", o.wavefront,
+                 "rays in flight per queue: device memory grows with it "
+                 "(default: 16384 on CPU devices, 1048576 on others)")
+      ->check(CLI::Range(1u << 10, 1u << 26));
   app.add_option("--lanes", o.lanes,
                  "waves in flight per device, each with its own queues (default: per device class)")
       ->check(CLI::Range(1, 16));
   app.add_option("--local-size", o.local_size,
                  "work-items per work-group for every kernel (default: per device class)")
       ->check(CLI::Range(1, 1024));
-  std::string stats;
-  app.add_option("--stats", stats, "print statistics to stdout: --stats or --stats=json")
-      ->expected(0, 1)
-      ->check(CLI::IsMember({"", "text", "json"}));
+}
+
+}  // namespace
+
+ParseResult parse_command_line(int argc, char** argv) {
+  ParseResult result;
+  CliOptions& o = result.options;
+  CLI::App app{"clrt: a wavefront OpenCL ray tracer for .ray and .nff scenes", "clrt"};
+  identify_tool(app);
+  app.add_option("scene", o.scene, "the .ray or .nff scene to render");
+  add_image_options(app, o);
+  add_shading_options(app, o);
+  add_animation_options(app, o);
+  add_device_options(app, o);
+  bool stats = false;
+  std::string stats_format = "text";
+  app.add_flag("--stats", stats,
+               "print rays by kind, times and queue sizes to stdout (--stats=json: as JSON)");
+  app.add_option("--stats-format", stats_format, "text or json")
+      ->check(CLI::IsMember({"text", "json"}));
   app.add_flag("-q,--quiet", o.quiet, "print nothing but errors (no device line, no progress)");
 
+  result.exit_code =
+      parse_tool_arguments(app, regular_argument_words({argv + 1, argv + argc}));
+  if (result.exit_code) return result;
   try {
-    std::vector<std::string> args(argv + 1, argv + argc);
-    args = join_region_words(std::move(args));
-    std::reverse(args.begin(), args.end());  // CLI11 takes them last first
-    app.parse(args);
-    if (app.count("--stats")) o.stats = stats == "json" ? StatsFormat::Json : StatsFormat::Text;
+    if (stats || app.count("--stats-format"))
+      o.stats = stats_format == "json" ? StatsFormat::Json : StatsFormat::Text;
     if (o.scene.empty() && !o.list_devices) throw CLI::RequiredError("scene");
     if (o.outfile == kStdoutPath && !o.format)
       throw CLI::ValidationError("-o -", "standard output needs --format png|ppm|pfm|fsf|exr");
   } catch (const CLI::ParseError& e) {
-    const int code = app.exit(e);
-    result.exit_code = code == 0 ? 0 : 2;
+    result.exit_code = app.exit(e) == 0 ? 0 : 2;
   }
   return result;
 }

@@ -4,6 +4,7 @@
 #include <optional>
 #include <string>
 
+#include "cli/animation_options.hpp"
 #include "cli/region_options.hpp"
 #include "image/image.hpp"
 #include "render/render_options.hpp"
@@ -23,8 +24,10 @@ struct CliOptions {
   std::uint32_t wavefront = 0;  // 0: per device class, see device_tuning.cpp
   std::size_t local_size = 0;   // 0: per device class
   std::uint32_t lanes = 0;      // 0: per device class
+  std::optional<unsigned> threads;  // PoCL's CPU threads
   IntegratorKind integrator = IntegratorKind::Wavefront;
   RegionRequest region;
+  AnimationRequest animation;
   std::string device = "cpu";
   bool list_devices = false;
   StatsFormat stats = StatsFormat::None;

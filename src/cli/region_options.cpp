@@ -8,10 +8,6 @@
 namespace clrt {
 namespace {
 
-bool is_region_option(const std::string& arg) {
-  return arg == "--pixel-bounds" || arg == "--crop-window";
-}
-
 std::string numbers_text(const std::array<double, 4>& v) {
   std::ostringstream out;
   out << v[0] << "," << v[1] << "," << v[2] << "," << v[3];
@@ -19,16 +15,6 @@ std::string numbers_text(const std::array<double, 4>& v) {
 }
 
 }  // namespace
-
-std::vector<std::string> join_region_words(std::vector<std::string> args) {
-  for (std::size_t i = 0; i + 4 < args.size(); ++i) {
-    if (!is_region_option(args[i]) || args[i + 1].find(',') != std::string::npos) continue;
-    args[i] += "=" + args[i + 1] + "," + args[i + 2] + "," + args[i + 3] + "," + args[i + 4];
-    args.erase(args.begin() + static_cast<std::ptrdiff_t>(i) + 1,
-               args.begin() + static_cast<std::ptrdiff_t>(i) + 5);
-  }
-  return args;
-}
 
 std::string parse_region_numbers(const std::string& text, bool whole,
                                  std::optional<std::array<double, 4>>& out) {

@@ -6,7 +6,6 @@
 #include <array>
 #include <optional>
 #include <string>
-#include <vector>
 
 #include "render/pixel_rect.hpp"
 
@@ -16,10 +15,6 @@ struct RegionRequest {
   std::optional<std::array<double, 4>> pixel_bounds;  // whole numbers, checked when parsed
   std::optional<std::array<double, 4>> crop_window;   // fractions
 };
-
-// Rewrites `--pixel-bounds A B C D` (four words) as `--pixel-bounds=A,B,C,D` so that the
-// option parser sees one value either way.
-std::vector<std::string> join_region_words(std::vector<std::string> args);
 
 // "x0,x1,y0,y1" as four numbers; an empty string when fine, else what is wrong. Pixel bounds
 // must be whole numbers.

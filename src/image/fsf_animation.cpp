@@ -25,9 +25,17 @@ FsfAnimationWriter::FsfAnimationWriter(const ImageOutput& output, int width, int
 FsfAnimationWriter::~FsfAnimationWriter() = default;
 
 void FsfAnimationWriter::add_frame(const FloatImage& frame) {
-  if (frame.width != width_ || frame.height != height_ || written_ == frames_)
+  add_rows(image_detail::EightBitRows(frame));
+}
+
+void FsfAnimationWriter::add_frame(const Rgba8Image& frame) {
+  add_rows(image_detail::EightBitRows(frame));
+}
+
+void FsfAnimationWriter::add_rows(const image_detail::EightBitRows& rows) {
+  if (rows.width() != width_ || rows.height() != height_ || written_ == frames_)
     throw ImageError("cannot write " + name_ + ": a frame that does not fit the animation");
-  image_detail::write_fsf_frame(image_detail::EightBitRows(frame), 0, *sink_);
+  image_detail::write_fsf_frame(rows, 0, *sink_);
   ++written_;
 }
 

@@ -11,6 +11,7 @@ namespace clrt {
 
 namespace image_detail {
 class ByteSink;
+class EightBitRows;
 }
 
 class FsfAnimationWriter {
@@ -22,10 +23,13 @@ class FsfAnimationWriter {
 
   // The next frame; its size must be the animation's.
   void add_frame(const FloatImage& frame);
+  void add_frame(const Rgba8Image& frame);
   // After the last frame. Destroyed before, a file leaves nothing behind.
   void finish();
 
  private:
+  void add_rows(const image_detail::EightBitRows& rows);
+
   std::unique_ptr<image_detail::ByteSink> sink_;
   std::string name_;
   int width_, height_;

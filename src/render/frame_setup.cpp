@@ -30,7 +30,10 @@ Grid stratification_grid(unsigned n) {
 // dir(x, y) = f F + (x - w/2) R + (h/2 - y) U for continuous pixel coordinates (x, y), with
 // the focal length f = w / (2 tan(fov / 2)) in pixels (fov across the width).
 dev::Camera make_camera(const Scene& scene, const RenderOptions& options) {
-  const CameraSpec& c = scene.camera;
+  return make_camera(scene.camera, options);
+}
+
+dev::Camera make_camera(const CameraSpec& c, const RenderOptions& options) {
   const Vec3 forward = normalize(c.lookat - c.eye);
   const Vec3 right = normalize(cross(forward, c.up));
   const Vec3 up = cross(right, forward);

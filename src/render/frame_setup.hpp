@@ -17,6 +17,7 @@ struct Grid {
 Grid stratification_grid(unsigned n);
 
 dev::Camera make_camera(const Scene& scene, const RenderOptions& options);
+dev::Camera make_camera(const CameraSpec& camera, const RenderOptions& options);
 std::vector<dev::Material> make_materials(const Scene& scene);
 // Non-ambient lights in file order; ambient lights go into RenderParams::ambient.
 std::vector<dev::Light> make_lights(const Scene& scene);

@@ -31,6 +31,10 @@ double RenderStats::device_seconds() const {
   return sum;
 }
 
+double RenderStats::frames_per_second() const {
+  return per_second(frames, render_seconds + write_seconds);
+}
+
 double RenderStats::device_busy() const {
   if (devices.empty() || render_seconds <= 0) return 0;
   double sum = 0;
@@ -77,6 +81,10 @@ std::string RenderStats::to_text() const {
       << " Msamples/s over the render time; devices busy " << std::setprecision(0)
       << 100 * device_busy() << "% of it\n"
       << std::setprecision(3);
+  if (frames > 1)
+    out << "frames:        " << frames << ", " << std::setprecision(2) << frames_per_second()
+        << " frames/s (render and write)\n"
+        << std::setprecision(3);
   out << "time (s):      load " << load_seconds << ", bvh " << bvh_seconds << ", kernel build "
       << build_seconds << ", render " << render_seconds << ", write " << write_seconds
       << ", total " << total_seconds << "\n";
@@ -127,6 +135,8 @@ nlohmann::json RenderStats::to_json() const {
   j["mrays_per_second"] = per_second(total_rays(), render_seconds) / 1e6;
   j["samples_per_second"] = per_second(camera_samples(), render_seconds);
   j["device_busy"] = device_busy();
+  j["frames"] = frames;
+  j["frames_per_second"] = frames_per_second();
   j["seconds"] = {{"load", load_seconds},     {"bvh", bvh_seconds},
                   {"kernel_build", build_seconds}, {"render", render_seconds},
                   {"write", write_seconds},   {"total", total_seconds},

@@ -42,6 +42,7 @@ struct RenderStats {
   std::string scene, integrator, version;
   std::uint64_t width = 0, height = 0;     // the rendered region's size
   std::uint64_t samples_per_pixel = 0;
+  std::uint64_t frames = 1;
   std::vector<DeviceReport> devices;
   std::array<std::uint64_t, CLRT_RAY_KINDS> rays{};  // by kind, CLRT_RAY_*
   std::vector<PassStats> passes;  // index = pass = ray depth (wavefront only)
@@ -57,6 +58,8 @@ struct RenderStats {
   std::uint64_t total_rays() const;
   std::uint64_t camera_samples() const { return rays[CLRT_RAY_CAMERA]; }
   double device_seconds() const;  // the sum over kernels
+  // Frames over the time spent rendering and writing them.
+  double frames_per_second() const;
   // The share of the render time the devices were executing kernels (their mean).
   double device_busy() const;
   // Another device's share of the same render (its rays, passes, kernels and buffers).

@@ -110,15 +110,17 @@ struct Renderer::Devices {
   std::vector<DeviceWorker> workers;
 };
 
-Renderer::Renderer(const Scene& scene, const RenderSetup& setup)
+Renderer::Renderer(const Scene& scene, const RenderSetup& setup, Progress* progress)
     : options_(setup.options), devices_(std::make_unique<Devices>()) {
   check_render_setup(setup);
+  if (progress) progress->phase("building the BVH");
   const GeometryData geometry = build_geometry(scene);
   setup_stats_.bvh_seconds = geometry.build_seconds;
   setup_stats_.geometry_bytes = geometry.device_bytes();
   setup_stats_.bvh_bytes = geometry.nodes.size() * sizeof(dev::BvhNode);
   const FrameData frame = make_frame(scene, options_);
 
+  if (progress) progress->phase("building the kernels");
   const auto start = Clock::now();
   for (const DeviceEntry& entry : setup.devices) {
     const DeviceTuning tuning = tuning_of(entry, options_);
@@ -231,7 +233,8 @@ void Renderer::report(RenderStats& stats) {
 FloatImage render(const Scene& scene, const RenderSetup& setup, RenderStats& stats) {
   Renderer renderer(scene, setup);
   const PixelRect region = render_region(setup.options);
-  Progress progress(region.pixel_count(), setup.progress);
+  Progress progress(setup.progress);
+  progress.start("rendering", region.pixel_count());
   FloatImage image = std::get<FloatImage>(renderer.render(region, false, &progress));
   progress.finish();
   renderer.report(stats);

@@ -33,8 +33,9 @@ void check_render_setup(const RenderSetup& setup);
 
 class Renderer {
  public:
-  // Builds everything a render needs; checks `setup` first (check_render_setup).
-  Renderer(const Scene& scene, const RenderSetup& setup);
+  // Builds everything a render needs, naming the phases on `progress`; checks `setup` first
+  // (check_render_setup).
+  Renderer(const Scene& scene, const RenderSetup& setup, Progress* progress = nullptr);
   ~Renderer();
   Renderer(const Renderer&) = delete;
   Renderer& operator=(const Renderer&) = delete;

@@ -10,6 +10,7 @@
 
 #include "bench_scenes.hpp"
 #include "bench_trace.hpp"
+#include "cli/tool_command_line.hpp"
 #include "device/device_select.hpp"
 
 using namespace clrt;
@@ -56,7 +57,8 @@ void run_case(DeviceContext& device, const Case& c, int ray_count, int runs) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"clrt-bench-bvh: BVH build time, size and ray throughput"};
+  CLI::App app{"clrt-bench-bvh: BVH build time, size and ray throughput", "clrt-bench-bvh"};
+  identify_tool(app);
   std::vector<std::string> files;
   int ray_count = 1 << 20;
   int runs = 3;
@@ -69,7 +71,7 @@ int main(int argc, char** argv) {
   app.add_option("--runs", runs, "timed launches per measurement; the best counts")->capture_default_str();
   app.add_option("--only", only, "run only the cases whose name contains this");
   app.add_option("--device", device_spec, "OpenCL device (cpu, gpu, P:D or a name)")->capture_default_str();
-  CLI11_PARSE(app, argc, argv);
+  if (const auto status = parse_tool_arguments(app, argc, argv)) return *status;
 
   std::vector<Case> cases;
   if (with_suite || files.empty()) cases = suite();

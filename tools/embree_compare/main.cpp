@@ -7,13 +7,16 @@
 #include <vector>
 
 #include "compare_scene.hpp"
+#include "cli/tool_command_line.hpp"
 #include "device/device_context.hpp"
 #include "device/device_select.hpp"
 #include "render/renderer_program.hpp"
 #include "report.hpp"
 
 int main(int argc, char** argv) {
-  CLI::App app{"Compares clrt's intersection kernels with Embree 3 on the same rays."};
+  CLI::App app{"Compares clrt's intersection kernels with Embree 3 on the same rays.",
+               "clrt-embree-compare"};
+  clrt::identify_tool(app);
   std::vector<std::string> scenes;
   clrt::compare::CompareOptions options;
   std::string quality = "high", device_spec = "cpu";
@@ -34,7 +37,7 @@ int main(int argc, char** argv) {
   app.add_flag("--robust", robust, "RTC_SCENE_FLAG_ROBUST: watertight triangles, as clrt's");
   app.add_option("--device", device_spec, "clrt's OpenCL device (as clrt --device)")
       ->capture_default_str();
-  CLI11_PARSE(app, argc, argv);
+  if (const auto status = clrt::parse_tool_arguments(app, argc, argv)) return *status;
   options.quality = quality == "high" ? RTC_BUILD_QUALITY_HIGH : RTC_BUILD_QUALITY_MEDIUM;
   options.flags = robust ? RTC_SCENE_FLAG_ROBUST : RTC_SCENE_FLAG_NONE;
   try {

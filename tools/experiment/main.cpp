@@ -13,6 +13,7 @@
 #include <map>
 #include <thread>
 
+#include "cli/tool_command_line.hpp"
 #include "device/opencl.hpp"
 #include "experiment_plan.hpp"
 #include "process_run.hpp"
@@ -102,7 +103,7 @@ nlohmann::json run_plan(const Plan& plan) {
 int main(int argc, char** argv) {
   CLI::App app{"clrt-experiment: scenes x devices x variants x repeats, one clrt process each",
                "clrt-experiment"};
-  app.set_version_flag("--version", std::string(clrt_version_string()));
+  clrt::identify_tool(app);
   std::vector<std::string> scene_paths, device_specs = {"cpu"}, extras;
   std::string integrators = "wavefront", wavefronts, local_sizes, python = CLRT_PYTHON3;
   const std::string plot_script =
@@ -136,12 +137,7 @@ int main(int argc, char** argv) {
   app.add_option("--python", python, "the Python with matplotlib that draws the plots")
       ->capture_default_str();
   app.add_flag("!--no-plots", plots, "write no plots");
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
-    const int code = app.exit(e);
-    return code == 0 ? 0 : 2;
-  }
+  if (const auto status = clrt::parse_tool_arguments(app, argc, argv)) return *status;
   if (plan.resolution == "scene") plan.resolution.clear();
   try {
     plan.scenes = expand_scenes(scene_paths);

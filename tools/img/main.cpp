@@ -6,29 +6,21 @@
 #include <iostream>
 
 #include "command_line.hpp"
-#include "version.hpp"
+#include "cli/tool_command_line.hpp"
 
 int main(int argc, char** argv) {
   using namespace clrt::img;
   CLI::App app{"Convert, describe, compare and stitch the images clrt writes (FSF, PNG, PPM, "
                "PFM, OpenEXR).",
                "clrt-img"};
-  app.set_version_flag("--version", std::string("clrt-img, from ") + clrt_version_string());
+  clrt::identify_tool(app);
   app.require_subcommand(1);
-  app.failure_message([](const CLI::App*, const CLI::Error& error) {
-    return std::string("clrt-img: error: ") + error.what() +
-           "\nRun 'clrt-img --help' or 'clrt-img COMMAND --help' for usage.\n";
-  });
   Command command;
   add_convert(app, command);
   add_info(app, command);
   add_diff(app, command);
   add_stitch(app, command);
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& error) {
-    return app.exit(error) == 0 ? 0 : 2;
-  }
+  if (const auto status = clrt::parse_tool_arguments(app, argc, argv)) return *status;
   try {
     return command();
   } catch (const UsageError& error) {

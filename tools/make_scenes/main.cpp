@@ -4,10 +4,13 @@
 #include <exception>
 #include <string>
 
+#include "cli/tool_command_line.hpp"
 #include "large_scenes.hpp"
 
 int main(int argc, char** argv) {
-  CLI::App app{"Writes clrt's large procedural benchmark scenes and their meshes."};
+  CLI::App app{"Writes clrt's large procedural benchmark scenes and their meshes.",
+               "clrt-make-scenes"};
+  clrt::identify_tool(app);
   std::string folder = "build/scenes-large";
   double scale = 1;
   app.add_option("OUTDIR", folder, "folder to write into (created if missing)")
@@ -15,7 +18,7 @@ int main(int argc, char** argv) {
   app.add_option("--scale", scale, "multiplies every sphere, triangle and instance count")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
-  CLI11_PARSE(app, argc, argv);
+  if (const auto status = clrt::parse_tool_arguments(app, argc, argv)) return *status;
   try {
     for (const std::string& path : clrt::scenes::write_large_scenes(folder, scale))
       std::printf("%s\n", path.c_str());

@@ -1,0 +1,174 @@
+#include "cli/run_clrt.hpp"
+
+#include <sys/resource.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdlib>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "device/device_select.hpp"
+#include "image/fsf_animation.hpp"
+#include "render/frame_setup.hpp"
+#include "render/orbit.hpp"
+#include "render/renderer.hpp"
+#include "render/usage_error.hpp"
+#include "scene/scene.hpp"
+#include "version.hpp"
+
+namespace clrt {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+// Fails before any work when the image could not be written anyway: a folder that does not
+// exist or cannot be written to, or a folder given as the output.
+void check_writable(const std::string& path) {
+  namespace fs = std::filesystem;
+  std::error_code error;
+  if (fs::is_directory(path, error))
+    throw UsageError("cannot write " + path + ": it is a folder; name the image file");
+  const fs::path dir = fs::path(path).parent_path();
+  const std::string folder = dir.empty() ? "." : dir.string();
+  if (!fs::is_directory(folder, error))
+    throw UsageError("cannot write " + path + ": " + folder + " is not a folder");
+  if (access(folder.c_str(), W_OK) != 0)
+    throw UsageError("cannot write " + path + ": the folder " + folder + " is not writable");
+}
+
+ImageOutput resolve_image_output(const CliOptions& cli, const FramePlan& frames) {
+  std::error_code error;
+  if (std::filesystem::is_directory(output_path(cli), error))
+    throw UsageError("cannot write " + output_path(cli) + ": it is a folder; name the image file");
+  ImageOutput output;
+  try {
+    output = resolve_output(output_path(cli), cli.format);
+  } catch (const ImageError& e) {
+    throw UsageError(e.what());
+  }
+  if (output.is_stdout()) {
+    if (frames.count() > 1 && output.format != ImageFormat::Fsf)
+      throw UsageError("several frames go to standard output only as FSF (--format fsf)");
+    return output;
+  }
+  check_writable(output.path);
+  return output;
+}
+
+// Where frame `frame` goes: the output itself for a still or an FSF animation, else a numbered
+// file beside it.
+ImageOutput frame_output(const ImageOutput& output, const FramePlan& frames, std::uint32_t frame) {
+  if (!frames.animated || output.format == ImageFormat::Fsf) return output;
+  return {numbered_frame_path(output.path, frame, frames.frames), output.format};
+}
+
+std::string describe_written(const ImageOutput& output, const FramePlan& frames) {
+  const std::string where = output.is_stdout() ? "standard output" : output.path;
+  if (!frames.animated) return "wrote " + where;
+  const std::string count = std::to_string(frames.count()) + " frames";
+  if (output.format == ImageFormat::Fsf) return "wrote " + count + " to " + where;
+  return "wrote " + count + " as " + frame_output(output, frames, frames.first).path + "...";
+}
+
+void print_stats(const CliOptions& cli, const RenderStats& stats, const ImageOutput& output) {
+  // Standard output may carry the image itself.
+  std::ostream& out = output.is_stdout() ? std::cerr : std::cout;
+  if (cli.stats == StatsFormat::Text) out << stats.to_text();
+  if (cli.stats == StatsFormat::Json) out << stats.to_json().dump(2) << "\n";
+}
+
+int render_frames(const CliOptions& cli, const Scene& scene, const FramePlan& frames,
+                  const ImageOutput& output, RenderStats& stats, Progress& progress,
+                  Clock::time_point start) {
+  RenderSetup setup;
+  setup.options = resolve_render_options(cli, scene);
+  setup.devices = select_devices(cli.device);
+  setup.profile = cli.stats != StatsFormat::None;
+  check_render_setup(setup);
+  if (!cli.quiet)
+    for (const DeviceEntry& d : setup.devices) progress.message("device " + describe_device(d));
+
+  Renderer renderer(scene, setup, &progress);
+  const PixelRect region = render_region(setup.options);
+  const bool eight_bit = !holds_floats(output.format);
+  std::unique_ptr<FsfAnimationWriter> animation;
+  if (frames.animated && output.format == ImageFormat::Fsf)
+    animation = std::make_unique<FsfAnimationWriter>(output, static_cast<int>(region.width),
+                                                     static_cast<int>(region.height),
+                                                     frames.count());
+  for (std::uint32_t frame = frames.first; frame <= frames.last; ++frame) {
+    if (frames.animated)
+      renderer.set_camera(make_camera(
+          orbit_camera(scene.camera, frames.orbit_degrees, frame - 1, frames.frames), setup.options));
+    progress.start(frames.animated ? "frame " + std::to_string(frame) + "/" +
+                                         std::to_string(frames.frames)
+                                   : "rendering",
+                   region.pixel_count());
+    const AnyImage image = renderer.render(region, eight_bit, &progress);
+    progress.phase("writing");
+    const auto write_start = Clock::now();
+    std::visit(
+        [&](const auto& pixels) {
+          if (animation)
+            animation->add_frame(pixels);
+          else
+            write_image(frame_output(output, frames, frame), pixels, {cli.exr_pixel});
+        },
+        image);
+    stats.write_seconds += seconds_since(write_start);
+  }
+  if (animation) animation->finish();
+  renderer.report(stats);
+  stats.width = region.width;
+  stats.height = region.height;
+  stats.frames = frames.count();
+  stats.total_seconds = seconds_since(start);
+  struct rusage usage {};
+  getrusage(RUSAGE_SELF, &usage);
+  stats.peak_host_bytes = static_cast<std::uint64_t>(usage.ru_maxrss) * 1024;
+  std::ostringstream done;
+  done.precision(2);
+  done << std::fixed << describe_written(output, frames) << " (" << stats.total_seconds << " s)";
+  progress.finish(done.str());
+  print_stats(cli, stats, output);
+  return 0;
+}
+
+}  // namespace
+
+int run_clrt(const CliOptions& cli) {
+  const auto start = Clock::now();
+  // PoCL reads its thread count when the first OpenCL call loads it.
+  if (cli.threads) setenv("POCL_MAX_PTHREAD_COUNT", std::to_string(*cli.threads).c_str(), 1);
+  if (cli.list_devices) {
+    std::cout << device_table(enumerate_devices());
+    return 0;
+  }
+  const FramePlan frames = resolve_frames(cli.animation);
+  const ImageOutput output = resolve_image_output(cli, frames);
+  Progress progress(!cli.quiet);
+  RenderStats stats;
+  stats.scene = cli.scene;
+  stats.version = clrt_version_string();
+  progress.phase("loading " + cli.scene);
+  Scene scene;
+  try {
+    scene = load_scene(cli.scene);
+  } catch (const SceneError& e) {
+    progress.finish();
+    std::cerr << e.what() << "\n";
+    return 2;
+  }
+  stats.load_seconds = seconds_since(start);
+  return render_frames(cli, scene, frames, output, stats, progress, start);
+}
+
+}  // namespace clrt

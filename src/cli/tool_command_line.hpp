@@ -1,0 +1,22 @@
+// What every clrt program does with its command line: --version naming the commit, errors as
+// "NAME: error: ..." with a pointer to --help, and exit status 2 for a usage error (0 after
+// --help or --version), whatever CLI11 would return.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace clrt {
+
+// Gives `app` the --version flag and the error format; call before adding options.
+void identify_tool(CLI::App& app);
+
+// Parses `args` (the words after the program's name): nothing when the program goes on, else
+// the status to exit with (the message printed).
+std::optional<int> parse_tool_arguments(CLI::App& app, std::vector<std::string> args);
+std::optional<int> parse_tool_arguments(CLI::App& app, int argc, char** argv);
+
+}  // namespace clrt

@@ -1,0 +1,119 @@
+// The command line behaves like the tools users know: --stats is a flag in any position, every
+// error starts "clrt: error:" and usage errors exit 2, outputs that cannot be written are refused
+// before any work, --threads changes nothing but the speed, every tool has --version and exits 2
+// on a usage error, and the progress line fits the terminal and names its phases.
+#include <catch2/catch.hpp>
+
+#include <sstream>
+#include <string>
+
+#include "render_support.hpp"
+#include "scratch_dir.hpp"
+
+using namespace clrt;
+using namespace clrt::test;
+
+namespace {
+
+std::string scene_args(const ScratchDir& dir) {
+  return quoted(test_scene("test2.ray")) + " --resolution 20x12 -o " + dir.file("out.pfm");
+}
+
+}  // namespace
+
+TEST_CASE("the stats option is a flag in any position, and its JSON form too", "[cli][usage]") {
+  ScratchDir dir;
+  const std::string out = " -o " + dir.file("out.png") + " --resolution 20x12 -q ";
+  const std::string scene = quoted(test_scene("test2.ray"));
+  for (const std::string& args : {"--stats " + scene + out, scene + " --stats" + out,
+                                  out + scene + " --stats"}) {
+    const CommandResult r = run_clrt(args);
+    INFO(args << ": " << r.output);
+    CHECK(r.exit_code == 0);
+    CHECK(r.output.find("rays:") != std::string::npos);
+  }
+  const CommandResult json = run_clrt("--stats=json " + scene + out);
+  CHECK(json.exit_code == 0);
+  CHECK(json.output.find("\"rays\": {") != std::string::npos);
+}
+
+TEST_CASE("usage errors exit 2 and start 'clrt: error:'", "[cli][usage]") {
+  ScratchDir dir;
+  for (const std::string& args :
+       {std::string("--no-such-option ") + scene_args(dir), std::string("--spp 0 ") + scene_args(dir),
+        std::string("--resolution 10 ") + scene_args(dir), std::string("-q"),
+        std::string("--stats=xml ") + scene_args(dir), std::string("--threads 0 ") + scene_args(dir),
+        scene_args(dir) + " --integrator pathtracer"}) {
+    const CommandResult r = run_clrt(args);
+    INFO(args << ": " << r.output);
+    CHECK(r.exit_code == 2);
+    CHECK(r.output.rfind("clrt: error:", 0) == 0);
+  }
+}
+
+TEST_CASE("an output that is a folder or in no folder is refused before any work",
+          "[cli][usage]") {
+  ScratchDir dir;
+  const std::string scene = quoted(test_scene("test2.ray")) + " --resolution 20x12 -o ";
+  const CommandResult folder = run_clrt(scene + dir.path().string());
+  INFO(folder.output);
+  CHECK(folder.exit_code == 2);
+  CHECK(folder.output.find("it is a folder") != std::string::npos);
+  // Before any work: not even the device was chosen.
+  CHECK(folder.output.find("device ") == std::string::npos);
+  const CommandResult missing = run_clrt(scene + dir.file("no/such/folder/out.png"));
+  CHECK(missing.exit_code == 2);
+  CHECK(missing.output.find("is not a folder") != std::string::npos);
+}
+
+TEST_CASE("a thread count changes nothing but the speed", "[cli][usage]") {
+  ScratchDir dir;
+  const std::string scene = quoted(test_scene("reflect.ray")) + " -q --resolution 40x24 --spp 2 ";
+  REQUIRE(run_clrt(scene + "-o " + dir.file("all.pfm")).exit_code == 0);
+  REQUIRE(run_clrt(scene + "--threads 1 -o " + dir.file("one.pfm")).exit_code == 0);
+  CHECK(file_bytes(dir.file("all.pfm")) == file_bytes(dir.file("one.pfm")));
+}
+
+TEST_CASE("every tool names its version and exits 2 on a usage error", "[cli][usage]") {
+  for (const std::string& tool : {std::string(CLRT_EXE), std::string(CLRT_IMG_EXE),
+                                  std::string(CLRT_EXPERIMENT_EXE), std::string(CLRT_MAKE_SCENES_EXE),
+                                  std::string(CLRT_BENCH_BVH_EXE)}) {
+    INFO(tool);
+    const CommandResult version = run_program(tool, "--version");
+    CHECK(version.exit_code == 0);
+    CHECK(version.output.find("clrt 0.1.0 (commit ") != std::string::npos);
+    const CommandResult bad = run_program(tool, "--no-such-option");
+    CHECK(bad.exit_code == 2);
+    CHECK(bad.output.find(": error: ") != std::string::npos);
+  }
+}
+
+TEST_CASE("on a terminal the progress line names its phases, fits the width and ends with the file",
+          "[cli][usage]") {
+  ScratchDir dir;
+  // script(1) gives clrt a terminal of 50 columns; its output is what the terminal received.
+  const std::string command = "stty cols 50; '" + std::string(CLRT_EXE) + "' " +
+                              quoted(test_scene("reflect.ray")) + " --resolution 200x120 -o " +
+                              dir.file("out.png");
+  const CommandResult r = run_program("script", "-qec " + quoted(command) + " /dev/null");
+  INFO(r.output);
+  REQUIRE(r.exit_code == 0);
+  CHECK(r.output.find("loading ") != std::string::npos);
+  CHECK(r.output.find("rendering") != std::string::npos);
+  CHECK(r.output.find("wrote " + dir.file("out.png")) != std::string::npos);
+  // Every redraw ("\r\033[K" then the line) fits in 49 columns. The terminal turned each
+  // newline into "\r\n": turn it back.
+  std::string text = r.output;
+  for (std::size_t at; (at = text.find("\r\n")) != std::string::npos;) text.erase(at, 1);
+  std::istringstream redraws(text);
+  std::string piece;
+  // Messages (the device line, the last line) end with a newline and are not redraws.
+  int redrawn = 0;
+  while (std::getline(redraws, piece, '\r')) {
+    if (piece.rfind("\033[K", 0) != 0 || piece.find('\n') != std::string::npos) continue;
+    INFO(piece);
+    CHECK(piece.size() - 3 <= 49);
+    ++redrawn;
+  }
+  CHECK(redrawn >= 3);
+}
