@@ -11,6 +11,7 @@
 #include "geometry/bvh_layout.hpp"
 #include "geometry/instance_bounds.hpp"
 #include "geometry/geometry_data.hpp"
+#include "geometry/mesh_table.hpp"
 #include "shared/ray.h"
 
 using namespace clrt;
@@ -20,8 +21,14 @@ namespace {
 
 Vec3 to_vec(const dev::f4& v) { return {v.x, v.y, v.z}; }
 
-std::vector<Vec3> triangle_points(const GeometryData& g, std::uint32_t t) {
-  return {to_vec(g.triangles[t].v0), to_vec(g.triangles[t].v1), to_vec(g.triangles[t].v2)};
+std::vector<Vec3> points_of(const dev::Triangle& t) { return {to_vec(t.v0), to_vec(t.v1), to_vec(t.v2)}; }
+
+// The vertices of row t of the per-triangle tables, read from the scene through triangle_source.
+std::vector<Vec3> triangle_points(const Scene& scene, const GeometryData& g, std::uint32_t t) {
+  std::size_t m = 0;
+  while (t >= g.meshes[m].first_triangle + g.meshes[m].triangle_count) ++m;
+  const TriangleSource source = m < scene.meshes.size() ? TriangleSource(scene.meshes[m]) : TriangleSource(scene.triangles);
+  return points_of(source.triangle(g.triangle_source[t]));
 }
 
 // Points spread over the surface of a canonical shape, in object space: all of them for a
@@ -54,7 +61,7 @@ std::vector<Vec3> instance_points(const Scene& scene, const GeometryData& g, std
   if (g.instances[i].shape == CLRT_SHAPE_MESH) {
     const dev::Mesh& mesh = g.meshes[g.instances[i].mesh];
     for (std::uint32_t t = mesh.first_triangle; t < mesh.first_triangle + mesh.triangle_count; ++t)
-      for (const Vec3& p : triangle_points(g, t)) points.push_back(p);
+      for (const Vec3& p : triangle_points(scene, g, t)) points.push_back(p);
   } else {
     points = shape_points(scene.instances[source], 256);
   }
@@ -112,7 +119,7 @@ TreeShape check_scene_bvh(const Scene& scene, const GeometryData& g) {
   CHECK(top.depth <= CLRT_BVH_MAX_DEPTH);
   for (const dev::Mesh& mesh : g.meshes) {
     const TreeShape bottom = check_tree(g.nodes, mesh.root_node, Level::Mesh, mesh.first_triangle,
-                                        mesh.triangle_count, [&](std::uint32_t t) { return triangle_points(g, t); },
+                                        mesh.triangle_count, [&](std::uint32_t t) { return triangle_points(scene, g, t); },
                                         errors);
     CHECK(bottom.max_leaf <= CLRT_BVH_MAX_TRIANGLES);
     CHECK(bottom.depth <= CLRT_BVH_MAX_DEPTH);
@@ -136,8 +143,9 @@ TEST_CASE("geometry tables: planes first, one mesh per model, loose triangles la
   CHECK(g.meshes[0].has_normals == 1);
   CHECK(g.meshes[1].has_normals == 0);
   CHECK(g.meshes[1].triangle_count == 30);
-  CHECK(g.triangles.size() == scene.meshes[0].corners.size() / 3 + 30);
-  CHECK(g.triangle_normals.size() == g.triangles.size());
+  CHECK(g.triangle_count() == scene.meshes[0].corners.size() / 3 + 30);
+  CHECK(g.triangle_normals.size() == g.triangle_count());
+  CHECK(g.triangle_materials.size() == g.triangle_count());
   int loose_instances = 0;
   for (std::size_t i = 0; i < g.instances.size(); ++i) {
     if (g.instance_source[i] >= 0) {
@@ -151,16 +159,19 @@ TEST_CASE("geometry tables: planes first, one mesh per model, loose triangles la
     CHECK(g.instances[i].world_to_object[0].w == 0.0f);
   }
   CHECK(loose_instances == 1);
-  // Each stored loose triangle is the scene's triangle its source index names, with its material.
+  // Each loose triangle's row holds the material of the scene's triangle its source index names,
+  // each of them once.
   const dev::Mesh& loose = g.meshes[1];
+  std::set<dev::u32> sources;
   for (std::uint32_t t = loose.first_triangle; t < loose.first_triangle + loose.triangle_count; ++t) {
-    const TriangleSpec& spec = scene.triangles[g.triangle_source[t]];
-    CHECK(g.triangles[t].v1.y == static_cast<float>(spec.v1.y));
+    const TriangleSpec& spec = scene.triangles.at(g.triangle_source[t]);
     CHECK(g.triangle_materials[t] == static_cast<dev::u32>(spec.material));
+    sources.insert(g.triangle_source[t]);
   }
-  // Per triangle the device holds its normals (48 bytes) and material (4); the triangle table
-  // itself stays on the host, the BVH's leaf packets carrying the vertices.
-  CHECK(g.device_bytes() == g.instances.size() * 128 + g.meshes.size() * 16 + g.triangles.size() * 52 +
+  CHECK(sources.size() == scene.triangles.size());
+  // Per triangle the device holds its normals (48 bytes) and material (4); no triangle table: the
+  // BVH's leaf packets carry the vertices.
+  CHECK(g.device_bytes() == g.instances.size() * 128 + g.meshes.size() * 16 + g.triangle_count() * 52 +
                                 g.nodes.size() * sizeof(dev::BvhNode));
 }
 
@@ -306,22 +317,17 @@ TEST_CASE("nested boxes that the SAH peels one by one stay within the depth limi
     const BvhTree tree = build_bvh(boxes, settings);
     // Laid out as a mesh of degenerate triangles from each box's low to its high corner, whose
     // boxes are the boxes.
-    std::vector<dev::Triangle> triangles;
-    for (std::uint32_t i : tree.order) {
-      const Box& b = boxes[i];
-      const dev::f4 lo{b.lo[0], b.lo[1], b.lo[2], 0}, hi{b.hi[0], b.hi[1], b.hi[2], 0};
-      triangles.push_back({lo, hi, lo});
+    std::vector<TriangleSpec> triangles;
+    for (const Box& b : boxes) {
+      const Vec3 lo{b.lo[0], b.lo[1], b.lo[2]}, hi{b.hi[0], b.hi[1], b.hi[2]};
+      triangles.push_back({lo, hi, lo, 0});
     }
+    const TriangleSource source(triangles);
     std::vector<dev::BvhNode> table;
-    const std::uint32_t root = append_mesh_level(tree, triangles.data(), 0, CLRT_NO_HIT, table);
+    const std::uint32_t root = append_mesh_level(tree, source, 0, CLRT_NO_HIT, table);
     std::vector<std::string> errors;
     const TreeShape shape = check_tree(table, root, Level::Mesh, 0, static_cast<std::uint32_t>(boxes.size()),
-                                       [&](std::uint32_t i) {
-                                         const dev::Triangle& t = triangles[i];
-                                         return std::vector<Vec3>{{t.v0.x, t.v0.y, t.v0.z},
-                                                                  {t.v1.x, t.v1.y, t.v1.z},
-                                                                  {t.v2.x, t.v2.y, t.v2.z}};
-                                       },
+                                       [&](std::uint32_t i) { return points_of(source.triangle(tree.order[i])); },
                                        errors);
     INFO("leaf size " << leaf_size << ": " << (errors.empty() ? std::string() : errors.front()));
     CHECK(errors.empty());

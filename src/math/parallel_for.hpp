@@ -1,5 +1,5 @@
-// Work spread over every core while the BVH is built: the bottom levels of many meshes, the
-// world boxes of many instances.
+// Work spread over every core: slices of a mesh file, the bottom levels of many meshes, the
+// world boxes of many instances. (Header-only; here because every area links clrt_math.)
 #pragma once
 
 #include <algorithm>
