@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "geometry/bvh_split.hpp"
+#include "math/parallel_for.hpp"
 
 namespace clrt {
 namespace {
@@ -117,7 +118,7 @@ class Builder {
     const bool keep = node.plan.forced == must_force(node.range, depth);
     const std::vector<Child> kids = open_node(keep ? node : Child{node.range, plan(node.range, depth)}, depth);
     // Subtrees work on disjoint slices of the items, so they can be built side by side.
-    const bool parallel = depth == 0 && node.range.size() >= kParallelItems;
+    const bool parallel = depth == 0 && node.range.size() >= kParallelItems && parallel_threads() > 1;
     std::vector<std::future<Builder>> subtrees(kids.size());
     for (std::size_t k = 0; parallel && k < kids.size(); ++k)
       if (!kids[k].plan.leaf) subtrees[k] = std::async(std::launch::async, [this, &kids, k, depth] {

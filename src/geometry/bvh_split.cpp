@@ -203,30 +203,62 @@ Occupied occupied(const std::array<Bin, kMaxBins>& bins, int count) {
   return o;
 }
 
+// A small range's items with their centres and bins on every axis, worked out once.
+struct SmallRange {
+  std::uint32_t size;
+  std::array<V4, kSparseItems> center;
+  std::array<I4, kSparseItems> bin;
+
+  SmallRange(const BuildItems& items, const Range& range, const Binning& binning) : size(range.size()) {
+    for (std::uint32_t i = 0; i < size; ++i) {
+      center[i] = centers(items[range.begin + i]);
+      bin[i] = binning.bins_of(center[i]);
+    }
+  }
+};
+
 // The occupied bins of one axis of a small range, held in `store`.
-Occupied occupied_sparse(const BuildItems& items, const Range& range, const Binning& binning, int axis,
+Occupied occupied_sparse(const BuildItems& items, const Range& range, const SmallRange& small, int axis,
                          std::array<Bin, kSparseItems>& store) {
   // Keys of bin and item, sorted by insertion (a handful of them).
   std::array<std::uint32_t, kSparseItems> key;
-  const std::uint32_t n = range.size();
-  for (std::uint32_t i = 0; i < n; ++i) {
-    const int b = binning.bin(items[range.begin + i].center(axis), axis);
-    const std::uint32_t k = static_cast<std::uint32_t>(b) << 8 | i;
+  for (std::uint32_t i = 0; i < small.size; ++i) {
+    const std::uint32_t k = static_cast<std::uint32_t>(small.bin[i][axis]) << 8 | i;
     std::uint32_t j = i;
     for (; j > 0 && key[j - 1] > k; --j) key[j] = key[j - 1];
     key[j] = k;
   }
   Occupied o;
-  for (std::uint32_t i = 0; i < n; ++i) {
+  for (std::uint32_t i = 0; i < small.size; ++i) {
     const int b = static_cast<int>(key[i] >> 8);
     if (o.count == 0 || o.bin[o.count - 1] != b) {
       store[o.count] = Bin::empty();
       o.push(b, &store[o.count]);
     }
-    const BuildItem& item = items[range.begin + (key[i] & 0xff)];
-    store[o.count - 1].add(item, centers(item));
+    const std::uint32_t item = key[i] & 0xff;
+    store[o.count - 1].add(items[range.begin + item], small.center[item]);
   }
   return o;
+}
+
+// std::partition of a small range by the bins already worked out: libstdc++'s algorithm (see
+// partition_like_std), step for step, so the order is the same.
+std::uint32_t partition_small(BuildItems& items, const Range& range, const SmallRange& small, int axis,
+                              int last_left_bin) {
+  bool left[kSparseItems];
+  for (std::uint32_t i = 0; i < small.size; ++i) left[i] = small.bin[i][axis] <= last_left_bin;
+  std::uint32_t first = 0, last = small.size;
+  while (true) {
+    for (;; ++first)
+      if (first == last) return range.begin + first;
+      else if (!left[first]) break;
+    --last;
+    for (;; --last)
+      if (first == last) return range.begin + first;
+      else if (left[last]) break;
+    std::swap(items[range.begin + first], items[range.begin + last]);
+    ++first;
+  }
 }
 
 struct Candidate {
@@ -317,24 +349,33 @@ Range make_range(const BuildItems& items, std::uint32_t begin, std::uint32_t end
 
 std::optional<Split> split_sah(BuildItems& items, const Range& range, const SahCosts& costs) {
   const Binning binning(range.centroids, range.size());
-  const bool sparse = range.size() <= kSparseItems;
-  std::array<std::array<Bin, kSparseItems>, 3> sparse_bins;
-  BinGrid grid(sparse ? 0 : binning.bins);
-  if (!sparse) bin_range(items, range, binning, grid);
+  std::optional<SmallRange> small;
+  std::array<std::array<Bin, kSparseItems>, 3> small_bins;
+  BinGrid grid(range.size() <= kSparseItems ? 0 : binning.bins);
+  if (range.size() <= kSparseItems)
+    small.emplace(items, range, binning);
+  else
+    bin_range(items, range, binning, grid);
   std::array<Occupied, 3> bins;
   Candidate best;
   for (int a = 0; a < 3; ++a) {
     if (!binning.spread(a)) continue;
-    bins[a] = sparse ? occupied_sparse(items, range, binning, a, sparse_bins[a]) : occupied(grid.axis[a], binning.bins);
+    bins[a] = small ? occupied_sparse(items, range, *small, a, small_bins[a]) : occupied(grid.axis[a], binning.bins);
     sweep(bins[a], a, costs, best);
   }
   if (best.axis < 0) return std::nullopt;
 
-  BuildItem* const first = items.data() + range.begin;
-  BuildItem* const middle = partition_like_std(first, items.data() + range.end, [&](const BuildItem& item) {
-    return binning.bin(item.center(best.axis), best.axis) <= best.last_left_bin;
-  });
-  const auto mid = range.begin + static_cast<std::uint32_t>(middle - first);
+  std::uint32_t mid = 0;
+  if (small) {
+    mid = partition_small(items, range, *small, best.axis, best.last_left_bin);
+  } else {
+    BuildItem* const first = items.data() + range.begin;
+    mid = range.begin + static_cast<std::uint32_t>(
+                            partition_like_std(first, items.data() + range.end, [&](const BuildItem& item) {
+                              return binning.bin(item.center(best.axis), best.axis) <= best.last_left_bin;
+                            }) -
+                            first);
+  }
   Split split;
   // The sides are the bins' unions: no pass over the items to measure them again.
   split.left = side(range.begin, mid, bins[best.axis], true, best.last_left_bin);

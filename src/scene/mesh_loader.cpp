@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cstring>
 #include <optional>
-#include <thread>
 #include <vector>
 
 #include "math/parallel_for.hpp"
@@ -21,8 +20,7 @@ constexpr std::size_t kMinSliceBytes = std::size_t{1} << 20;
 // Whole lines, about equal in size: a few per core, so that a core that drew the quick lines
 // (faces parse faster than vertices) takes another slice.
 std::vector<std::string_view> split_into_slices(std::string_view text) {
-  const std::size_t cores = std::max(1u, std::thread::hardware_concurrency());
-  const std::size_t target = std::max(kMinSliceBytes, text.size() / (4 * cores) + 1);
+  const std::size_t target = std::max(kMinSliceBytes, text.size() / (4 * parallel_threads()) + 1);
   std::vector<std::string_view> slices;
   while (!text.empty()) {
     std::size_t end = text.size();

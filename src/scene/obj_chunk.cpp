@@ -22,6 +22,34 @@ std::string quoted(std::string_view word) {
   return "'" + std::string(word.substr(0, kMax)) + (word.size() > kMax ? "...'" : "'");
 }
 
+bool is_digit(char c) { return c >= '0' && c <= '9'; }
+
+// The common short decimal (as "-0.1234567", no exponent) read without std::from_chars, with the
+// same result: its digits make an integer m <= 2^24 and it is m / 10^k with k <= 10, where both
+// are exact floats, so one division rounds it correctly (Clinger's fast path). Returns the end
+// of the number, or nullptr for anything else (left to std::from_chars).
+const char* short_decimal(const char* p, const char* end, float& value) {
+  static constexpr float kPowers[] = {1e0f, 1e1f, 1e2f, 1e3f, 1e4f, 1e5f, 1e6f, 1e7f, 1e8f, 1e9f, 1e10f};
+  const bool negative = p < end && *p == '-';
+  if (p < end && (*p == '-' || *p == '+')) ++p;
+  std::uint32_t m = 0;
+  int fraction_digits = 0;
+  bool any = false;
+  for (; p < end && is_digit(*p); ++p, any = true) {
+    if (m > 99999999) return nullptr;
+    m = m * 10 + static_cast<std::uint32_t>(*p - '0');
+  }
+  if (p < end && *p == '.')
+    for (++p; p < end && is_digit(*p); ++p, any = true, ++fraction_digits) {
+      if (m > 99999999 || fraction_digits == 10) return nullptr;
+      m = m * 10 + static_cast<std::uint32_t>(*p - '0');
+    }
+  if (!any || m > (1u << 24) || (p < end && !is_blank(*p))) return nullptr;
+  const float v = static_cast<float>(m) / kPowers[fraction_digits];
+  value = negative ? -v : v;
+  return p;
+}
+
 // A face corner as written: indices from 1, negative ones relative; normal 0 when it has none.
 struct Corner {
   std::int64_t position = 0, normal = 0;
@@ -55,10 +83,14 @@ class LineReader {
 
   // A number in single precision, finite and in range.
   float number() {
+    float value = 0;
+    if (const char* end = short_decimal(p_, end_, value)) {
+      p_ = last_end_ = end;
+      return value;
+    }
     const char* start = p_;
     // std::from_chars takes '-' but not '+'; "+-1" must not pass as -1.
     const char* digits = *start == '+' && start + 1 < end_ && start[1] != '-' ? start + 1 : start;
-    float value = 0;
     const std::from_chars_result r = std::from_chars(digits, end_, value);
     if (r.ec == std::errc::invalid_argument || (r.ptr < end_ && !is_blank(*r.ptr))) {
       const std::size_t at = column();

@@ -3,9 +3,12 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <charconv>
+#include <random>
 #include <string>
 #include <vector>
 
+#include "math/parallel_for.hpp"
 #include "scene/mesh_loader.hpp"
 #include "scratch_dir.hpp"
 
@@ -180,6 +183,14 @@ TEST_CASE("OBJ: a file read in slices gives what one pass gives, and the first e
   const std::string text = strip_obj(quads);
   REQUIRE(text.size() > 3u << 20);
   const MeshData m = load_obj_text(text);
+  for (unsigned threads : {1u, 3u}) {
+    clrt::parallel_thread_limit = threads;
+    const MeshData other = load_obj_text(text);
+    clrt::parallel_thread_limit = 0;
+    INFO(threads << " threads");
+    CHECK(other.positions == m.positions);
+    CHECK(other.corners == m.corners);
+  }
   REQUIRE(m.positions.size() == 2 * static_cast<std::size_t>(quads) + 2);
   REQUIRE(m.corners.size() == 3 + 6 * static_cast<std::size_t>(quads));
   CHECK(std::vector<std::uint32_t>(m.corners.begin(), m.corners.begin() + 3) ==
@@ -208,4 +219,32 @@ TEST_CASE("OBJ: a file read in slices gives what one pass gives, and the first e
   // A malformed line is reported before an index out of range earlier in the file.
   CHECK_THAT(obj_error("f 1 2 999999\n" + text + "v nan 0 0\n"),
              Catch::Contains(":" + std::to_string(lines + 2) + ":3: 'nan' is not a finite number"));
+}
+
+TEST_CASE("OBJ: numbers read exactly as std::from_chars reads them, in every spelling", "[scene][obj]") {
+  // Random decimals of 1 to 12 digits, the point anywhere, some with exponents: the short ones
+  // take the reader's quick path, the others std::from_chars.
+  std::mt19937 rng(11);
+  std::string text;
+  std::vector<float> expected;
+  for (int i = 0; i < 30000; ++i) {
+    std::string digits;
+    const int count = 1 + static_cast<int>(rng() % 12);
+    for (int d = 0; d < count; ++d) digits += static_cast<char>('0' + rng() % 10);
+    const std::size_t point = rng() % (digits.size() + 1);
+    std::string word = (rng() % 2 ? "-" : "") + digits.substr(0, point) + "." + digits.substr(point);
+    if (word == "." || word == "-.") word += "0";
+    if (rng() % 8 == 0) word += "e" + std::to_string(static_cast<int>(rng() % 20) - 10);
+    float value = 0;
+    const auto result = std::from_chars(word.data(), word.data() + word.size(), value);
+    REQUIRE(result.ec == std::errc());
+    text += "v " + word + " 0 0\n";
+    expected.push_back(value);
+  }
+  text += "f 1 2 3\n";
+  const MeshData m = load_obj_text(text);
+  REQUIRE(m.positions.size() == expected.size());
+  std::size_t differ = 0;
+  for (std::size_t i = 0; i < expected.size(); ++i) differ += m.positions[i].x != static_cast<double>(expected[i]);
+  CHECK(differ == 0);
 }
