@@ -69,7 +69,9 @@ class Builder {
       return p;
     }
     const SahCosts costs{settings_.node_cost, packet_shift_};
-    const std::optional<Split> sah = split_sah(items_, r, costs);
+    // The root's node is planned before its subtrees are built side by side: its splits alone
+    // are worth spreading over the cores.
+    const std::optional<Split> sah = split_sah(items_, r, costs, depth == 0 && parallel_threads() > 1);
     // On the deepest level allowed, whatever fits in a leaf must become one.
     const bool last_level = depth + 1 >= CLRT_BVH_MAX_DEPTH;
     const bool may_be_leaf = r.size() <= settings_.max_leaf_size && r.alone == 0;

@@ -212,7 +212,7 @@ std::uint32_t append_mesh_level(const BvhTree& tree, const TriangleSource& sourc
   const std::uint32_t root = write_nodes(tree, first_slot, table, [&](const BvhLane& lane) {
     return refs[leaves.index(lane)];
   });
-  parallel_for(leaves.in_order.size(), 1024, [&](std::size_t l) {
+  parallel_for(leaves.in_order.size(), 8192, [&](std::size_t l) {
     const BvhLane& leaf = *leaves.in_order[l];
     std::size_t at = static_cast<std::size_t>(~refs[l].child);
     for (std::uint32_t done = 0; done < leaf.count; done += kPacket, at += CLRT_BVH_PACKET_BLOCKS)

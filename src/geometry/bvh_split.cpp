@@ -166,11 +166,12 @@ void bin_items(const BuildItem* items, std::size_t count, const Binning& binning
   }
 }
 
-// Fills `grid` with the bins of `range`, counted on every core when it is large: minima, maxima
-// and counts do not depend on the order they are gathered in.
-void bin_range(const BuildItems& items, const Range& range, const Binning& binning, BinGrid& grid) {
+// Fills `grid` with the bins of `range`, counted on every core when it is large and
+// `on_every_core`: minima, maxima and counts do not depend on the order they are gathered in.
+void bin_range(const BuildItems& items, const Range& range, const Binning& binning, bool on_every_core,
+               BinGrid& grid) {
   const BuildItem* first = items.data() + range.begin;
-  if (range.size() < 2 * kParallelBlock) {
+  if (!on_every_core || range.size() < 2 * kParallelBlock) {
     bin_items(first, range.size(), binning, grid);
     return;
   }
@@ -347,7 +348,7 @@ Range make_range(const BuildItems& items, std::uint32_t begin, std::uint32_t end
   return r;
 }
 
-std::optional<Split> split_sah(BuildItems& items, const Range& range, const SahCosts& costs) {
+std::optional<Split> split_sah(BuildItems& items, const Range& range, const SahCosts& costs, bool on_every_core) {
   const Binning binning(range.centroids, range.size());
   std::optional<SmallRange> small;
   std::array<std::array<Bin, kSparseItems>, 3> small_bins;
@@ -355,7 +356,7 @@ std::optional<Split> split_sah(BuildItems& items, const Range& range, const SahC
   if (range.size() <= kSparseItems)
     small.emplace(items, range, binning);
   else
-    bin_range(items, range, binning, grid);
+    bin_range(items, range, binning, on_every_core, grid);
   std::array<Occupied, 3> bins;
   Candidate best;
   for (int a = 0; a < 3; ++a) {
@@ -370,11 +371,12 @@ std::optional<Split> split_sah(BuildItems& items, const Range& range, const SahC
     mid = partition_small(items, range, *small, best.axis, best.last_left_bin);
   } else {
     BuildItem* const first = items.data() + range.begin;
-    mid = range.begin + static_cast<std::uint32_t>(
-                            partition_like_std(first, items.data() + range.end, [&](const BuildItem& item) {
-                              return binning.bin(item.center(best.axis), best.axis) <= best.last_left_bin;
-                            }) -
-                            first);
+    BuildItem* const last = items.data() + range.end;
+    const auto left = [&](const BuildItem& item) {
+      return binning.bin(item.center(best.axis), best.axis) <= best.last_left_bin;
+    };
+    BuildItem* const middle = on_every_core ? partition_like_std(first, last, left) : std::partition(first, last, left);
+    mid = range.begin + static_cast<std::uint32_t>(middle - first);
   }
   Split split;
   // The sides are the bins' unions: no pass over the items to measure them again.

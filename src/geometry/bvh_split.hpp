@@ -59,8 +59,11 @@ struct SahCosts {
 };
 
 // The cheapest split of `range` at a bin boundary of its centroid box, with items[begin, end)
-// partitioned accordingly; nothing (and the items untouched) when every centre coincides.
-std::optional<Split> split_sah(BuildItems& items, const Range& range, const SahCosts& costs);
+// partitioned accordingly; nothing (and the items untouched) when every centre coincides. With
+// `on_every_core`, a large range is binned and partitioned on every core (for the splits above
+// the subtrees that are built side by side; below them that would only add threads that wait for
+// a core). The split is the same either way.
+std::optional<Split> split_sah(BuildItems& items, const Range& range, const SahCosts& costs, bool on_every_core);
 
 // Halves `range` by count along the axis where the centres spread most.
 Split split_median(BuildItems& items, const Range& range);

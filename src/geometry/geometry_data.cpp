@@ -55,4 +55,8 @@ GeometryData build_geometry(const Scene& scene) {
   return out;
 }
 
+void release_mesh_data(Scene& scene) {
+  for (MeshData& mesh : scene.meshes) mesh = MeshData{mesh.path, {}, {}, {}, {}};
+}
+
 }  // namespace clrt

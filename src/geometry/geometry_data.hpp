@@ -36,4 +36,9 @@ struct GeometryData {
 
 GeometryData build_geometry(const Scene& scene);
 
+// Frees the positions, normals and corners of `scene`'s meshes (each keeps its path): once
+// build_geometry has run, its BVH table and per-triangle tables hold all the device needs, and
+// nothing reads the meshes again.
+void release_mesh_data(Scene& scene);
+
 }  // namespace clrt

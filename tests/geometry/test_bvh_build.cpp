@@ -497,3 +497,20 @@ TEST_CASE("boxes beyond the float range: finite centres, SAH splits, no NaN anyw
     check_scene_bvh(scene, g);
   }
 }
+
+TEST_CASE("once the geometry is built the meshes' data can be freed", "[bvh]") {
+  Scene scene;
+  scene.meshes.push_back(ball_mesh(6, 8, true));
+  scene.meshes.back().path = "ball.obj";
+  scene.instances.push_back(place_instance(ShapeKind::Mesh, Mat4::translate({1, 0, 0})));
+  scene.instances.back().mesh = 0;
+  const GeometryData before = build_geometry(scene);
+  release_mesh_data(scene);
+  const MeshData& m = scene.meshes.at(0);
+  CHECK(m.path == "ball.obj");
+  CHECK(m.positions.capacity() == 0);
+  CHECK(m.normals.capacity() == 0);
+  CHECK(m.corners.capacity() == 0);
+  CHECK(m.corner_normals.capacity() == 0);
+  CHECK(before.triangle_count() == 6 * 8 * 2);
+}
