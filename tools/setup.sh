@@ -15,7 +15,6 @@ packages=(
   catch2                         # the test framework (2.13 on Debian 12)
   libcli11-dev                   # the command line
   libpng-dev                     # PNG output and input
-  libtinyobjloader-dev           # Wavefront OBJ meshes
 )
 
 missing=()
