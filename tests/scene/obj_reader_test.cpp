@@ -72,13 +72,23 @@ TEST_CASE("OBJ: the spellings of numbers, corners and lines a file may use", "[s
   CHECK(m.corner_normals.empty());
 }
 
-TEST_CASE("OBJ: malformed face corners and indices are errors at the corner", "[scene][obj][errors]") {
+TEST_CASE("OBJ: a malformed line is an error at its line and column, never a silent 0", "[scene][obj][errors]") {
   const std::string verts = "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\n";  // lines 1-4
   struct Bad {
-    const char* face;
+    const char* line;
     const char* message;
   };
   const Bad cases[] = {
+      {"v", ":5:2: a vertex is x y z [w] or x y z r g b: found 0 numbers"},
+      {"v 1 2", ":5:6: a vertex is x y z [w] or x y z r g b: found 2 numbers"},
+      {"v 1 nan 2", ":5:5: 'nan' is not a finite number"},
+      {"v 1 2 abc", ":5:7: 'abc' is not a number"},
+      {"v inf 1 2", ":5:3: 'inf' is not a finite number"},
+      {"v 1 -Infinity 2", ":5:5: '-Infinity' is not a finite number"},
+      {"v 1e39 1 2", ":5:3: '1e39' is out of range for single precision"},
+      {"v 1 1 1e-50", ":5:7: '1e-50' is out of range for single precision"},
+      {"vn 0 1", ":5:7: a normal is x y z: found 2 numbers"},
+      {"vn 0 1 0 1", ":5:10: too many numbers for a normal (x y z)"},
       {"f 1 2 3/", ":5:7: bad face corner '3/'"},
       {"f 1 2 3//", ":5:7: bad face corner '3//'"},
       {"f 1 2 3/x", ":5:7: bad face corner '3/x'"},
@@ -99,7 +109,7 @@ TEST_CASE("OBJ: malformed face corners and indices are errors at the corner", "[
       {"v 1 2 0x10", ":5:7: '0x10' is not a number"},
   };
   for (const Bad& c : cases)
-    DYNAMIC_SECTION(c.face) { CHECK_THAT(obj_error(verts + c.face + "\nf 1 2 3\n"), Catch::Contains(c.message)); }
+    DYNAMIC_SECTION(c.line) { CHECK_THAT(obj_error(verts + c.line + "\nf 1 2 3\n"), Catch::Contains(c.message)); }
 }
 
 TEST_CASE("OBJ: a long word is quoted in part only", "[scene][obj][errors]") {
