@@ -23,11 +23,10 @@ Vec3 unit_or_zero(const Vec3& v) {
 // A vertex normal that cannot be normalised is replaced by the face normal, so that every
 // triangle of a mesh with normals interpolates valid unit vectors.
 std::array<Vec3, 3> corner_normals(const std::array<Vec3, 3>& p, const std::array<Vec3, 3>& n) {
-  const Vec3 face = unit_or_zero(cross(p[1] - p[0], p[2] - p[0]));
   std::array<Vec3, 3> out;
   for (int k = 0; k < 3; ++k) {
-    const Vec3 unit = unit_or_zero(n[k]);
-    out[k] = unit == Vec3{} ? face : unit;
+    out[k] = unit_or_zero(n[k]);
+    if (out[k] == Vec3{}) out[k] = unit_or_zero(cross(p[1] - p[0], p[2] - p[0]));
   }
   return out;
 }
