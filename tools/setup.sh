@@ -16,7 +16,6 @@ packages=(
   libcli11-dev                   # the command line
   libpng-dev                     # PNG output and input
   libopenexr-dev                 # OpenEXR output and input (half or 32-bit float HDR, tiles' data windows)
-  libtinyobjloader-dev           # Wavefront OBJ meshes
   nlohmann-json3-dev             # JSON for --stats=json and the experiment records
   python3-matplotlib             # the plots of clrt-experiment (and its test)
 )

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "math/to_float.hpp"
+
 namespace clrt {
 
 Box padded_world_box(const Vec3& lo, const Vec3& hi) {
@@ -12,8 +14,11 @@ Box padded_world_box(const Vec3& lo, const Vec3& hi) {
   const double pad = 1e-5 * length(hi - lo) + 1e-6 * std::max({far.x, far.y, far.z});
   Box out;
   for (int a = 0; a < 3; ++a) {
-    out.lo[a] = std::nextafter(static_cast<float>(lo[a] - pad), -Box::kInf);
-    out.hi[a] = std::nextafter(static_cast<float>(hi[a] + pad), Box::kInf);
+    // Beyond the float range a bound is infinite; one that is not a number (inf - inf where a
+    // transform overflowed) is unbounded.
+    const double l = lo[a] - pad, h = hi[a] + pad;
+    out.lo[a] = std::isnan(l) ? -Box::kInf : std::nextafter(to_float(l), -Box::kInf);
+    out.hi[a] = std::isnan(h) ? Box::kInf : std::nextafter(to_float(h), Box::kInf);
   }
   return out;
 }

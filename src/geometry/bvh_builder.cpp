@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "geometry/bvh_split.hpp"
+#include "math/parallel_for.hpp"
 
 namespace clrt {
 namespace {
@@ -68,7 +69,9 @@ class Builder {
       return p;
     }
     const SahCosts costs{settings_.node_cost, packet_shift_};
-    const std::optional<Split> sah = split_sah(items_, r, costs);
+    // The root's node is planned before its subtrees are built side by side: its splits alone
+    // are worth spreading over the cores.
+    const std::optional<Split> sah = split_sah(items_, r, costs, depth == 0 && parallel_threads() > 1);
     // On the deepest level allowed, whatever fits in a leaf must become one.
     const bool last_level = depth + 1 >= CLRT_BVH_MAX_DEPTH;
     const bool may_be_leaf = r.size() <= settings_.max_leaf_size && r.alone == 0;
@@ -117,7 +120,7 @@ class Builder {
     const bool keep = node.plan.forced == must_force(node.range, depth);
     const std::vector<Child> kids = open_node(keep ? node : Child{node.range, plan(node.range, depth)}, depth);
     // Subtrees work on disjoint slices of the items, so they can be built side by side.
-    const bool parallel = depth == 0 && node.range.size() >= kParallelItems;
+    const bool parallel = depth == 0 && node.range.size() >= kParallelItems && parallel_threads() > 1;
     std::vector<std::future<Builder>> subtrees(kids.size());
     for (std::size_t k = 0; parallel && k < kids.size(); ++k)
       if (!kids[k].plan.leaf) subtrees[k] = std::async(std::launch::async, [this, &kids, k, depth] {

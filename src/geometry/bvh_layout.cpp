@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "math/parallel_for.hpp"
 #include "shared/ray.h"
 
 namespace clrt {
@@ -106,14 +107,15 @@ Packet read_packet(const std::vector<dev::BvhNode>& table, std::uint32_t block) 
 
 void set_lane(dev::f4& v, std::uint32_t lane, float value) { (&v.x)[lane] = value; }
 
-dev::BvhTrianglePacket triangle_packet(const dev::Triangle* triangles, std::uint32_t first, std::uint32_t count,
-                                       std::uint32_t first_triangle, std::uint32_t only_instance) {
+// The packet of leaf items [first, first + count) of a mesh's tree.
+dev::BvhTrianglePacket triangle_packet(const BvhTree& tree, const TriangleSource& source, std::uint32_t first,
+                                       std::uint32_t count, std::uint32_t first_triangle, std::uint32_t only_instance) {
   dev::BvhTrianglePacket p{};
   p.instance = only_instance;
   for (std::uint32_t k = 0; k < kPacket; ++k) {
     p.triangle[k] = k < count ? first_triangle + first + k : CLRT_NO_HIT;
     if (k >= count) continue;
-    const dev::Triangle& t = triangles[first + k];
+    const dev::Triangle t = source.triangle(tree.order[first + k]);
     const dev::f4* vertex[3] = {&t.v0, &t.v1, &t.v2};
     for (int j = 0; j < 3; ++j) {
       set_lane(p.v[3 * j + 0], k, vertex[j]->x);
@@ -194,9 +196,8 @@ void write_top_level(const BvhTree& tree, const TopLevelItems& top, std::vector<
   });
 }
 
-std::uint32_t append_mesh_level(const BvhTree& tree, const dev::Triangle* triangles,
-                                std::uint32_t first_triangle, std::uint32_t only_instance,
-                                std::vector<dev::BvhNode>& table) {
+std::uint32_t append_mesh_level(const BvhTree& tree, const TriangleSource& source, std::uint32_t first_triangle,
+                                std::uint32_t only_instance, std::vector<dev::BvhNode>& table) {
   const Leaves leaves(tree);
   const std::size_t first_slot = table.size();
   const std::size_t packets_block = (first_slot + tree.nodes.size()) * kSlotBlocks;
@@ -211,12 +212,14 @@ std::uint32_t append_mesh_level(const BvhTree& tree, const dev::Triangle* triang
   const std::uint32_t root = write_nodes(tree, first_slot, table, [&](const BvhLane& lane) {
     return refs[leaves.index(lane)];
   });
-  block = packets_block;
-  for (const BvhLane* leaf : leaves.in_order)
-    for (std::uint32_t done = 0; done < leaf->count; done += kPacket, block += CLRT_BVH_PACKET_BLOCKS)
-      write_packet(table, block,
-                   triangle_packet(triangles, leaf->first + done, std::min(kPacket, leaf->count - done),
+  parallel_for(leaves.in_order.size(), 8192, [&](std::size_t l) {
+    const BvhLane& leaf = *leaves.in_order[l];
+    std::size_t at = static_cast<std::size_t>(~refs[l].child);
+    for (std::uint32_t done = 0; done < leaf.count; done += kPacket, at += CLRT_BVH_PACKET_BLOCKS)
+      write_packet(table, at,
+                   triangle_packet(tree, source, leaf.first + done, std::min(kPacket, leaf.count - done),
                                    first_triangle, only_instance));
+  });
   return root;
 }
 

@@ -8,6 +8,7 @@
 
 #include "geometry/bvh_builder.hpp"
 #include "geometry/instance_bounds.hpp"
+#include "geometry/mesh_table.hpp"
 #include "shared/bvh.h"
 #include "shared/scene.h"
 
@@ -36,12 +37,12 @@ std::size_t top_level_slots(const BvhTree& tree, const TopLevelItems& items);
 // Writes the top level into the table's first top_level_slots() slots, which must exist.
 void write_top_level(const BvhTree& tree, const TopLevelItems& items, std::vector<dev::BvhNode>& table);
 
-// Appends a mesh's bottom level, whose leaf item i is triangles[i] (the mesh's triangles in
-// leaf order, at first_triangle in the triangle table): its nodes, then its leaves' triangle
-// packets, which name `only_instance` (see BvhTrianglePacket). Returns the block of its root.
-std::uint32_t append_mesh_level(const BvhTree& tree, const dev::Triangle* triangles,
-                                std::uint32_t first_triangle, std::uint32_t only_instance,
-                                std::vector<dev::BvhNode>& table);
+// Appends a mesh's bottom level, built over the triangles of `source` (leaf item i is its
+// triangle tree.order[i], row first_triangle + i of the per-triangle tables): its nodes, then its
+// leaves' triangle packets, written on every core, which name `only_instance` (see
+// BvhTrianglePacket). Returns the block of its root.
+std::uint32_t append_mesh_level(const BvhTree& tree, const TriangleSource& source, std::uint32_t first_triangle,
+                                std::uint32_t only_instance, std::vector<dev::BvhNode>& table);
 
 // The records that start at `block`.
 dev::BvhNode node_at(const std::vector<dev::BvhNode>& table, std::uint32_t block);

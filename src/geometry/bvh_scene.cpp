@@ -4,29 +4,20 @@
 
 #include "geometry/bvh_builder.hpp"
 #include "geometry/bvh_layout.hpp"
-#include "geometry/bvh_parallel.hpp"
+#include "math/parallel_for.hpp"
 #include "geometry/bvh_top_items.hpp"
 
 namespace clrt {
 namespace {
 
-Box triangle_box(const dev::Triangle& t) {
-  Box b;
-  for (const dev::f4& v : {t.v0, t.v1, t.v2}) b.grow(v.x, v.y, v.z);
-  return b;
-}
-
-BvhTree build_mesh_bvh(const GeometryData& geometry, const dev::Mesh& mesh) {
-  std::vector<Box> boxes(mesh.triangle_count);
-  for (dev::u32 i = 0; i < mesh.triangle_count; ++i)
-    boxes[i] = triangle_box(geometry.triangles[mesh.first_triangle + i]);
-  return build_bvh(boxes, BvhBuildSettings{});
-}
-
-// The bottom levels of all meshes, built on every core (large scenes have many meshes).
-std::vector<BvhTree> build_mesh_bvhs(const GeometryData& geometry) {
-  std::vector<BvhTree> trees(geometry.meshes.size());
-  parallel_for(trees.size(), 1, [&](std::size_t m) { trees[m] = build_mesh_bvh(geometry, geometry.meshes[m]); });
+// The bottom levels of all meshes, built on every core (large scenes have many meshes), each
+// mesh's per-triangle rows written in its leaf order.
+std::vector<BvhTree> build_mesh_bvhs(const std::vector<TriangleSource>& sources, GeometryData& geometry) {
+  std::vector<BvhTree> trees(sources.size());
+  parallel_for(trees.size(), 1, [&](std::size_t m) {
+    trees[m] = build_bvh(triangle_boxes(sources[m]), BvhBuildSettings{});
+    write_triangle_rows(sources[m], trees[m].order, geometry.meshes[m].first_triangle, geometry);
+  });
   return trees;
 }
 
@@ -35,13 +26,6 @@ template <class T>
 void reorder(std::vector<T>& table, std::size_t first, const std::vector<std::uint32_t>& order) {
   std::vector<T> old(table.begin() + first, table.begin() + first + order.size());
   for (std::size_t i = 0; i < order.size(); ++i) table[first + i] = old[order[i]];
-}
-
-void reorder_triangles(GeometryData& geometry, const dev::Mesh& mesh, const BvhTree& tree) {
-  reorder(geometry.triangles, mesh.first_triangle, tree.order);
-  reorder(geometry.triangle_normals, mesh.first_triangle, tree.order);
-  reorder(geometry.triangle_materials, mesh.first_triangle, tree.order);
-  reorder(geometry.triangle_source, mesh.first_triangle, tree.order);
 }
 
 // The meshes in the order their levels go into the table: that of the top level's only instance
@@ -63,10 +47,9 @@ std::vector<T> in_order(const std::vector<T>& items, const std::vector<std::uint
 
 }  // namespace
 
-void build_scene_bvh(const Scene& scene, GeometryData& out) {
+void build_scene_bvh(const Scene& scene, const std::vector<TriangleSource>& sources, GeometryData& out) {
   const auto start = std::chrono::steady_clock::now();
-  const std::vector<BvhTree> mesh_trees = build_mesh_bvhs(out);
-  for (std::size_t m = 0; m < out.meshes.size(); ++m) reorder_triangles(out, out.meshes[m], mesh_trees[m]);
+  const std::vector<BvhTree> mesh_trees = build_mesh_bvhs(sources, out);
 
   const TopItems items = top_items(scene, out, mesh_trees);
   BvhBuildSettings top_settings;
@@ -84,8 +67,7 @@ void build_scene_bvh(const Scene& scene, GeometryData& out) {
   out.nodes.assign(mesh_only ? 0 : top_level_slots(top_tree, top), dev::BvhNode{});
   for (std::size_t m : meshes_in_layout_order(out, mesh_only)) {
     dev::Mesh& mesh = out.meshes[m];
-    mesh.root_node = append_mesh_level(mesh_trees[m], out.triangles.data() + mesh.first_triangle,
-                                       mesh.first_triangle, only[m], out.nodes);
+    mesh.root_node = append_mesh_level(mesh_trees[m], sources[m], mesh.first_triangle, only[m], out.nodes);
   }
   if (!mesh_only) {
     for (std::size_t i = 0; i < top.items.size(); ++i) {

@@ -10,13 +10,19 @@
 
 namespace clrt {
 
-// What the build moves around: each item's box and centre travel with it, so that the passes
-// over a range read memory in order.
+// What the build moves around: each item's box travels with it, so that the passes over a range
+// read memory in order. 32 bytes: the index and the flag fill the lanes after each corner, so
+// that a corner is one 16-byte load and the partitions move little.
 struct BuildItem {
-  Box box;
-  float center[3];
+  float lo[3];
   std::uint32_t index;  // of the box the build was given
-  bool alone;           // may only be a leaf by itself
+  float hi[3];
+  std::uint32_t alone;  // 1: may only be a leaf by itself
+
+  Box box() const;
+  // The box's centre on `axis`; finite for any box: a bound beyond the float range (a sphere
+  // scaled by 1e126) or not a number counts as the largest float, and an empty box's centre is 0.
+  float center(int axis) const;
 };
 
 // The items in tree order: ranges are slices of it, partitioned in place.
@@ -53,8 +59,11 @@ struct SahCosts {
 };
 
 // The cheapest split of `range` at a bin boundary of its centroid box, with items[begin, end)
-// partitioned accordingly; nothing (and the items untouched) when every centre coincides.
-std::optional<Split> split_sah(BuildItems& items, const Range& range, const SahCosts& costs);
+// partitioned accordingly; nothing (and the items untouched) when every centre coincides. With
+// `on_every_core`, a large range is binned and partitioned on every core (for the splits above
+// the subtrees that are built side by side; below them that would only add threads that wait for
+// a core). The split is the same either way.
+std::optional<Split> split_sah(BuildItems& items, const Range& range, const SahCosts& costs, bool on_every_core);
 
 // Halves `range` by count along the axis where the centres spread most.
 Split split_median(BuildItems& items, const Range& range);

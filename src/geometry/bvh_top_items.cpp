@@ -1,6 +1,6 @@
 #include "geometry/bvh_top_items.hpp"
 
-#include "geometry/bvh_parallel.hpp"
+#include "math/parallel_for.hpp"
 #include "shared/ray.h"
 
 namespace clrt {

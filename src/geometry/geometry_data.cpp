@@ -1,5 +1,8 @@
 #include "geometry/geometry_data.hpp"
 
+#include <cstdint>
+#include <stdexcept>
+
 #include "geometry/bvh_scene.hpp"
 #include "geometry/instance_table.hpp"
 #include "geometry/mesh_table.hpp"
@@ -23,8 +26,6 @@ void append_instances(const Scene& scene, bool planes, GeometryData& out) {
 
 }  // namespace
 
-// The triangle table stays on the host: the BVH's leaf packets carry the triangles the device
-// tests.
 std::size_t GeometryData::device_bytes() const {
   return bytes(instances) + bytes(meshes) + bytes(triangle_normals) + bytes(triangle_materials) +
          bytes(nodes);
@@ -35,14 +36,27 @@ GeometryData build_geometry(const Scene& scene) {
   append_instances(scene, true, out);
   out.plane_count = static_cast<dev::u32>(out.instances.size());
   append_instances(scene, false, out);
-  for (const MeshData& mesh : scene.meshes) append_mesh(mesh, out);
+  std::vector<TriangleSource> sources(scene.meshes.begin(), scene.meshes.end());
   if (!scene.triangles.empty()) {
-    append_loose_triangles(scene.triangles, out);
-    out.instances.push_back(loose_triangle_instance(static_cast<dev::u32>(out.meshes.size() - 1)));
+    sources.emplace_back(scene.triangles);
+    out.instances.push_back(loose_triangle_instance(static_cast<dev::u32>(sources.size() - 1)));
     out.instance_source.push_back(-1);
   }
-  build_scene_bvh(scene, out);
+  std::size_t triangles = 0;
+  for (const TriangleSource& source : sources) {
+    out.meshes.push_back(device_mesh(source, static_cast<dev::u32>(triangles)));
+    triangles += source.size();
+    if (triangles > UINT32_MAX) throw std::length_error("the scene has more than 2^32 - 1 triangles");
+  }
+  out.triangle_normals.resize(triangles);
+  out.triangle_materials.resize(triangles);
+  out.triangle_source.resize(triangles);
+  build_scene_bvh(scene, sources, out);
   return out;
+}
+
+void release_mesh_data(Scene& scene) {
+  for (MeshData& mesh : scene.meshes) mesh = MeshData{mesh.path, {}, {}, {}, {}};
 }
 
 }  // namespace clrt

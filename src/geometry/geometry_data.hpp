@@ -1,5 +1,6 @@
 // The scene's geometry flattened into the tables the device reads (see kernels/shared/scene.h
-// and kernels/shared/bvh.h): instances with planes first, meshes, triangles, and the BVH nodes.
+// and kernels/shared/bvh.h): instances with planes first, meshes, per-triangle normals and
+// materials, and the BVH table, whose leaf packets carry the triangles' vertices.
 #pragma once
 
 #include <cstddef>
@@ -15,10 +16,9 @@ struct GeometryData {
   std::vector<dev::Instance> instances;  // planes are [0, plane_count): they stay outside the BVH
   dev::u32 plane_count = 0;
   std::vector<dev::Mesh> meshes;  // the scene's mesh files, then one mesh of the loose triangles
-  // Each mesh's triangles in the order of its BVH leaves, which is the order Hit.primitive counts
-  // in (triangle_source maps them back to the file's order).
-  std::vector<dev::Triangle> triangles;
-  std::vector<dev::TriangleNormals> triangle_normals;  // one per triangle; zero without normals
+  // Per triangle, each mesh's triangles in the order of its BVH leaves, which is the order
+  // Hit.primitive counts in (triangle_source maps them back to the file's order):
+  std::vector<dev::TriangleNormals> triangle_normals;  // zero without normals
   std::vector<dev::u32> triangle_materials;            // one per triangle; used by the loose
                                                        // triangles only (else 0)
   std::vector<dev::BvhNode> nodes;                     // the top level's root is node 0
@@ -30,9 +30,15 @@ struct GeometryData {
   std::vector<dev::u32> triangle_source;   // per triangle: its index within its MeshData (in
                                            // Scene::triangles for the loose-triangle mesh)
 
+  std::size_t triangle_count() const { return triangle_source.size(); }
   std::size_t device_bytes() const;
 };
 
 GeometryData build_geometry(const Scene& scene);
+
+// Frees the positions, normals and corners of `scene`'s meshes (each keeps its path): once
+// build_geometry has run, its BVH table and per-triangle tables hold all the device needs, and
+// nothing reads the meshes again.
+void release_mesh_data(Scene& scene);
 
 }  // namespace clrt

@@ -4,12 +4,16 @@
 #include <stdexcept>
 #include <string>
 
+#include "geometry/geometry_data.hpp"
+#include "math/parallel_for.hpp"
+#include "math/to_float.hpp"
+
 namespace clrt {
 namespace {
 
-dev::f4 to_f4(const Vec3& v) {
-  return {static_cast<float>(v.x), static_cast<float>(v.y), static_cast<float>(v.z), 0.0f};
-}
+constexpr std::size_t kChunk = 32768;  // triangles per task of a parallel loop: small meshes take one
+
+dev::f4 to_f4(const Vec3& v) { return {to_float(v.x), to_float(v.y), to_float(v.z), 0.0f}; }
 
 Vec3 unit_or_zero(const Vec3& v) {
   const double len = length(v);
@@ -19,69 +23,80 @@ Vec3 unit_or_zero(const Vec3& v) {
 // A vertex normal that cannot be normalised is replaced by the face normal, so that every
 // triangle of a mesh with normals interpolates valid unit vectors.
 std::array<Vec3, 3> corner_normals(const std::array<Vec3, 3>& p, const std::array<Vec3, 3>& n) {
-  const Vec3 face = unit_or_zero(cross(p[1] - p[0], p[2] - p[0]));
   std::array<Vec3, 3> out;
   for (int k = 0; k < 3; ++k) {
-    const Vec3 unit = unit_or_zero(n[k]);
-    out[k] = unit == Vec3{} ? face : unit;
+    out[k] = unit_or_zero(n[k]);
+    if (out[k] == Vec3{}) out[k] = unit_or_zero(cross(p[1] - p[0], p[2] - p[0]));
   }
   return out;
 }
 
-void append_triangle(GeometryData& out, const std::array<Vec3, 3>& p,
-                     const std::array<Vec3, 3>* normals, dev::u32 material, dev::u32 source) {
-  out.triangles.push_back({to_f4(p[0]), to_f4(p[1]), to_f4(p[2])});
-  dev::TriangleNormals n{};
-  if (normals) {
-    const std::array<Vec3, 3> unit = corner_normals(p, *normals);
-    n = {to_f4(unit[0]), to_f4(unit[1]), to_f4(unit[2])};
-  }
-  out.triangle_normals.push_back(n);
-  out.triangle_materials.push_back(material);
-  out.triangle_source.push_back(source);
-}
-
-dev::Mesh begin_mesh(const GeometryData& out, std::size_t triangle_count, bool has_normals) {
-  dev::Mesh mesh{};
-  mesh.first_triangle = static_cast<dev::u32>(out.triangles.size());
-  mesh.triangle_count = static_cast<dev::u32>(triangle_count);
-  mesh.has_normals = has_normals ? 1u : 0u;
-  return mesh;
-}
-
-template <class V>
-const V& at(const std::vector<V>& table, std::uint32_t index, const MeshData& mesh) {
-  if (index >= table.size())
-    throw std::invalid_argument("mesh " + mesh.path + ": corner index " + std::to_string(index) +
-                                " out of range");
-  return table[index];
+void check_indices(const std::vector<std::uint32_t>& corners, std::size_t count, const MeshData& mesh) {
+  for (std::uint32_t index : corners)
+    if (index >= count)
+      throw std::invalid_argument("mesh " + mesh.path + ": corner index " + std::to_string(index) + " out of range");
 }
 
 }  // namespace
 
-void append_mesh(const MeshData& mesh, GeometryData& out) {
+TriangleSource::TriangleSource(const MeshData& mesh) : mesh_(&mesh), size_(mesh.corners.size() / 3) {
   if (mesh.corners.size() % 3 != 0)
     throw std::invalid_argument("mesh " + mesh.path + ": corner count is not a multiple of 3");
-  const bool has_normals = !mesh.normals.empty() && mesh.corner_normals.size() == mesh.corners.size();
-  const std::size_t count = mesh.corners.size() / 3;
-  out.meshes.push_back(begin_mesh(out, count, has_normals));
-  for (std::size_t t = 0; t < count; ++t) {
-    std::array<Vec3, 3> p, n;
-    for (int k = 0; k < 3; ++k) {
-      p[k] = at(mesh.positions, mesh.corners[3 * t + k], mesh);
-      if (has_normals) n[k] = at(mesh.normals, mesh.corner_normals[3 * t + k], mesh);
-    }
-    append_triangle(out, p, has_normals ? &n : nullptr, 0, static_cast<dev::u32>(t));
-  }
+  has_normals_ = !mesh.normals.empty() && mesh.corner_normals.size() == mesh.corners.size();
+  check_indices(mesh.corners, mesh.positions.size(), mesh);
+  if (has_normals_) check_indices(mesh.corner_normals, mesh.normals.size(), mesh);
 }
 
-void append_loose_triangles(const std::vector<TriangleSpec>& triangles, GeometryData& out) {
-  out.meshes.push_back(begin_mesh(out, triangles.size(), false));
-  for (std::size_t t = 0; t < triangles.size(); ++t) {
-    const TriangleSpec& tri = triangles[t];
-    append_triangle(out, {tri.v0, tri.v1, tri.v2}, nullptr, static_cast<dev::u32>(tri.material),
-                    static_cast<dev::u32>(t));
+TriangleSource::TriangleSource(const std::vector<TriangleSpec>& loose) : loose_(&loose), size_(loose.size()) {}
+
+dev::Triangle TriangleSource::triangle(std::size_t t) const {
+  if (loose_) {
+    const TriangleSpec& s = (*loose_)[t];
+    return {to_f4(s.v0), to_f4(s.v1), to_f4(s.v2)};
   }
+  const std::uint32_t* c = &mesh_->corners[3 * t];
+  return {to_f4(mesh_->positions[c[0]]), to_f4(mesh_->positions[c[1]]), to_f4(mesh_->positions[c[2]])};
+}
+
+dev::TriangleNormals TriangleSource::normals(std::size_t t) const {
+  if (!has_normals_) return {};
+  const std::uint32_t* c = &mesh_->corners[3 * t];
+  const std::uint32_t* n = &mesh_->corner_normals[3 * t];
+  const std::array<Vec3, 3> unit = corner_normals(
+      {mesh_->positions[c[0]], mesh_->positions[c[1]], mesh_->positions[c[2]]},
+      {mesh_->normals[n[0]], mesh_->normals[n[1]], mesh_->normals[n[2]]});
+  return {to_f4(unit[0]), to_f4(unit[1]), to_f4(unit[2])};
+}
+
+dev::u32 TriangleSource::material(std::size_t t) const {
+  return loose_ ? static_cast<dev::u32>((*loose_)[t].material) : 0u;
+}
+
+std::vector<Box> triangle_boxes(const TriangleSource& source) {
+  std::vector<Box> boxes(source.size());
+  parallel_for(source.size(), kChunk, [&](std::size_t t) {
+    const dev::Triangle tri = source.triangle(t);
+    for (const dev::f4& v : {tri.v0, tri.v1, tri.v2}) boxes[t].grow(v.x, v.y, v.z);
+  });
+  return boxes;
+}
+
+dev::Mesh device_mesh(const TriangleSource& source, dev::u32 first_triangle) {
+  dev::Mesh mesh{};
+  mesh.first_triangle = first_triangle;
+  mesh.triangle_count = static_cast<dev::u32>(source.size());
+  mesh.has_normals = source.has_normals() ? 1u : 0u;
+  return mesh;
+}
+
+void write_triangle_rows(const TriangleSource& source, const std::vector<std::uint32_t>& order,
+                         std::size_t first, GeometryData& out) {
+  parallel_for(order.size(), kChunk, [&](std::size_t i) {
+    const std::uint32_t t = order[i];
+    out.triangle_normals[first + i] = source.normals(t);
+    out.triangle_materials[first + i] = source.material(t);
+    out.triangle_source[first + i] = t;
+  });
 }
 
 }  // namespace clrt

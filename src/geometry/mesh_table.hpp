@@ -1,17 +1,57 @@
-// Triangle meshes as the device's Mesh, Triangle, TriangleNormals and material tables.
+// Triangle meshes as the device's Mesh records and per-triangle tables, written in the order of
+// each mesh's BVH leaves straight from the scene: no table of the triangles themselves is kept
+// (the BVH's leaf packets carry their vertices).
 #pragma once
 
+#include <cstdint>
 #include <vector>
 
-#include "geometry/geometry_data.hpp"
+#include "geometry/bvh_box.hpp"
+#include "scene/scene.hpp"
+#include "shared/scene.h"
 
 namespace clrt {
 
-// Appends one device mesh holding `mesh`'s triangles (its BVH root is set later).
-void append_mesh(const MeshData& mesh, GeometryData& out);
+struct GeometryData;
 
-// Appends one device mesh holding the scene's loose `triangle`s, already in world space, each
-// with its own material.
-void append_loose_triangles(const std::vector<TriangleSpec>& triangles, GeometryData& out);
+// What a device mesh's triangles are read from: a mesh file's MeshData (in its object space), or
+// the scene's loose `triangle`s (already in world space, each with its own material). Refers to
+// them: they must outlive it.
+class TriangleSource {
+ public:
+  // Throws std::invalid_argument for a corner count that is not a multiple of 3 or a corner
+  // index out of range.
+  explicit TriangleSource(const MeshData& mesh);
+  explicit TriangleSource(const std::vector<TriangleSpec>& loose);
+
+  std::size_t size() const { return size_; }
+  bool has_normals() const { return has_normals_; }
+
+  // Triangle t's vertices in single precision, as the device tests them.
+  dev::Triangle triangle(std::size_t t) const;
+  // Its unit vertex normals (a corner's normal that cannot be normalised is the face normal);
+  // all zero without normals.
+  dev::TriangleNormals normals(std::size_t t) const;
+  // Its own material (a loose triangle's), else 0: a mesh takes its instance's.
+  dev::u32 material(std::size_t t) const;
+
+ private:
+  const MeshData* mesh_ = nullptr;
+  const std::vector<TriangleSpec>* loose_ = nullptr;
+  std::size_t size_ = 0;
+  bool has_normals_ = false;
+};
+
+// The boxes of the source's triangles (of their single-precision vertices), on every core.
+std::vector<Box> triangle_boxes(const TriangleSource& source);
+
+// The device record of a mesh whose triangles start at `first_triangle` of the per-triangle
+// tables (its BVH root is set later).
+dev::Mesh device_mesh(const TriangleSource& source, dev::u32 first_triangle);
+
+// Writes the per-triangle rows first + i = source triangle order[i] (normals, material, source
+// index) on every core; the tables must already hold them.
+void write_triangle_rows(const TriangleSource& source, const std::vector<std::uint32_t>& order,
+                         std::size_t first, GeometryData& out);
 
 }  // namespace clrt

@@ -1,77 +1,159 @@
 #include "scene/mesh_loader.hpp"
 
-#include <tiny_obj_loader.h>
-
-#include <cerrno>
-#include <cmath>
+#include <algorithm>
 #include <cstring>
-#include <filesystem>
-#include <fstream>
-#include <sstream>
+#include <optional>
+#include <vector>
 
+#include "math/parallel_for.hpp"
+#include "scene/mapped_file.hpp"
+#include "scene/obj_chunk.hpp"
 #include "scene/obj_index_check.hpp"
+#include "scene/obj_polygons.hpp"
 
 namespace clrt {
 namespace {
 
-std::string read_mesh_file(const std::string& path) {
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec))
-    throw MeshError(path + ": cannot be read (it is a folder)");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw MeshError(path + ": cannot be read (" + std::strerror(errno) + ")");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
+// Below this a slice is not worth a thread of its own.
+constexpr std::size_t kMinSliceBytes = std::size_t{1} << 20;
+
+// Whole lines, about equal in size: a few per core, so that a core that drew the quick lines
+// (faces parse faster than vertices) takes another slice.
+std::vector<std::string_view> split_into_slices(std::string_view text) {
+  const std::size_t target = std::max(kMinSliceBytes, text.size() / (4 * parallel_threads()) + 1);
+  std::vector<std::string_view> slices;
+  while (!text.empty()) {
+    std::size_t end = text.size();
+    if (target < text.size()) {
+      const auto* newline = static_cast<const char*>(std::memchr(text.data() + target, '\n', text.size() - target));
+      if (newline) end = static_cast<std::size_t>(newline - text.data()) + 1;
+    }
+    slices.push_back(text.substr(0, end));
+    text.remove_prefix(end);
+  }
+  return slices;
 }
 
-std::string without_trailing_newlines(std::string s) {
-  while (!s.empty() && (s.back() == '\n' || s.back() == '\r')) s.pop_back();
+// What the slices before each one held, and the whole file's counts.
+struct SliceStarts {
+  std::vector<ObjCounts> elements;
+  std::vector<std::size_t> corners, lines;
+  ObjCounts total_elements;
+  std::size_t total_corners = 0;
+};
+
+SliceStarts slice_starts(const std::vector<ObjChunk>& chunks) {
+  SliceStarts s;
+  std::size_t lines = 0;
+  for (const ObjChunk& c : chunks) {
+    s.elements.push_back(s.total_elements);
+    s.corners.push_back(s.total_corners);
+    s.lines.push_back(lines);
+    s.total_elements.positions += c.positions.size();
+    s.total_elements.normals += c.normals.size();
+    s.total_corners += c.corners.index.size();
+    lines += c.lines;
+  }
   return s;
 }
 
-std::vector<Vec3> to_points(const std::vector<tinyobj::real_t>& xyz, const std::string& path,
-                            const char* what) {
-  std::vector<Vec3> points;
-  for (std::size_t i = 0; i + 2 < xyz.size(); i += 3) {
-    const Vec3 p{xyz[i], xyz[i + 1], xyz[i + 2]};
-    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
-      throw MeshError(path + ": " + what + " " + std::to_string(i / 3 + 1) + " is not finite");
-    points.push_back(p);
+SourceLocation location(const std::string& path, std::size_t lines_before, const ObjPlace& place) {
+  return {path, static_cast<int>(lines_before + place.line + 1), static_cast<int>(place.column)};
+}
+
+[[noreturn]] void fail_at_first_problem(const std::string& path, const std::vector<ObjChunk>& chunks) {
+  std::size_t lines = 0;
+  for (const ObjChunk& c : chunks) {
+    if (c.problem) throw MeshError(location(path, lines, c.problem->where), c.problem->message);
+    lines += c.lines;
   }
-  return points;
+  throw std::logic_error("fail_at_first_problem: no problem");
+}
+
+[[noreturn]] void fail_at_corner(const std::string& path, std::string_view slice, std::size_t lines_before,
+                                 const ObjBadCorner& bad, const ObjCounts& total) {
+  const ObjCornerSource source = find_obj_corner(slice, bad.corner);
+  const std::int64_t written = bad.normal ? source.normal : source.position;
+  const std::string what = bad.normal ? "normal" : "vertex";
+  const std::size_t count = bad.normal ? total.normals : total.positions;
+  throw MeshError(location(path, lines_before, source.where),
+                  written > 0 ? what + " index " + std::to_string(written) + " is out of range (the file has " +
+                                    std::to_string(count) + ")"
+                              : "relative " + what + " index " + std::to_string(written) +
+                                    " reaches before the first one");
+}
+
+template <class T>
+void release(std::vector<T>& v) {
+  std::vector<T>().swap(v);
+}
+
+void copy_indices(std::vector<std::int32_t>& from, std::uint32_t* to) {
+  std::transform(from.begin(), from.end(), to, [](std::int32_t i) { return static_cast<std::uint32_t>(i); });
+  release(from);
+}
+
+// Moves every slice's elements into `mesh`, each slice's memory freed as soon as it is copied.
+void gather(std::vector<ObjChunk>& chunks, const SliceStarts& starts, bool with_normals, MeshData& mesh) {
+  mesh.positions.resize(starts.total_elements.positions);
+  mesh.corners.resize(starts.total_corners);
+  if (with_normals) {
+    mesh.normals.resize(starts.total_elements.normals);
+    mesh.corner_normals.resize(starts.total_corners);
+  }
+  parallel_for(chunks.size(), 1, [&](std::size_t i) {
+    ObjChunk& c = chunks[i];
+    std::copy(c.positions.begin(), c.positions.end(), mesh.positions.begin() + starts.elements[i].positions);
+    release(c.positions);
+    copy_indices(c.corners.index, mesh.corners.data() + starts.corners[i]);
+    if (with_normals) {
+      std::copy(c.normals.begin(), c.normals.end(), mesh.normals.begin() + starts.elements[i].normals);
+      copy_indices(c.corner_normals.index, mesh.corner_normals.data() + starts.corners[i]);
+    }
+    release(c.normals);
+    release(c.corner_normals.index);
+  });
 }
 
 }  // namespace
 
-MeshData load_obj_mesh(const std::string& path) {
-  const std::string text = read_mesh_file(path);
-  check_obj_face_indices(text, path);
+MeshError::MeshError(const std::string& path, const std::string& message)
+    : std::runtime_error(path + ": " + message) {}
 
-  tinyobj::attrib_t attrib;
-  std::vector<tinyobj::shape_t> shapes;
-  std::vector<tinyobj::material_t> materials;
-  std::string warnings, errors;
-  std::istringstream in(text);
-  // No material reader: clrt takes the scene's current material, so `mtllib` is ignored.
-  if (!tinyobj::LoadObj(&attrib, &shapes, &materials, &warnings, &errors, &in, nullptr, true))
-    throw MeshError(path + ": " + without_trailing_newlines(errors));
+MeshError::MeshError(const SourceLocation& where, const std::string& message)
+    : std::runtime_error(where.file + ":" + std::to_string(where.line) + ":" + std::to_string(where.column) +
+                         ": " + message) {}
+
+MeshData load_obj_mesh(const std::string& path) {
+  std::optional<MappedFile> file;
+  try {
+    file.emplace(path, kMaxMeshFileBytes);
+  } catch (const FileReadError& e) {
+    throw MeshError(path, e.what());
+  }
+  const std::vector<std::string_view> slices = split_into_slices(file->text());
+  std::vector<ObjChunk> chunks(slices.size());
+  parallel_for(slices.size(), 1, [&](std::size_t i) { chunks[i] = parse_obj_chunk(slices[i]); });
+  if (std::any_of(chunks.begin(), chunks.end(), [](const ObjChunk& c) { return c.problem.has_value(); }))
+    fail_at_first_problem(path, chunks);
+
+  const SliceStarts starts = slice_starts(chunks);
+  std::vector<std::optional<ObjBadCorner>> bad(chunks.size());
+  parallel_for(chunks.size(), 1, [&](std::size_t i) {
+    bad[i] = resolve_obj_indices(chunks[i], starts.elements[i], starts.total_elements);
+  });
+  for (std::size_t i = 0; i < chunks.size(); ++i)
+    if (bad[i]) fail_at_corner(path, slices[i], starts.lines[i], *bad[i], starts.total_elements);
+  if (starts.total_corners == 0) throw MeshError(path, "the mesh has no triangles");
 
   MeshData mesh;
   mesh.path = path;
-  mesh.positions = to_points(attrib.vertices, path, "vertex");
-  bool every_corner_has_normal = true;
-  for (const tinyobj::shape_t& shape : shapes)
-    for (const tinyobj::index_t& corner : shape.mesh.indices) {
-      mesh.corners.push_back(static_cast<std::uint32_t>(corner.vertex_index));
-      every_corner_has_normal = every_corner_has_normal && corner.normal_index >= 0;
-      mesh.corner_normals.push_back(static_cast<std::uint32_t>(corner.normal_index));
-    }
-  if (mesh.corners.empty()) throw MeshError(path + ": the mesh has no triangles");
-  if (every_corner_has_normal)
-    mesh.normals = to_points(attrib.normals, path, "normal");
-  else
-    mesh.corner_normals.clear();
+  const bool with_normals =
+      std::all_of(chunks.begin(), chunks.end(), [](const ObjChunk& c) { return c.every_corner_has_normal; });
+  gather(chunks, starts, with_normals, mesh);
+  parallel_for(chunks.size(), 1, [&](std::size_t i) {
+    for (const ObjPolygon& p : chunks[i].polygons) triangulate_polygon(mesh, starts.corners[i] + p.first_corner, p.corners);
+  });
   return mesh;
 }
 

@@ -1,22 +1,33 @@
 // Reads a Wavefront OBJ file into a MeshData.
 #pragma once
 
+#include <cstdint>
 #include <stdexcept>
 #include <string>
 
 #include "scene/scene.hpp"
+#include "scene/source_location.hpp"
 
 namespace clrt {
 
-// A mesh file that cannot be used; what() names the file (and its line when known) but not the
-// scene command that asked for it: the caller adds that location.
+// A mesh file that cannot be used; what() names the file, and the line and column when the
+// problem has a place in it, but not the scene command that asked for the file: the caller adds
+// that location.
 class MeshError : public std::runtime_error {
  public:
-  using std::runtime_error::runtime_error;
+  MeshError(const std::string& path, const std::string& message);  // "PATH: MESSAGE"
+  MeshError(const SourceLocation& where, const std::string& message);  // "PATH:LINE:COLUMN: MESSAGE"
 };
 
-// Polygons are triangulated. Vertex normals are kept only if every corner of every face has
-// one. Throws MeshError for a file that cannot be read, a bad index, or a mesh with no triangles.
+// Larger mesh files are refused: every line and column number then fits the int of a
+// SourceLocation.
+constexpr std::uint64_t kMaxMeshFileBytes = INT32_MAX;
+
+// Polygons are cut into fans. Vertex normals are kept only if every corner of every face has
+// one. Throws MeshError for a file that cannot be read, a malformed line (a word that is not a
+// finite single-precision number, a wrong number of them, a bad face corner), an index out of
+// range, or a mesh with no triangles. A large file is parsed in slices on every core; the result
+// and the error reported do not depend on how many.
 MeshData load_obj_mesh(const std::string& path);
 
 }  // namespace clrt

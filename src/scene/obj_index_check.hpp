@@ -1,13 +1,28 @@
-// Checks the face indices of OBJ text before tinyobjloader sees it: tinyobjloader only warns
-// about indices past the end (or silently drops such faces), and gives no useful line for them.
+// The second step of reading an OBJ file, once every slice is parsed and the file's counts are
+// known: completes each slice's corner indices and checks them against those counts (a face may
+// name a vertex that comes later in the file).
 #pragma once
 
-#include <string>
+#include <cstddef>
+#include <optional>
+
+#include "scene/obj_chunk.hpp"
 
 namespace clrt {
 
-// Throws MeshError naming `path` and the line of the first face with a zero or out-of-range
-// position or normal index, or with fewer than three corners.
-void check_obj_face_indices(const std::string& text, const std::string& path);
+struct ObjCounts {
+  std::size_t positions = 0, normals = 0;
+};
+
+// A corner whose position (or normal, when `normal`) index is out of range.
+struct ObjBadCorner {
+  std::size_t corner;  // triangle corner in its slice
+  bool normal;
+};
+
+// Makes every index of `chunk`'s corners one into the whole file's tables, given the elements of
+// the slices `before` it and the `total`. Returns the chunk's first corner, in file order, with an
+// index out of range (the chunk's indices are then incomplete).
+std::optional<ObjBadCorner> resolve_obj_indices(ObjChunk& chunk, const ObjCounts& before, const ObjCounts& total);
 
 }  // namespace clrt

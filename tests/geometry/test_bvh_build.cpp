@@ -1,7 +1,10 @@
 // The host side of the acceleration structure: the geometry tables and the BVH's invariants.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <cstring>
+#include <limits>
 #include <random>
 #include <set>
 
@@ -9,8 +12,12 @@
 #include "bvh_tree_check.hpp"
 #include "geometry/bvh_builder.hpp"
 #include "geometry/bvh_layout.hpp"
+#include "geometry/bvh_partition.hpp"
+#include "geometry/bvh_split.hpp"
 #include "geometry/instance_bounds.hpp"
 #include "geometry/geometry_data.hpp"
+#include "geometry/mesh_table.hpp"
+#include "math/parallel_for.hpp"
 #include "shared/ray.h"
 
 using namespace clrt;
@@ -20,9 +27,27 @@ namespace {
 
 Vec3 to_vec(const dev::f4& v) { return {v.x, v.y, v.z}; }
 
-std::vector<Vec3> triangle_points(const GeometryData& g, std::uint32_t t) {
-  return {to_vec(g.triangles[t].v0), to_vec(g.triangles[t].v1), to_vec(g.triangles[t].v2)};
-}
+std::vector<Vec3> points_of(const dev::Triangle& t) { return {to_vec(t.v0), to_vec(t.v1), to_vec(t.v2)}; }
+
+// The vertices of the rows of the per-triangle tables, read from the scene through
+// triangle_source.
+class SceneTriangles {
+ public:
+  SceneTriangles(const Scene& scene, const GeometryData& g) : g_(g) {
+    for (const MeshData& mesh : scene.meshes) sources_.emplace_back(mesh);
+    sources_.emplace_back(scene.triangles);
+  }
+
+  std::vector<Vec3> points(std::uint32_t t) const {
+    std::size_t m = 0;
+    while (t >= g_.meshes[m].first_triangle + g_.meshes[m].triangle_count) ++m;
+    return points_of(sources_[m].triangle(g_.triangle_source[t]));
+  }
+
+ private:
+  const GeometryData& g_;
+  std::vector<TriangleSource> sources_;
+};
 
 // Points spread over the surface of a canonical shape, in object space: all of them for a
 // cube's corners and for the rims of a cylinder or cone (which hold their extreme points).
@@ -48,13 +73,14 @@ std::vector<Vec3> shape_points(const InstanceSpec& s, int count) {
 }
 
 // Points on the surface of an instance (a mesh's vertices), in world space.
-std::vector<Vec3> instance_points(const Scene& scene, const GeometryData& g, std::uint32_t i) {
+std::vector<Vec3> instance_points(const Scene& scene, const GeometryData& g, const SceneTriangles& triangles,
+                                  std::uint32_t i) {
   const int source = g.instance_source[i];
   std::vector<Vec3> points;
   if (g.instances[i].shape == CLRT_SHAPE_MESH) {
     const dev::Mesh& mesh = g.meshes[g.instances[i].mesh];
     for (std::uint32_t t = mesh.first_triangle; t < mesh.first_triangle + mesh.triangle_count; ++t)
-      for (const Vec3& p : triangle_points(g, t)) points.push_back(p);
+      for (const Vec3& p : triangles.points(t)) points.push_back(p);
   } else {
     points = shape_points(scene.instances[source], 256);
   }
@@ -94,8 +120,10 @@ TreeShape check_scene_bvh(const Scene& scene, const GeometryData& g) {
   std::vector<std::string> errors;
   const auto instance_count = static_cast<std::uint32_t>(g.instances.size());
   const std::set<std::uint32_t> merged = merged_mesh_roots(g, errors);
+  const SceneTriangles triangles(scene, g);
   const TreeShape top = check_tree(g.nodes, 0, Level::Top, g.plane_count, instance_count - g.plane_count,
-                                   [&](std::uint32_t i) { return instance_points(scene, g, i); }, errors, merged);
+                                   [&](std::uint32_t i) { return instance_points(scene, g, triangles, i); }, errors,
+                                   merged);
   CHECK(top.max_leaf <= CLRT_BVH_MAX_SPHERES);
   // A mesh instance's packet holds its transform and leads to its mesh's root.
   for (const dev::BvhMeshInstancePacket& p : top.mesh_instances) {
@@ -112,7 +140,7 @@ TreeShape check_scene_bvh(const Scene& scene, const GeometryData& g) {
   CHECK(top.depth <= CLRT_BVH_MAX_DEPTH);
   for (const dev::Mesh& mesh : g.meshes) {
     const TreeShape bottom = check_tree(g.nodes, mesh.root_node, Level::Mesh, mesh.first_triangle,
-                                        mesh.triangle_count, [&](std::uint32_t t) { return triangle_points(g, t); },
+                                        mesh.triangle_count, [&](std::uint32_t t) { return triangles.points(t); },
                                         errors);
     CHECK(bottom.max_leaf <= CLRT_BVH_MAX_TRIANGLES);
     CHECK(bottom.depth <= CLRT_BVH_MAX_DEPTH);
@@ -136,8 +164,9 @@ TEST_CASE("geometry tables: planes first, one mesh per model, loose triangles la
   CHECK(g.meshes[0].has_normals == 1);
   CHECK(g.meshes[1].has_normals == 0);
   CHECK(g.meshes[1].triangle_count == 30);
-  CHECK(g.triangles.size() == scene.meshes[0].corners.size() / 3 + 30);
-  CHECK(g.triangle_normals.size() == g.triangles.size());
+  CHECK(g.triangle_count() == scene.meshes[0].corners.size() / 3 + 30);
+  CHECK(g.triangle_normals.size() == g.triangle_count());
+  CHECK(g.triangle_materials.size() == g.triangle_count());
   int loose_instances = 0;
   for (std::size_t i = 0; i < g.instances.size(); ++i) {
     if (g.instance_source[i] >= 0) {
@@ -151,16 +180,19 @@ TEST_CASE("geometry tables: planes first, one mesh per model, loose triangles la
     CHECK(g.instances[i].world_to_object[0].w == 0.0f);
   }
   CHECK(loose_instances == 1);
-  // Each stored loose triangle is the scene's triangle its source index names, with its material.
+  // Each loose triangle's row holds the material of the scene's triangle its source index names,
+  // each of them once.
   const dev::Mesh& loose = g.meshes[1];
+  std::set<dev::u32> sources;
   for (std::uint32_t t = loose.first_triangle; t < loose.first_triangle + loose.triangle_count; ++t) {
-    const TriangleSpec& spec = scene.triangles[g.triangle_source[t]];
-    CHECK(g.triangles[t].v1.y == static_cast<float>(spec.v1.y));
+    const TriangleSpec& spec = scene.triangles.at(g.triangle_source[t]);
     CHECK(g.triangle_materials[t] == static_cast<dev::u32>(spec.material));
+    sources.insert(g.triangle_source[t]);
   }
-  // Per triangle the device holds its normals (48 bytes) and material (4); the triangle table
-  // itself stays on the host, the BVH's leaf packets carrying the vertices.
-  CHECK(g.device_bytes() == g.instances.size() * 128 + g.meshes.size() * 16 + g.triangles.size() * 52 +
+  CHECK(sources.size() == scene.triangles.size());
+  // Per triangle the device holds its normals (48 bytes) and material (4); no triangle table: the
+  // BVH's leaf packets carry the vertices.
+  CHECK(g.device_bytes() == g.instances.size() * 128 + g.meshes.size() * 16 + g.triangle_count() * 52 +
                                 g.nodes.size() * sizeof(dev::BvhNode));
 }
 
@@ -306,22 +338,17 @@ TEST_CASE("nested boxes that the SAH peels one by one stay within the depth limi
     const BvhTree tree = build_bvh(boxes, settings);
     // Laid out as a mesh of degenerate triangles from each box's low to its high corner, whose
     // boxes are the boxes.
-    std::vector<dev::Triangle> triangles;
-    for (std::uint32_t i : tree.order) {
-      const Box& b = boxes[i];
-      const dev::f4 lo{b.lo[0], b.lo[1], b.lo[2], 0}, hi{b.hi[0], b.hi[1], b.hi[2], 0};
-      triangles.push_back({lo, hi, lo});
+    std::vector<TriangleSpec> triangles;
+    for (const Box& b : boxes) {
+      const Vec3 lo{b.lo[0], b.lo[1], b.lo[2]}, hi{b.hi[0], b.hi[1], b.hi[2]};
+      triangles.push_back({lo, hi, lo, 0});
     }
+    const TriangleSource source(triangles);
     std::vector<dev::BvhNode> table;
-    const std::uint32_t root = append_mesh_level(tree, triangles.data(), 0, CLRT_NO_HIT, table);
+    const std::uint32_t root = append_mesh_level(tree, source, 0, CLRT_NO_HIT, table);
     std::vector<std::string> errors;
     const TreeShape shape = check_tree(table, root, Level::Mesh, 0, static_cast<std::uint32_t>(boxes.size()),
-                                       [&](std::uint32_t i) {
-                                         const dev::Triangle& t = triangles[i];
-                                         return std::vector<Vec3>{{t.v0.x, t.v0.y, t.v0.z},
-                                                                  {t.v1.x, t.v1.y, t.v1.z},
-                                                                  {t.v2.x, t.v2.y, t.v2.z}};
-                                       },
+                                       [&](std::uint32_t i) { return points_of(source.triangle(tree.order[i])); },
                                        errors);
     INFO("leaf size " << leaf_size << ": " << (errors.empty() ? std::string() : errors.front()));
     CHECK(errors.empty());
@@ -354,4 +381,136 @@ TEST_CASE("shape boxes hug the transformed shapes", "[bvh]") {
       CHECK(box.hi[a] <= hi[a] + slack);
     }
   }
+}
+
+TEST_CASE("the BVH and its tables are the same on any number of threads", "[bvh]") {
+  // Large enough for every parallel path: ranges binned and partitioned in blocks, subtrees
+  // built side by side, meshes built side by side, a mesh file parsed in slices.
+  std::mt19937 rng(21);
+  Scene scene = random_scene(rng, 3000, 2000);
+  scene.meshes.push_back(ball_mesh(180, 200, true));  // 72,000 triangles
+  scene.instances.push_back(place_instance(ShapeKind::Mesh, Mat4::identity()));
+  scene.instances.back().mesh = static_cast<int>(scene.meshes.size()) - 1;
+  const auto build_on = [&](unsigned threads) {
+    parallel_thread_limit = threads;
+    GeometryData g = build_geometry(scene);
+    parallel_thread_limit = 0;
+    return g;
+  };
+  const GeometryData one = build_on(1);
+  for (unsigned threads : {2u, 7u}) {
+    INFO(threads << " threads");
+    const GeometryData many = build_on(threads);
+    REQUIRE(many.nodes.size() == one.nodes.size());
+    CHECK(std::memcmp(many.nodes.data(), one.nodes.data(), one.nodes.size() * sizeof(dev::BvhNode)) == 0);
+    CHECK(many.triangle_source == one.triangle_source);
+    CHECK(many.instance_source == one.instance_source);
+    REQUIRE(many.triangle_normals.size() == one.triangle_normals.size());
+    CHECK(std::memcmp(many.triangle_normals.data(), one.triangle_normals.data(),
+                      one.triangle_normals.size() * sizeof(dev::TriangleNormals)) == 0);
+  }
+  check_scene_bvh(scene, one);
+}
+
+TEST_CASE("a large range is partitioned in exactly std::partition's order", "[bvh]") {
+  std::mt19937 rng(5);
+  for (std::size_t n : {std::size_t{0}, std::size_t{1}, std::size_t{7}, 2 * kParallelBlock - 1,
+                        2 * kParallelBlock, std::size_t{100001}}) {
+    for (unsigned percent_left : {0u, 10u, 50u, 100u}) {
+      std::vector<std::uint32_t> values(n);
+      for (std::uint32_t& v : values) v = static_cast<std::uint32_t>(rng() % 100) | static_cast<std::uint32_t>(rng()) << 8;
+      std::vector<std::uint32_t> expected = values;
+      const auto left = [percent_left](std::uint32_t v) { return (v & 0xff) < percent_left; };
+      const auto expected_middle = std::partition(expected.begin(), expected.end(), left) - expected.begin();
+      const auto middle = partition_like_std(values.data(), values.data() + n, left) - values.data();
+      INFO(n << " items, " << percent_left << "% to the left");
+      CHECK(middle == expected_middle);
+      CHECK(values == expected);
+    }
+  }
+}
+
+TEST_CASE("boxes beyond the float range: finite centres, SAH splits, no NaN anywhere", "[bvh]") {
+  const float big = std::numeric_limits<float>::max() * 0.9f, inf = Box::kInf;
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  SECTION("padded world boxes of huge or undefined extents are infinite, not NaN") {
+    const Box huge = padded_world_box({-9e125, 0, 0}, {9e125, 1, 1});
+    CHECK(huge.lo[0] == -inf);
+    CHECK(huge.hi[0] == inf);
+    CHECK(huge.lo[1] < 0);
+    CHECK(huge.hi[1] > 1);
+    const Box undefined = padded_world_box({std::nan(""), 0, 0}, {1, 1, 1});
+    CHECK(undefined.lo[0] == -inf);
+    CHECK(undefined.hi[0] == inf);
+  }
+  SECTION("every item has a finite centre") {
+    std::vector<Box> boxes(4);
+    boxes[0].grow(-inf, 0, 0);
+    boxes[0].grow(inf, 1, 1);
+    boxes[1].grow(big, big, big);  // lo + hi overflows
+    boxes[2].grow(-big, 0, 0);
+    boxes[2].grow(-big, 1, nan);  // the NaN is not taken in
+    for (const BuildItem& item : make_build_items(boxes, {}))
+      for (int a = 0; a < 3; ++a) {
+        INFO("item " << item.index << " axis " << a);
+        CHECK(std::isfinite(item.center(a)));
+      }
+    CHECK(make_build_items(boxes, {})[1].center(0) == big);
+  }
+  SECTION("two clusters further apart than the largest float are split apart") {
+    std::mt19937 rng(3);
+    std::vector<Box> boxes;
+    for (int i = 0; i < 64; ++i) {
+      const float x = i % 2 ? big : -big, y = static_cast<float>(rng() % 1000), z = static_cast<float>(rng() % 1000);
+      Box b;
+      b.grow(x, y, z);
+      b.grow(x, y + 1, z + 1);
+      boxes.push_back(b);
+    }
+    const BvhTree tree = build_bvh(boxes, BvhBuildSettings{});
+    for (const BvhLane& lane : tree.nodes.at(0).lane) {
+      if (lane.count == 0 && lane.node < 0) continue;
+      INFO("lane from " << lane.box.lo[0] << " to " << lane.box.hi[0]);
+      CHECK((lane.box.hi[0] < 0 || lane.box.lo[0] > 0));
+    }
+  }
+  SECTION("a sphere scaled by 9e125 among ordinary ones") {
+    Scene scene;
+    scene.materials.resize(1);
+    scene.instances.push_back(place_instance(ShapeKind::Sphere, Mat4::scale({9e125, 9e125, 9e125})));
+    std::mt19937 rng(4);
+    for (int i = 0; i < 100; ++i)
+      scene.instances.push_back(place_instance(ShapeKind::Sphere, random_similarity(rng, 10, 0.1, 1)));
+    scene.instances.push_back(place_instance(ShapeKind::Cube, Mat4::translate({1e30, 0, 0}) * Mat4::scale({1e10, 1, 1})));
+    const GeometryData g = build_geometry(scene);
+    std::vector<std::uint32_t> blocks{0};
+    while (!blocks.empty()) {
+      const dev::BvhNode node = node_at(g.nodes, blocks.back());
+      blocks.pop_back();
+      for (int k = 0; k < CLRT_BVH_WIDTH; ++k) {
+        if (node.child[k] == CLRT_BVH_EMPTY_LANE) continue;
+        const Box b = lane_box(node, k);
+        for (int a = 0; a < 3; ++a) CHECK_FALSE((std::isnan(b.lo[a]) || std::isnan(b.hi[a])));
+        if (node.child[k] >= 0) blocks.push_back(static_cast<std::uint32_t>(node.child[k]));
+      }
+    }
+    check_scene_bvh(scene, g);
+  }
+}
+
+TEST_CASE("once the geometry is built the meshes' data can be freed", "[bvh]") {
+  Scene scene;
+  scene.meshes.push_back(ball_mesh(6, 8, true));
+  scene.meshes.back().path = "ball.obj";
+  scene.instances.push_back(place_instance(ShapeKind::Mesh, Mat4::translate({1, 0, 0})));
+  scene.instances.back().mesh = 0;
+  const GeometryData before = build_geometry(scene);
+  release_mesh_data(scene);
+  const MeshData& m = scene.meshes.at(0);
+  CHECK(m.path == "ball.obj");
+  CHECK(m.positions.capacity() == 0);
+  CHECK(m.normals.capacity() == 0);
+  CHECK(m.corners.capacity() == 0);
+  CHECK(m.corner_normals.capacity() == 0);
+  CHECK(before.triangle_count() == 6 * 8 * 2);
 }

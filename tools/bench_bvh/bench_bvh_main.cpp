@@ -45,7 +45,7 @@ void run_case(DeviceContext& device, const Case& c, int ray_count, int runs) {
   const RaySet random = random_rays(bounds, ray_count);
   Tracer tracer(device, geometry);
   std::printf("| %s | %zu | %zu | %.1f | %zu | %.2f | %.2f |", c.name.c_str(), geometry.instances.size(),
-              geometry.triangles.size(), geometry.build_seconds * 1e3, geometry.nodes.size(),
+              geometry.triangle_count(), geometry.build_seconds * 1e3, geometry.nodes.size(),
               mib(geometry.nodes.size() * sizeof(dev::BvhNode)), mib(geometry.device_bytes()));
   for (const Throughput& t : {tracer.closest_hit_mrays(camera, runs), tracer.closest_hit_mrays(random, runs),
                               tracer.any_hit_mrays(camera, runs), tracer.any_hit_mrays(random, runs)})

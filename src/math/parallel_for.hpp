@@ -1,0 +1,39 @@
+// Work spread over every core: slices of a mesh file, the bottom levels of many meshes, the
+// world boxes of many instances, the large ranges of a BVH build. (Header-only; here because
+// every area links clrt_math.)
+#pragma once
+
+#include <algorithm>
+#include <atomic>
+#include <cstddef>
+#include <thread>
+#include <vector>
+
+namespace clrt {
+
+// Threads parallel_for uses; 0: one per core. Tests and benchmarks set it to show that results
+// do not depend on it, and to measure one core.
+inline std::atomic<unsigned> parallel_thread_limit{0};
+
+inline unsigned parallel_threads() {
+  const unsigned limit = parallel_thread_limit.load();
+  return limit ? limit : std::max(1u, std::thread::hardware_concurrency());
+}
+
+// Calls work(i) for every i in [0, count), taking `chunk` consecutive indices at a time, on
+// parallel_threads() threads. work must be safe to call for different i at once.
+template <class Work>
+void parallel_for(std::size_t count, std::size_t chunk, const Work& work) {
+  std::atomic<std::size_t> next{0};
+  const auto run = [&] {
+    for (std::size_t begin = next.fetch_add(chunk); begin < count; begin = next.fetch_add(chunk))
+      for (std::size_t i = begin; i < std::min(count, begin + chunk); ++i) work(i);
+  };
+  const std::size_t threads_wanted = std::min<std::size_t>(parallel_threads(), (count + chunk - 1) / chunk);
+  std::vector<std::thread> threads;
+  for (std::size_t t = 1; t < threads_wanted; ++t) threads.emplace_back(run);
+  run();
+  for (std::thread& t : threads) t.join();
+}
+
+}  // namespace clrt

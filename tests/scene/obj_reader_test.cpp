@@ -1,0 +1,260 @@
+// The OBJ reader on its own: what it accepts, how it cuts polygons, what it refuses and where it
+// says the problem is, also when a large file is read in slices on several cores.
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <charconv>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "math/parallel_for.hpp"
+#include "scene/mesh_loader.hpp"
+#include "scratch_dir.hpp"
+
+using clrt::MeshData;
+using clrt::MeshError;
+using clrt::Vec3;
+using clrt::test::ScratchDir;
+
+namespace {
+
+MeshData load_obj_text(const std::string& text) {
+  ScratchDir dir;
+  return clrt::load_obj_mesh(dir.write("m.obj", text));
+}
+
+// The error loading `text` gives, without the file's path.
+std::string obj_error(const std::string& text) {
+  ScratchDir dir;
+  const std::string path = dir.write("m.obj", text);
+  try {
+    clrt::load_obj_mesh(path);
+  } catch (const MeshError& e) {
+    const std::string what = e.what();
+    REQUIRE(what.rfind(path, 0) == 0);
+    return what.substr(path.size());
+  }
+  FAIL("expected the OBJ text to be rejected: " << text);
+  return {};
+}
+
+// Twice the signed area of triangle t seen from +z.
+double twice_area_z(const MeshData& m, std::size_t t) {
+  const Vec3 a = m.positions[m.corners[3 * t]], b = m.positions[m.corners[3 * t + 1]],
+             c = m.positions[m.corners[3 * t + 2]];
+  return cross(b - a, c - a).z;
+}
+
+}  // namespace
+
+TEST_CASE("OBJ: the spellings of numbers, corners and lines a file may use", "[scene][obj]") {
+  const MeshData m = load_obj_text(
+      "# comment\r\n"
+      "mtllib scene.mtl\r\n"
+      "o thing\r\n"
+      "v +1 .5 -2e-1 # trailing comment\r\n"
+      "v\t1.\t0\t0 1.0\r\n"                     // with a weight
+      "v 0 1 0 0.5 0.25 1\r\n"                  // with a colour
+      "vt 0.5 0.5\r\nvt 1\r\nvp 0.1 0.2\r\n"  // texture and parameter coordinates are ignored
+      "vn 0 0 1\r\n"
+      "g group\r\ns 1\r\nusemtl red\r\n"
+      "  f 1/1/1 2/2/1 3//1   \r\n"
+      "f 1/1 2/2 3/1\r\n"
+      "f -3 -2 -1");  // no line end at the end of the file
+  REQUIRE(m.positions.size() == 3);
+  CHECK(m.positions[0] == Vec3{1, 0.5, static_cast<double>(-0.2f)});
+  CHECK(m.positions[1] == Vec3{1, 0, 0});
+  CHECK(m.positions[2] == Vec3{0, 1, 0});
+  CHECK(m.corners == std::vector<std::uint32_t>{0, 1, 2, 0, 1, 2, 0, 1, 2});
+  // The last two faces name no normals: none are kept.
+  CHECK(m.normals.empty());
+  CHECK(m.corner_normals.empty());
+}
+
+TEST_CASE("OBJ: a malformed line is an error at its line and column, never a silent 0", "[scene][obj][errors]") {
+  const std::string verts = "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\n";  // lines 1-4
+  struct Bad {
+    const char* line;
+    const char* message;
+  };
+  const Bad cases[] = {
+      {"v", ":5:2: a vertex is x y z [w] or x y z r g b: found 0 numbers"},
+      {"v 1 2", ":5:6: a vertex is x y z [w] or x y z r g b: found 2 numbers"},
+      {"v 1 nan 2", ":5:5: 'nan' is not a finite number"},
+      {"v 1 2 abc", ":5:7: 'abc' is not a number"},
+      {"v inf 1 2", ":5:3: 'inf' is not a finite number"},
+      {"v 1 -Infinity 2", ":5:5: '-Infinity' is not a finite number"},
+      {"v 1e39 1 2", ":5:3: '1e39' is out of range for single precision"},
+      {"v 1 1 1e-50", ":5:7: '1e-50' is out of range for single precision"},
+      {"vn 0 1", ":5:7: a normal is x y z: found 2 numbers"},
+      {"vn 0 1 0 1", ":5:10: too many numbers for a normal (x y z)"},
+      {"f 1 2 3/", ":5:7: bad face corner '3/'"},
+      {"f 1 2 3//", ":5:7: bad face corner '3//'"},
+      {"f 1 2 3/x", ":5:7: bad face corner '3/x'"},
+      {"f 1 2 3/1/1/1", ":5:7: bad face corner '3/1/1/1'"},
+      {"f 1 2 --3", ":5:7: bad face corner '--3'"},
+      {"f 1 2 3x", ":5:7: bad face corner '3x'"},
+      {"f 1 2 3/0", ":5:7: texture coordinate index 0 is not allowed"},
+      {"f 1 2 3//0", ":5:7: normal index 0 is not allowed"},
+      {"f 1 2 99999999999", ":5:7: vertex index '99999999999' is out of range"},
+      {"f 1 2 -99999999999", ":5:7: vertex index '99999999999' is out of range"},
+      {"f", ":5:2: a face needs at least 3 corners, found 0"},
+      {"vt", ":5:3: a texture coordinate is u [v [w]]: found no number"},
+      {"vt 0 0 0 0", ":5:10: too many numbers for a texture coordinate"},
+      {"v 1 2 3 4 5", ":5:12: a vertex is x y z [w] or x y z r g b: found 5 numbers"},
+      {"v 1 2 3 4 5 6 7", ":5:15: too many numbers for a vertex"},
+      {"v 1 2 3#4", ":5:7: '3#4' is not a number"},
+      {"v 1 2 +-3", ":5:7: '+-3' is not a number"},
+      {"v 1 2 0x10", ":5:7: '0x10' is not a number"},
+  };
+  for (const Bad& c : cases)
+    DYNAMIC_SECTION(c.line) { CHECK_THAT(obj_error(verts + c.line + "\nf 1 2 3\n"), Catch::Contains(c.message)); }
+}
+
+TEST_CASE("OBJ: a long word is quoted in part only", "[scene][obj][errors]") {
+  const std::string word(100000, 'x');
+  const std::string message = obj_error("v 1 2 " + word + "\n");
+  CHECK_THAT(message, Catch::Contains(":1:7: '" + std::string(40, 'x') + "...' is not a number"));
+  CHECK(message.size() < 200);
+}
+
+TEST_CASE("OBJ: what is not a regular file is refused before it is read", "[scene][obj][errors]") {
+  ScratchDir dir;
+  const auto error_of = [](const std::string& path) {
+    try {
+      clrt::load_obj_mesh(path);
+    } catch (const MeshError& e) {
+      return std::string(e.what());
+    }
+    return std::string("loaded");
+  };
+  CHECK(error_of("/dev/zero") == "/dev/zero: cannot be read (it is not a regular file)");
+  CHECK(error_of(dir.path().string()) == dir.path().string() + ": cannot be read (it is a folder)");
+  CHECK_THAT(error_of(dir.file("gone.obj")), Catch::Contains("gone.obj: cannot be read (No such file"));
+  CHECK(error_of(dir.write("empty.obj", "")) == dir.file("empty.obj") + ": the mesh has no triangles");
+}
+
+TEST_CASE("OBJ: a quad is cut along its shorter diagonal, corner 0 to 2 only if strictly shorter",
+          "[scene][obj]") {
+  // A square: both diagonals are as long.
+  CHECK(load_obj_text("v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n").corners ==
+        std::vector<std::uint32_t>{0, 1, 3, 1, 2, 3});
+  // Corner 2 pulled towards corner 0: that diagonal is the shorter.
+  CHECK(load_obj_text("v 0 0 0\nv 1 0 0\nv 0.4 0.4 0\nv 0 1 0\nf 1 2 3 4\n").corners ==
+        std::vector<std::uint32_t>{0, 1, 2, 0, 2, 3});
+  // Normals travel with their corners.
+  const MeshData n = load_obj_text("v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvn 0 0 1\nvn 0 0 2\nvn 0 0 3\nvn 0 0 4\n"
+                                   "f 1//1 2//2 3//3 4//4\n");
+  CHECK(n.corner_normals == std::vector<std::uint32_t>{0, 1, 3, 1, 2, 3});
+}
+
+TEST_CASE("OBJ: a concave polygon is cut into triangles inside it, keeping its winding", "[scene][obj]") {
+  // An L, counter-clockwise from +z, starting at the corner of its notch: the fan from there
+  // would cover the notch with a clockwise triangle.
+  const MeshData m =
+      load_obj_text("v 2 1 0\nv 1 1 0\nv 1 2 0\nv 0 2 0\nv 0 0 0\nv 2 0 0\nf 1 2 3 4 5 6\n");
+  REQUIRE(m.corners.size() == 12);
+  double area = 0;
+  for (std::size_t t = 0; t < 4; ++t) {
+    INFO("triangle " << t);
+    CHECK(twice_area_z(m, t) > 0);
+    area += twice_area_z(m, t) / 2;
+  }
+  CHECK(area == Approx(3.0));
+  // Seen from the other side (clockwise from +z) the triangles keep that winding.
+  const MeshData flipped =
+      load_obj_text("v 2 1 0\nv 1 1 0\nv 1 2 0\nv 0 2 0\nv 0 0 0\nv 2 0 0\nf 6 5 4 3 2 1\n");
+  for (std::size_t t = 0; t < 4; ++t) CHECK(twice_area_z(flipped, t) < 0);
+}
+
+namespace {
+
+// A strip of `quads` unit quads along x as an OBJ file of about 50 bytes a quad: vertices 2k
+// (bottom) and 2k + 1 (top); every second face written with relative indices, and the first
+// face naming vertices that come only at the end of the file.
+std::string strip_obj(int quads) {
+  std::string text = "f 1 " + std::to_string(2 * quads + 1) + " 2\n";  // a forward reference to the last vertex
+  for (int k = 0; k <= quads; ++k) {
+    text += "v " + std::to_string(k) + " 0 0\nv " + std::to_string(k) + " 1 0\n";
+    if (k == 0) continue;
+    const int a = 2 * k - 1, b = 2 * k, c = 2 * k + 1, d = 2 * k + 2;  // from 1
+    if (k % 2) text += "f " + std::to_string(a) + " " + std::to_string(c) + " " + std::to_string(d) + " " + std::to_string(b) + "\n";
+    else text += "f -4 -2 -1 -3\n";
+  }
+  return text;
+}
+
+}  // namespace
+
+TEST_CASE("OBJ: a file read in slices gives what one pass gives, and the first error in the file",
+          "[scene][obj]") {
+  const int quads = 80000;  // about 3.5 MB: several slices however many cores
+  const std::string text = strip_obj(quads);
+  REQUIRE(text.size() > 3u << 20);
+  const MeshData m = load_obj_text(text);
+  for (unsigned threads : {1u, 3u}) {
+    clrt::parallel_thread_limit = threads;
+    const MeshData other = load_obj_text(text);
+    clrt::parallel_thread_limit = 0;
+    INFO(threads << " threads");
+    CHECK(other.positions == m.positions);
+    CHECK(other.corners == m.corners);
+  }
+  REQUIRE(m.positions.size() == 2 * static_cast<std::size_t>(quads) + 2);
+  REQUIRE(m.corners.size() == 3 + 6 * static_cast<std::size_t>(quads));
+  CHECK(std::vector<std::uint32_t>(m.corners.begin(), m.corners.begin() + 3) ==
+        std::vector<std::uint32_t>{0, 2 * static_cast<std::uint32_t>(quads), 1});
+  for (int k = 1; k <= quads; ++k) {
+    // Each quad's corners, from 0: (2k - 2, 2k, 2k + 1, 2k - 1), cut along a diagonal.
+    const std::uint32_t* c = &m.corners[3 + 6 * static_cast<std::size_t>(k - 1)];
+    const std::uint32_t a = 2 * k - 2, b = 2 * k - 1, d = 2 * k + 1;
+    INFO("quad " << k);
+    REQUIRE(m.positions[a] == Vec3{k - 1.0, 0, 0});
+    // A unit square: cut from corner 0 = a to corner 3 = b.
+    CHECK(c[0] == a);
+    CHECK(c[2] == b);
+    CHECK(c[4] == d);
+    CHECK(c[5] == b);
+  }
+
+  // Lines counted across slices: errors near the end of the file, found by a later slice.
+  const std::size_t lines = static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n'));
+  CHECK_THAT(obj_error(text + "f 1 2 x\n"), Catch::Contains(":" + std::to_string(lines + 1) + ":7: bad face corner 'x'"));
+  CHECK_THAT(obj_error(text + "f 1 2 999999\n"),
+             Catch::Contains(":" + std::to_string(lines + 1) + ":7: vertex index 999999 is out of range"));
+  // Of two malformed lines the first one in the file is reported, though a later slice found the
+  // other first.
+  CHECK_THAT(obj_error("v 1 2 x\n" + text + "v nan 0 0\n"), Catch::Contains(":1:7: 'x' is not a number"));
+  // A malformed line is reported before an index out of range earlier in the file.
+  CHECK_THAT(obj_error("f 1 2 999999\n" + text + "v nan 0 0\n"),
+             Catch::Contains(":" + std::to_string(lines + 2) + ":3: 'nan' is not a finite number"));
+}
+
+TEST_CASE("OBJ: numbers read exactly as std::from_chars reads them, in every spelling", "[scene][obj]") {
+  // Random decimals of 1 to 12 digits, the point anywhere, some with exponents: the short ones
+  // take the reader's quick path, the others std::from_chars.
+  std::mt19937 rng(11);
+  std::string text;
+  std::vector<float> expected;
+  for (int i = 0; i < 30000; ++i) {
+    std::string digits;
+    const int count = 1 + static_cast<int>(rng() % 12);
+    for (int d = 0; d < count; ++d) digits += static_cast<char>('0' + rng() % 10);
+    const std::size_t point = rng() % (digits.size() + 1);
+    std::string word = (rng() % 2 ? "-" : "") + digits.substr(0, point) + "." + digits.substr(point);
+    if (word == "." || word == "-.") word += "0";
+    if (rng() % 8 == 0) word += "e" + std::to_string(static_cast<int>(rng() % 20) - 10);
+    float value = 0;
+    const auto result = std::from_chars(word.data(), word.data() + word.size(), value);
+    REQUIRE(result.ec == std::errc());
+    text += "v " + word + " 0 0\n";
+    expected.push_back(value);
+  }
+  text += "f 1 2 3\n";
+  const MeshData m = load_obj_text(text);
+  REQUIRE(m.positions.size() == expected.size());
+  std::size_t differ = 0;
+  for (std::size_t i = 0; i < expected.size(); ++i) differ += m.positions[i].x != static_cast<double>(expected[i]);
+  CHECK(differ == 0);
+}
