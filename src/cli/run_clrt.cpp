@@ -1,5 +1,6 @@
 #include "cli/run_clrt.hpp"
 
+#include <malloc.h>
 #include <sys/resource.h>
 #include <unistd.h>
 
@@ -12,6 +13,7 @@
 #include <sstream>
 
 #include "device/device_select.hpp"
+#include "geometry/geometry_data.hpp"
 #include "image/fsf_animation.hpp"
 #include "render/frame_setup.hpp"
 #include "render/orbit.hpp"
@@ -85,7 +87,7 @@ void print_stats(const CliOptions& cli, const RenderStats& stats, const ImageOut
   if (cli.stats == StatsFormat::Json) out << stats.to_json().dump(2) << "\n";
 }
 
-int render_frames(const CliOptions& cli, const Scene& scene, const FramePlan& frames,
+int render_frames(const CliOptions& cli, Scene& scene, const FramePlan& frames,
                   const ImageOutput& output, RenderStats& stats, Progress& progress,
                   Clock::time_point start) {
   RenderSetup setup;
@@ -96,7 +98,13 @@ int render_frames(const CliOptions& cli, const Scene& scene, const FramePlan& fr
   if (!cli.quiet)
     for (const DeviceEntry& d : setup.devices) progress.message("device " + describe_device(d));
 
-  Renderer renderer(scene, setup, &progress);
+  progress.phase("building the BVH");
+  GeometryData geometry = build_geometry(scene);
+  release_mesh_data(scene);  // the BVH's tables hold all the device needs
+  // The loader's and the builder's scratch goes back to the system before the devices and the
+  // image take their memory, rather than staying in the heap's free lists.
+  malloc_trim(0);
+  Renderer renderer(scene, std::move(geometry), setup, &progress);
   const PixelRect region = render_region(setup.options);
   const bool eight_bit = !holds_floats(output.format);
   std::unique_ptr<FsfAnimationWriter> animation;

@@ -41,6 +41,22 @@ compute::program DeviceContext::build(const std::string& source, const std::stri
   return program;
 }
 
+bool DeviceContext::works_in_host_memory() const {
+  return (entry_.device.type() & CL_DEVICE_TYPE_CPU) &&
+         entry_.device.get_info<cl_bool>(CL_DEVICE_HOST_UNIFIED_MEMORY);
+}
+
+compute::buffer DeviceContext::share_host_memory(const void* data, std::size_t bytes,
+                                                 const std::string& what) const {
+  try {
+    return compute::buffer(context_, bytes, CL_MEM_READ_ONLY | CL_MEM_USE_HOST_PTR,
+                           const_cast<void*>(data));
+  } catch (const compute::opencl_error& e) {
+    throw DeviceError("cannot use the " + what + " (" + mib(bytes) + ") on " + name() + ": " +
+                      e.error_string());
+  }
+}
+
 compute::buffer DeviceContext::allocate(std::size_t bytes, const std::string& what) const {
   const std::size_t max_alloc = entry_.device.get_info<cl_ulong>(CL_DEVICE_MAX_MEM_ALLOC_SIZE);
   const auto refuse = [&](const std::string& why) {

@@ -31,6 +31,12 @@ class DeviceContext {
   // A device buffer of `bytes`; `what` names it in the error when the device refuses.
   compute::buffer allocate(std::size_t bytes, const std::string& what) const;
 
+  // Whether the device computes in the host's memory (a CPU device): then a page-aligned host
+  // table can be its buffer as it lies.
+  bool works_in_host_memory() const;
+  // A read-only buffer over `bytes` of host memory at `data` (page-aligned), without a copy.
+  compute::buffer share_host_memory(const void* data, std::size_t bytes, const std::string& what) const;
+
  private:
   DeviceEntry entry_;
   compute::context context_;

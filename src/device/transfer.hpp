@@ -7,16 +7,25 @@
 
 #include "device/device_context.hpp"
 #include "device/kernel_args.hpp"
+#include "geometry/device_tables.hpp"
 
 namespace clrt {
 
-// A buffer holding `table` (an empty table still gets a buffer, so that it binds).
-template <class T>
-Global<T> upload(DeviceContext& device, const std::vector<T>& table, const std::string& what) {
+// A buffer holding a copy of `table` (an empty table still gets a buffer, so that it binds).
+template <class T, class A>
+Global<T> upload(DeviceContext& device, const std::vector<T, A>& table, const std::string& what) {
   compute::buffer buffer = device.allocate(sizeof(T) * table.size(), what);
   if (!table.empty())
     device.queue().enqueue_write_buffer(buffer, 0, sizeof(T) * table.size(), table.data());
   return Global<T>(buffer);
+}
+
+// A read-only buffer of `table`: on a device that works in host memory, `table` itself (it must
+// then outlive the buffer and stay unchanged), elsewhere a copy.
+template <class T>
+Global<const T> share(DeviceContext& device, const DeviceTable<T>& table, const std::string& what) {
+  if (table.empty() || !device.works_in_host_memory()) return upload(device, table, what);
+  return Global<const T>(device.share_host_memory(table.data(), sizeof(T) * table.size(), what));
 }
 
 // An uninitialised buffer of `count` Ts.

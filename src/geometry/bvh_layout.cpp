@@ -60,7 +60,7 @@ struct LeafRef {
 // Writes the tree's nodes from slot `first_slot` of `table`; `leaf_ref(lane)` gives a leaf lane's
 // reference. Returns the root's block.
 template <class LeafRefOf>
-std::uint32_t write_nodes(const BvhTree& tree, std::size_t first_slot, std::vector<dev::BvhNode>& table,
+std::uint32_t write_nodes(const BvhTree& tree, std::size_t first_slot, BvhTable& table,
                           LeafRefOf leaf_ref) {
   const std::uint32_t root = checked_block(first_slot * kSlotBlocks);
   checked_block((first_slot + tree.nodes.size()) * kSlotBlocks);
@@ -90,14 +90,14 @@ std::uint32_t write_nodes(const BvhTree& tree, std::size_t first_slot, std::vect
 
 // Writes packet p (whole blocks) at block `block`, within the table.
 template <class Packet>
-void write_packet(std::vector<dev::BvhNode>& table, std::size_t block, const Packet& p) {
+void write_packet(BvhTable& table, std::size_t block, const Packet& p) {
   if ((block * kBlock + sizeof p) > table.size() * sizeof(dev::BvhNode))
     throw std::logic_error("BVH: packet outside the table");
   std::memcpy(reinterpret_cast<unsigned char*>(table.data()) + block * kBlock, &p, sizeof p);
 }
 
 template <class Packet>
-Packet read_packet(const std::vector<dev::BvhNode>& table, std::uint32_t block) {
+Packet read_packet(const BvhTable& table, std::uint32_t block) {
   if ((static_cast<std::size_t>(block) * kBlock + sizeof(Packet)) > table.size() * sizeof(dev::BvhNode))
     throw std::out_of_range("BVH: no packet at block " + std::to_string(block));
   Packet p;
@@ -158,7 +158,7 @@ std::size_t packet_blocks(const TopLevelItems& top, const BvhLane& leaf) {
 
 // Writes the packets of a top-level leaf from `block` on; returns its reference.
 LeafRef write_top_leaf(const TopLevelItems& top, const BvhLane& leaf, std::size_t block,
-                       std::vector<dev::BvhNode>& table) {
+                       BvhTable& table) {
   const TopLevelItem& first = top.items.at(leaf.first);
   const auto ref = ~static_cast<dev::i32>(checked_block(block));
   if (first.sphere) {
@@ -183,7 +183,7 @@ std::size_t top_level_slots(const BvhTree& tree, const TopLevelItems& top) {
   return tree.nodes.size() + slots_for_blocks(blocks);
 }
 
-void write_top_level(const BvhTree& tree, const TopLevelItems& top, std::vector<dev::BvhNode>& table) {
+void write_top_level(const BvhTree& tree, const TopLevelItems& top, BvhTable& table) {
   const Leaves leaves(tree);
   std::size_t block = tree.nodes.size() * kSlotBlocks;  // the next packet's
   std::vector<LeafRef> refs;
@@ -197,7 +197,7 @@ void write_top_level(const BvhTree& tree, const TopLevelItems& top, std::vector<
 }
 
 std::uint32_t append_mesh_level(const BvhTree& tree, const TriangleSource& source, std::uint32_t first_triangle,
-                                std::uint32_t only_instance, std::vector<dev::BvhNode>& table) {
+                                std::uint32_t only_instance, BvhTable& table) {
   const Leaves leaves(tree);
   const std::size_t first_slot = table.size();
   const std::size_t packets_block = (first_slot + tree.nodes.size()) * kSlotBlocks;
@@ -223,21 +223,21 @@ std::uint32_t append_mesh_level(const BvhTree& tree, const TriangleSource& sourc
   return root;
 }
 
-dev::BvhNode node_at(const std::vector<dev::BvhNode>& table, std::uint32_t block) {
+dev::BvhNode node_at(const BvhTable& table, std::uint32_t block) {
   if (block % kSlotBlocks != 0 || block / kSlotBlocks >= table.size())
     throw std::out_of_range("BVH: no node at block " + std::to_string(block));
   return table[block / kSlotBlocks];
 }
 
-dev::BvhTrianglePacket triangle_packet_at(const std::vector<dev::BvhNode>& table, std::uint32_t block) {
+dev::BvhTrianglePacket triangle_packet_at(const BvhTable& table, std::uint32_t block) {
   return read_packet<dev::BvhTrianglePacket>(table, block);
 }
 
-dev::BvhSpherePacket sphere_packet_at(const std::vector<dev::BvhNode>& table, std::uint32_t block) {
+dev::BvhSpherePacket sphere_packet_at(const BvhTable& table, std::uint32_t block) {
   return read_packet<dev::BvhSpherePacket>(table, block);
 }
 
-dev::BvhMeshInstancePacket mesh_instance_packet_at(const std::vector<dev::BvhNode>& table, std::uint32_t block) {
+dev::BvhMeshInstancePacket mesh_instance_packet_at(const BvhTable& table, std::uint32_t block) {
   return read_packet<dev::BvhMeshInstancePacket>(table, block);
 }
 

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "geometry/bvh_builder.hpp"
+#include "geometry/device_tables.hpp"
 #include "geometry/instance_bounds.hpp"
 #include "geometry/mesh_table.hpp"
 #include "shared/bvh.h"
@@ -35,19 +36,19 @@ struct TopLevelItems {
 std::size_t top_level_slots(const BvhTree& tree, const TopLevelItems& items);
 
 // Writes the top level into the table's first top_level_slots() slots, which must exist.
-void write_top_level(const BvhTree& tree, const TopLevelItems& items, std::vector<dev::BvhNode>& table);
+void write_top_level(const BvhTree& tree, const TopLevelItems& items, BvhTable& table);
 
 // Appends a mesh's bottom level, built over the triangles of `source` (leaf item i is its
 // triangle tree.order[i], row first_triangle + i of the per-triangle tables): its nodes, then its
 // leaves' triangle packets, written on every core, which name `only_instance` (see
 // BvhTrianglePacket). Returns the block of its root.
 std::uint32_t append_mesh_level(const BvhTree& tree, const TriangleSource& source, std::uint32_t first_triangle,
-                                std::uint32_t only_instance, std::vector<dev::BvhNode>& table);
+                                std::uint32_t only_instance, BvhTable& table);
 
 // The records that start at `block`.
-dev::BvhNode node_at(const std::vector<dev::BvhNode>& table, std::uint32_t block);
-dev::BvhTrianglePacket triangle_packet_at(const std::vector<dev::BvhNode>& table, std::uint32_t block);
-dev::BvhSpherePacket sphere_packet_at(const std::vector<dev::BvhNode>& table, std::uint32_t block);
-dev::BvhMeshInstancePacket mesh_instance_packet_at(const std::vector<dev::BvhNode>& table, std::uint32_t block);
+dev::BvhNode node_at(const BvhTable& table, std::uint32_t block);
+dev::BvhTrianglePacket triangle_packet_at(const BvhTable& table, std::uint32_t block);
+dev::BvhSpherePacket sphere_packet_at(const BvhTable& table, std::uint32_t block);
+dev::BvhMeshInstancePacket mesh_instance_packet_at(const BvhTable& table, std::uint32_t block);
 
 }  // namespace clrt

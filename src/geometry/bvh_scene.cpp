@@ -22,8 +22,8 @@ std::vector<BvhTree> build_mesh_bvhs(const std::vector<TriangleSource>& sources,
 }
 
 // Rewrites table[first, first + order.size()) so that entry i is the old entry first + order[i].
-template <class T>
-void reorder(std::vector<T>& table, std::size_t first, const std::vector<std::uint32_t>& order) {
+template <class T, class A>
+void reorder(std::vector<T, A>& table, std::size_t first, const std::vector<std::uint32_t>& order) {
   std::vector<T> old(table.begin() + first, table.begin() + first + order.size());
   for (std::size_t i = 0; i < order.size(); ++i) table[first + i] = old[order[i]];
 }

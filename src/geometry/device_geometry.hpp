@@ -24,6 +24,8 @@ struct SceneArgs {
 
 class DeviceGeometry {
  public:
+  // On a device that works in host memory the buffers are `geometry`'s own tables, which must
+  // then outlive this object unchanged.
   DeviceGeometry(DeviceContext& device, const GeometryData& geometry);
 
   const SceneArgs& args() const { return args_; }

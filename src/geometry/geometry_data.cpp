@@ -11,7 +11,7 @@ namespace clrt {
 namespace {
 
 template <class T>
-std::size_t bytes(const std::vector<T>& table) {
+std::size_t bytes(const DeviceTable<T>& table) {
   return sizeof(T) * table.size();
 }
 

@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <vector>
 
+#include "geometry/device_tables.hpp"
 #include "scene/scene.hpp"
 #include "shared/bvh.h"
 #include "shared/scene.h"
@@ -13,15 +14,15 @@
 namespace clrt {
 
 struct GeometryData {
-  std::vector<dev::Instance> instances;  // planes are [0, plane_count): they stay outside the BVH
+  DeviceTable<dev::Instance> instances;  // planes are [0, plane_count): they stay outside the BVH
   dev::u32 plane_count = 0;
-  std::vector<dev::Mesh> meshes;  // the scene's mesh files, then one mesh of the loose triangles
+  DeviceTable<dev::Mesh> meshes;  // the scene's mesh files, then one mesh of the loose triangles
   // Per triangle, each mesh's triangles in the order of its BVH leaves, which is the order
   // Hit.primitive counts in (triangle_source maps them back to the file's order):
-  std::vector<dev::TriangleNormals> triangle_normals;  // zero without normals
-  std::vector<dev::u32> triangle_materials;            // one per triangle; used by the loose
+  DeviceTable<dev::TriangleNormals> triangle_normals;  // zero without normals
+  DeviceTable<dev::u32> triangle_materials;            // one per triangle; used by the loose
                                                        // triangles only (else 0)
-  std::vector<dev::BvhNode> nodes;                     // the top level's root is node 0
+  BvhTable nodes;                     // the top level's root is node 0
   double build_seconds = 0;                            // BVH build time, for --stats
 
   // Host-only maps back to the scene (the BVH build reorders instances and triangles):

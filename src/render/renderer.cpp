@@ -110,14 +110,26 @@ struct Renderer::Devices {
   std::vector<DeviceWorker> workers;
 };
 
-Renderer::Renderer(const Scene& scene, const RenderSetup& setup, Progress* progress)
-    : options_(setup.options), devices_(std::make_unique<Devices>()) {
+namespace {
+
+GeometryData checked_geometry(const Scene& scene, const RenderSetup& setup, Progress* progress) {
   check_render_setup(setup);
   if (progress) progress->phase("building the BVH");
-  const GeometryData geometry = build_geometry(scene);
-  setup_stats_.bvh_seconds = geometry.build_seconds;
-  setup_stats_.geometry_bytes = geometry.device_bytes();
-  setup_stats_.bvh_bytes = geometry.nodes.size() * sizeof(dev::BvhNode);
+  return build_geometry(scene);
+}
+
+}  // namespace
+
+Renderer::Renderer(const Scene& scene, const RenderSetup& setup, Progress* progress)
+    : Renderer(scene, checked_geometry(scene, setup, progress), setup, progress) {}
+
+Renderer::Renderer(const Scene& scene, GeometryData geometry, const RenderSetup& setup,
+                   Progress* progress)
+    : options_(setup.options), geometry_(std::move(geometry)), devices_(std::make_unique<Devices>()) {
+  check_render_setup(setup);
+  setup_stats_.bvh_seconds = geometry_.build_seconds;
+  setup_stats_.geometry_bytes = geometry_.device_bytes();
+  setup_stats_.bvh_bytes = geometry_.nodes.size() * sizeof(dev::BvhNode);
   const FrameData frame = make_frame(scene, options_);
 
   if (progress) progress->phase("building the kernels");
@@ -127,7 +139,7 @@ Renderer::Renderer(const Scene& scene, const RenderSetup& setup, Progress* progr
     DeviceWorker w;
     w.context = std::make_unique<DeviceContext>(entry);
     const compute::program program = build_renderer_program(*w.context);
-    w.frame = std::make_unique<DeviceFrame>(*w.context, frame, geometry);
+    w.frame = std::make_unique<DeviceFrame>(*w.context, frame, geometry_);
     w.timeline = std::make_unique<BusyTimeline>();
     IntegratorConfig config;
     config.capacity = tuning.wavefront;

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "device/device_select.hpp"
+#include "geometry/geometry_data.hpp"
 #include "image/image.hpp"
 #include "render/pixel_rect.hpp"
 #include "render/progress.hpp"
@@ -36,6 +37,11 @@ class Renderer {
   // Builds everything a render needs, naming the phases on `progress`; checks `setup` first
   // (check_render_setup).
   Renderer(const Scene& scene, const RenderSetup& setup, Progress* progress = nullptr);
+  // The same with the geometry already built (the caller may then free the scene's meshes,
+  // release_mesh_data, before the devices are set up). The renderer keeps `geometry`: a CPU
+  // device computes in its tables where they lie.
+  Renderer(const Scene& scene, GeometryData geometry, const RenderSetup& setup,
+           Progress* progress = nullptr);
   ~Renderer();
   Renderer(const Renderer&) = delete;
   Renderer& operator=(const Renderer&) = delete;
@@ -56,6 +62,7 @@ class Renderer {
  private:
   struct Devices;
   const RenderOptions options_;
+  const GeometryData geometry_;
   std::unique_ptr<Devices> devices_;
   RenderStats setup_stats_;  // BVH and kernel build, reported once
   double render_seconds_ = 0;

@@ -24,7 +24,7 @@ float packet_vertex(const dev::BvhTrianglePacket& p, int j, int axis, int lane) 
 
 class Walker {
  public:
-  Walker(const std::vector<dev::BvhNode>& table, Level level, std::uint32_t first, std::uint32_t count,
+  Walker(const BvhTable& table, Level level, std::uint32_t first, std::uint32_t count,
          const std::function<std::vector<Vec3>(std::uint32_t)>& points, std::vector<std::string>& errors,
          const std::set<std::uint32_t>& mesh_roots)
       : table_(table), level_(level), first_(first), seen_(count, 0), points_(points), errors_(errors),
@@ -167,7 +167,7 @@ class Walker {
     if (errors_.size() < 20) errors_.push_back(what);
   }
 
-  const std::vector<dev::BvhNode>& table_;
+  const BvhTable& table_;
   Level level_;
   std::uint32_t first_;
   std::vector<int> seen_;
@@ -179,7 +179,7 @@ class Walker {
 };
 
 // The packets of the mesh level at `block`, in tree order.
-void collect_packets(const std::vector<dev::BvhNode>& table, std::uint32_t block,
+void collect_packets(const BvhTable& table, std::uint32_t block,
                      std::vector<dev::BvhTrianglePacket>& out) {
   const dev::BvhNode n = node_at(table, block);
   for (int k = 0; k < CLRT_BVH_WIDTH; ++k) {
@@ -193,7 +193,7 @@ void collect_packets(const std::vector<dev::BvhNode>& table, std::uint32_t block
 
 }  // namespace
 
-TreeShape check_tree(const std::vector<dev::BvhNode>& table, std::uint32_t root, Level level,
+TreeShape check_tree(const BvhTable& table, std::uint32_t root, Level level,
                      std::uint32_t first, std::uint32_t count,
                      const std::function<std::vector<Vec3>(std::uint32_t)>& points,
                      std::vector<std::string>& errors, const std::set<std::uint32_t>& mesh_roots) {
@@ -202,7 +202,7 @@ TreeShape check_tree(const std::vector<dev::BvhNode>& table, std::uint32_t root,
   return walker.finish();
 }
 
-std::uint32_t packets_instance(const std::vector<dev::BvhNode>& table, std::uint32_t root,
+std::uint32_t packets_instance(const BvhTable& table, std::uint32_t root,
                                std::vector<std::string>& errors) {
   std::vector<dev::BvhTrianglePacket> packets;
   collect_packets(table, root, packets);

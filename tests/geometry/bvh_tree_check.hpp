@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "math/vec3.hpp"
+#include "geometry/device_tables.hpp"
 #include "shared/bvh.h"
 
 namespace clrt::bvhtest {
@@ -31,14 +32,14 @@ enum class Level { Top, Mesh };
 // the top level, an inner lane that leads to a block of `mesh_roots` stands for the instance its
 // mesh's packets name. Every lane box above an item must contain its points, and an empty lane
 // must have an empty box. Problems are appended to `errors`.
-TreeShape check_tree(const std::vector<dev::BvhNode>& table, std::uint32_t root, Level level,
+TreeShape check_tree(const BvhTable& table, std::uint32_t root, Level level,
                      std::uint32_t first, std::uint32_t count,
                      const std::function<std::vector<Vec3>(std::uint32_t)>& points,
                      std::vector<std::string>& errors, const std::set<std::uint32_t>& mesh_roots = {});
 
 // The instance that the packets of the mesh level at `root` name (CLRT_NO_HIT for none); every
 // packet must name the same one.
-std::uint32_t packets_instance(const std::vector<dev::BvhNode>& table, std::uint32_t root,
+std::uint32_t packets_instance(const BvhTable& table, std::uint32_t root,
                                std::vector<std::string>& errors);
 
 }  // namespace clrt::bvhtest

@@ -344,7 +344,7 @@ TEST_CASE("nested boxes that the SAH peels one by one stay within the depth limi
       triangles.push_back({lo, hi, lo, 0});
     }
     const TriangleSource source(triangles);
-    std::vector<dev::BvhNode> table;
+    BvhTable table;
     const std::uint32_t root = append_mesh_level(tree, source, 0, CLRT_NO_HIT, table);
     std::vector<std::string> errors;
     const TreeShape shape = check_tree(table, root, Level::Mesh, 0, static_cast<std::uint32_t>(boxes.size()),
