@@ -9,6 +9,9 @@
 #include "cli/options.hpp"
 #include "device/device_select.hpp"
 #include "image/image.hpp"
+#include "image/interrupt_cleanup.hpp"
+#include "render/output_guard.hpp"
+#include "render/render_limits.hpp"
 #include "render/renderer.hpp"
 #include "scene/scene.hpp"
 
@@ -46,6 +49,7 @@ int run(const clrt::CliOptions& cli) {
   const std::string out = clrt::output_path(cli);
   try {
     check_output(out);
+    clrt::check_output_is_not_input(out, scene);
   } catch (const clrt::ImageError& e) {
     std::cerr << "clrt: error: " << e.what() << "\n";
     return 2;
@@ -54,6 +58,12 @@ int run(const clrt::CliOptions& cli) {
   clrt::RenderSetup setup;
   setup.options = clrt::resolve_render_options(cli, scene);
   setup.devices = clrt::select_devices(cli.device);
+  try {
+    clrt::check_render_limits(scene, setup.options, clrt::measure_budget(setup.devices, setup.options));
+  } catch (const clrt::RenderLimitError& e) {
+    std::cerr << "clrt: error: " << e.what() << "\n";
+    return e.exit_code();
+  }
   setup.profile = cli.stats != clrt::StatsFormat::None;
   setup.progress = !cli.quiet;
   if (!cli.quiet)
@@ -75,6 +85,7 @@ int run(const clrt::CliOptions& cli) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  clrt::remove_temporaries_on_signal();
   const clrt::ParseResult parsed = clrt::parse_command_line(argc, argv);
   if (parsed.exit_code) return *parsed.exit_code;
   try {

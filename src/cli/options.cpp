@@ -6,6 +6,8 @@
 #include <iostream>
 #include <regex>
 
+#include "scene/limits.hpp"
+
 namespace clrt {
 namespace {
 
@@ -40,9 +42,9 @@ ParseResult parse_command_line(int argc, char** argv) {
       },
       "image size WxH (overrides the scene's `resolution`)");
   app.add_option("--spp", o.samples, "camera samples per pixel (overrides `samples`)")
-      ->check(CLI::Range(1, 1 << 16));
+      ->check(CLI::Range(std::int64_t{1}, limits::kMaxSamples));
   app.add_option("--max-depth", o.max_depth, "deepest reflection/refraction bounce (overrides `maxdepth`)")
-      ->check(CLI::Range(0, 1 << 16));
+      ->check(CLI::Range(std::int64_t{0}, limits::kMaxDepth));
   app.add_option_function<std::string>(
          "--mode",
          [&](const std::string& mode) {

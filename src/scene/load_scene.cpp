@@ -1,35 +1,28 @@
-#include <cerrno>
-#include <cstring>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 
 #include "scene/camera_check.hpp"
 #include "scene/command_table.hpp"
+#include "scene/coordinate_check.hpp"
+#include "scene/input_text.hpp"
 #include "scene/lexer.hpp"
+#include "scene/limits.hpp"
 
 namespace clrt {
 namespace {
 
 std::string read_scene_file(const std::string& path) {
-  const auto cannot_read = [&](const std::string& why) {
-    return SceneError({path, 1, 1}, "cannot read the scene file (" + why + ")");
-  };
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) throw cannot_read("it is a folder");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw cannot_read(std::strerror(errno));
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (in.bad()) throw cannot_read("read error");
-  return text.str();
+  try {
+    return read_input_text(path, limits::kMaxSceneFileBytes);
+  } catch (const InputFileError& e) {
+    throw SceneError({path, 1, 1}, std::string("cannot read the scene file (") + e.what() + ")");
+  }
 }
 
 void apply(LoaderState& state, const Line& line) {
   const CommandArgs args(state.scene.path, line);
   const auto command = command_table().find(args.name());
   if (command == command_table().end() || line.words.front().quoted)
-    throw SceneError(args.command_location(), "unknown command '" + line.words.front().text + "'");
+    throw SceneError(args.command_location(), "unknown command '" + excerpt(line.words.front().text) + "'");
   command->second(state, args);
 }
 
@@ -42,6 +35,7 @@ Scene load_scene(const std::string& path) {
   state.scene.materials.push_back(MaterialSpec{});
   for (const Line& line : split_into_lines(read_scene_file(path), path)) apply(state, line);
   check_camera(state);
+  check_coordinates(state);
   return std::move(state.scene);
 }
 
