@@ -23,10 +23,11 @@ install_missing clang-15 libclang-common-15-dev
 if [[ ! -f build-fuzz/CMakeCache.txt ]]; then
   CC=clang-15 CXX=clang++-15 cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo \
     -DCLRT_FUZZ=ON -DCLRT_BUILD_TESTS=OFF
+else
+  cmake build-fuzz >/dev/null  # picks up targets added since
 fi
-all_targets=(fuzz_ray_scene fuzz_obj_mesh fuzz_image_fsf fuzz_image_ppm fuzz_image_png)
 targets=("$@")
-((${#targets[@]})) || targets=("${all_targets[@]}")
+((${#targets[@]})) || mapfile -t targets < build-fuzz/fuzz_targets.txt
 cmake --build build-fuzz -j"$(nproc)" --target "${targets[@]}"
 
 # Scenes and meshes are text of a few KiB; images are kept small so that runs stay fast.

@@ -1,11 +1,18 @@
 // check_render_limits() against budgets given by hand: the device and host figures a machine
-// would report, so that each refusal is tested whatever this machine has.
+// would report, so that each refusal is tested whatever this machine has; and the queue sizes it
+// checks against what the renderer really allocates.
 #include <catch2/catch.hpp>
 
+#include <regex>
 #include <string>
+#include <tuple>
 
+#include "geometry/geometry_data.hpp"
+#include "render/frame_setup.hpp"
 #include "render/render_limits.hpp"
 #include "render/wave_sizes.hpp"
+#include "render_support.hpp"
+#include "scratch_dir.hpp"
 
 using namespace clrt;
 
@@ -120,4 +127,28 @@ TEST_CASE("queue sizes are computed in 64 bits", "[limits]") {
   CHECK(s.wave_pixels == 4096);
   const WaveSizes big = wave_sizes(1u << 26, 1, std::uint64_t{1} << 20);
   CHECK(big.buffers().front().bytes == (std::uint64_t{1} << 26) * 64);  // 4 GiB, no wrap
+}
+
+TEST_CASE("the checked queue sizes are the ones the renderer allocates", "[limits][cli]") {
+  const std::string scene_path = test::test_scene("area.ray");
+  const Scene scene = load_scene(scene_path);
+  const clrt::test::ScratchDir dir;
+  for (const auto& [options, samples, wavefront] :
+       {std::tuple<std::string, std::uint64_t, std::uint64_t>{"", 1, 16384},
+        {" --spp 4 --wavefront 1024", 4, 1024}}) {
+    INFO(options);
+    const test::CommandResult r = test::run_clrt(
+        test::quoted(scene_path) + " -q --resolution 32x16 --stats=json -o " + dir.file("out.png") + options);
+    std::smatch reported;
+    REQUIRE(std::regex_search(r.output, reported, std::regex("\"device_bytes\": ([0-9]+)")));
+    RenderOptions o = RenderOptions::from_scene(scene);
+    o.samples = static_cast<int>(samples);
+    const FrameData frame = make_frame(scene, o);
+    std::uint64_t expected = build_geometry(scene).device_bytes() + sizeof(dev::Camera) +
+                             sizeof(dev::RenderParams) + sizeof(dev::Material) * frame.materials.size() +
+                             sizeof(dev::Light) * frame.lights.size() + 6 * sizeof(dev::u32);
+    for (const WaveSizes::Buffer& b : wave_sizes(wavefront, samples, frame.params.shadow_samples).buffers())
+      expected += b.bytes;
+    CHECK(std::stoull(reported[1]) == expected);
+  }
 }
