@@ -13,6 +13,13 @@ if(CLRT_SANITIZE OR CLRT_FUZZ)
   add_link_options(${clrt_sanitizer_flags})
 endif()
 
+if(CLRT_SANITIZE)
+  # Whatever the build type: -O1 -g1 compiles in half the time of -O2 -g (the sanitized tree is
+  # built in every CI run) and keeps line numbers in reports. GCC's -Wmaybe-uninitialized fires
+  # on libstdc++'s <regex> at -O1 with ASan, falsely.
+  add_compile_options(-O1 -g1 $<$<CXX_COMPILER_ID:GNU>:-Wno-maybe-uninitialized>)
+endif()
+
 if(CLRT_FUZZ)
   if(NOT CMAKE_CXX_COMPILER_ID STREQUAL "Clang")
     message(FATAL_ERROR "CLRT_FUZZ needs Clang (libFuzzer): configure with CXX=clang++-15")
