@@ -5,9 +5,12 @@
 #include "cli/options.hpp"
 #include "cli/run_clrt.hpp"
 #include "image/image.hpp"
+#include "image/interrupt_cleanup.hpp"
+#include "render/render_limits.hpp"
 #include "render/usage_error.hpp"
 
 int main(int argc, char** argv) {
+  clrt::remove_temporaries_on_signal();
   const clrt::ParseResult parsed = clrt::parse_command_line(argc, argv);
   if (parsed.exit_code) return *parsed.exit_code;
   try {
@@ -15,6 +18,9 @@ int main(int argc, char** argv) {
   } catch (const clrt::UsageError& e) {
     std::cerr << "clrt: error: " << e.what() << "\n";
     return 2;
+  } catch (const clrt::RenderLimitError& e) {
+    std::cerr << "clrt: error: " << e.what() << "\n";
+    return e.exit_code();
   } catch (const std::exception& e) {
     std::cerr << "clrt: error: " << e.what() << "\n";
     return 1;

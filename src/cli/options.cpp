@@ -8,6 +8,8 @@
 #include "cli/tool_command_line.hpp"
 #include "render/integrator.hpp"
 
+#include "scene/limits.hpp"
+
 namespace clrt {
 namespace {
 
@@ -60,10 +62,10 @@ void add_image_options(CLI::App& app, CliOptions& o) {
 
 void add_shading_options(CLI::App& app, CliOptions& o) {
   app.add_option("--spp", o.samples, "camera samples per pixel (overrides `samples`)")
-      ->check(CLI::Range(1, 1 << 16));
+      ->check(CLI::Range(std::int64_t{1}, limits::kMaxSamples));
   app.add_option("--max-depth", o.max_depth,
                  "deepest reflection/refraction bounce (overrides `maxdepth`)")
-      ->check(CLI::Range(0, 1 << 16));
+      ->check(CLI::Range(std::int64_t{0}, limits::kMaxDepth));
   app.add_option_function<std::string>(
          "--mode",
          [&](const std::string& mode) {

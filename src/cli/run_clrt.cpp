@@ -17,6 +17,8 @@
 #include "image/fsf_animation.hpp"
 #include "render/frame_setup.hpp"
 #include "render/orbit.hpp"
+#include "render/output_guard.hpp"
+#include "render/render_limits.hpp"
 #include "render/renderer.hpp"
 #include "render/usage_error.hpp"
 #include "scene/scene.hpp"
@@ -95,6 +97,7 @@ int render_frames(const CliOptions& cli, Scene& scene, const FramePlan& frames,
   setup.devices = select_devices(cli.device);
   setup.profile = cli.stats != StatsFormat::None;
   check_render_setup(setup);
+  check_render_limits(scene, setup.options, measure_budget(setup.devices, setup.options));
   if (!cli.quiet)
     for (const DeviceEntry& d : setup.devices) progress.message("device " + describe_device(d));
 
@@ -176,6 +179,13 @@ int run_clrt(const CliOptions& cli) {
     return 2;
   }
   stats.load_seconds = seconds_since(start);
+  try {
+    if (!output.is_stdout())
+      for (std::uint32_t frame = frames.first; frame <= frames.last; ++frame)
+        check_output_is_not_input(frame_output(output, frames, frame).path, scene);
+  } catch (const ImageError& e) {
+    throw UsageError(e.what());
+  }
   return render_frames(cli, scene, frames, output, stats, progress, start);
 }
 

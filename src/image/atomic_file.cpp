@@ -25,12 +25,16 @@ AtomicFile::AtomicFile(std::string path) : path_(std::move(path)) {
   constexpr int kAttempts = 100;
   for (int attempt = 0; attempt < kAttempts; ++attempt) {
     temp_path_ = next_temp_candidate(path_);
+    registration_.emplace(temp_path_);
     // Mode 0666 lets the umask decide, as for any newly created file (mkstemp would force 0600).
     fd_ = ::open(temp_path_.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
     if (fd_ >= 0) {
       temp_exists_ = true;
       return;
     }
+    const int error = errno;
+    registration_.reset();  // an existing file (a leftover of another process) is not ours
+    errno = error;
     if (errno != EEXIST) break;
   }
   fail("cannot create temporary");
@@ -47,6 +51,7 @@ void AtomicFile::write_through(const void* data, std::size_t size) {
 
 void AtomicFile::finish() {
   flush();
+  hold_before_commit_for_tests(temp_path_);
   if (::fsync(fd_) != 0) fail("cannot flush temporary");
   const int fd = fd_;
   fd_ = -1;
@@ -54,6 +59,7 @@ void AtomicFile::finish() {
   if (::close(fd) != 0) fail("cannot close temporary");
   if (::rename(temp_path_.c_str(), path_.c_str()) != 0) fail("cannot rename temporary");
   temp_exists_ = false;
+  registration_.reset();
 }
 
 void AtomicFile::fail(const char* step) {
@@ -68,6 +74,7 @@ void AtomicFile::discard() noexcept {
   fd_ = -1;
   if (temp_exists_) ::unlink(temp_path_.c_str());
   temp_exists_ = false;
+  registration_.reset();
 }
 
 }  // namespace clrt::image_detail

@@ -1,5 +1,6 @@
 // eye, lookat, up, fov, background, resolution, maxdepth, samples.
 #include "scene/command_table.hpp"
+#include "scene/limits.hpp"
 
 namespace clrt {
 namespace {
@@ -26,7 +27,7 @@ void fov(LoaderState& s, const CommandArgs& a) {
   a.require_count({1});
   const double degrees = a.number(0);
   if (degrees <= 0 || degrees >= 180)
-    throw a.error_at(0, "fov must be > 0 and < 180 degrees, found " + a.word(0).text);
+    throw a.error_at(0, "fov must be > 0 and < 180 degrees, found " + excerpt(a.word(0).text));
   s.scene.camera.fov_degrees = degrees;
 }
 
@@ -37,18 +38,26 @@ void background(LoaderState& s, const CommandArgs& a) {
 
 void resolution(LoaderState& s, const CommandArgs& a) {
   a.require_count({2});
-  s.scene.width = a.whole_number(0, 1, "the image width");
-  s.scene.height = a.whole_number(1, 1, "the image height");
+  constexpr int kSide = static_cast<int>(limits::kMaxImageSide);
+  const int width = a.whole_number(0, 1, kSide, "the image width");
+  const int height = a.whole_number(1, 1, kSide, "the image height");
+  if (std::int64_t{width} * height > limits::kMaxPixels)
+    throw a.error_at(0, "the image would have " + std::to_string(std::int64_t{width} * height) +
+                            " pixels, more than the limit of " +
+                            std::to_string(limits::kMaxPixels));
+  s.scene.width = width;
+  s.scene.height = height;
 }
 
 void maxdepth(LoaderState& s, const CommandArgs& a) {
   a.require_count({1});
-  s.scene.max_depth = a.whole_number(0, 0, "maxdepth");
+  s.scene.max_depth = a.whole_number(0, 0, static_cast<int>(limits::kMaxDepth), "maxdepth");
 }
 
 void samples(LoaderState& s, const CommandArgs& a) {
   a.require_count({1});
-  s.scene.samples = a.whole_number(0, 1, "the number of samples");
+  s.scene.samples =
+      a.whole_number(0, 1, static_cast<int>(limits::kMaxSamples), "the number of samples");
 }
 
 }  // namespace

@@ -2,21 +2,13 @@
 
 #include <algorithm>
 #include <cctype>
-#include <climits>
 #include <cmath>
-#include <sstream>
 
+#include "scene/limits.hpp"
 #include "scene/number.hpp"
 
 namespace clrt {
 namespace {
-
-// Range bounds in messages: 0 and 1 read as "0" and "1".
-std::string format_number(double value) {
-  std::ostringstream out;
-  out << value;
-  return out.str();
-}
 
 // "3", "0 or 4", "9, 10 or 11": the accepted argument counts, for messages.
 std::string list_counts(std::initializer_list<std::size_t> counts) {
@@ -51,7 +43,7 @@ void CommandArgs::require_count(std::initializer_list<std::size_t> allowed, std:
   const std::string message =
       "wrong number of arguments: " + subject + " takes " + list_counts(allowed) +
       (allowed.size() == 1 && *allowed.begin() == 1 ? " argument" : " arguments") +
-      (first > 0 ? " after '" + word(first - 1).text + "'" : "") + ", found " +
+      (first > 0 ? " after '" + excerpt(word(first - 1).text) + "'" : "") + ", found " +
       std::to_string(found);
   const std::size_t most = *std::max_element(allowed.begin(), allowed.end());
   if (found > most) throw error_at(first + most, message);
@@ -66,13 +58,17 @@ double CommandArgs::number(std::size_t i) const {
     case NumberProblem::None:
       return parsed.value;
     case NumberProblem::NotANumber:
-      throw error_at(i, "expected a number, found '" + w.text + "'");
+      throw error_at(i, "expected a number, found '" + excerpt(w.text) + "'");
     case NumberProblem::NotFinite:
       throw error_at(i, "'" + w.text + "' is not a finite number");
     case NumberProblem::OutOfRange:
+      throw error_at(i, "'" + excerpt(w.text) + "' is out of the range of a double");
+    case NumberProblem::TooLarge:
       break;
   }
-  throw error_at(i, "'" + w.text + "' is out of the range of a double");
+  throw error_at(i, "'" + excerpt(w.text) + "' is too large: numbers in a scene lie within -" +
+                        short_number(limits::kMaxNumber) + " and " +
+                        short_number(limits::kMaxNumber));
 }
 
 Vec3 CommandArgs::vec3(std::size_t first) const {
@@ -82,24 +78,22 @@ Vec3 CommandArgs::vec3(std::size_t first) const {
 Vec3 CommandArgs::nonzero_vec3(std::size_t first, const std::string& what) const {
   const Vec3 v = vec3(first);
   if (v == Vec3{0, 0, 0}) throw error_at(first, what + " must not be a zero-length vector");
-  // Squaring would overflow and make every later normalisation NaN.
-  if (!std::isfinite(dot(v, v))) throw error_at(first, what + " is too long");
   return v;
 }
 
-int CommandArgs::whole_number(std::size_t i, int min, const std::string& what) const {
+int CommandArgs::whole_number(std::size_t i, int min, int max, const std::string& what) const {
   const double value = number(i);
-  if (value != std::floor(value) || value < min || value > INT_MAX)
-    throw error_at(
-        i, what + " must be a whole number >= " + std::to_string(min) + ", found " + word(i).text);
+  if (value != std::floor(value) || value < min || value > max)
+    throw error_at(i, what + " must be a whole number from " + std::to_string(min) + " to " +
+                          std::to_string(max) + ", found " + excerpt(word(i).text));
   return static_cast<int>(value);
 }
 
 double CommandArgs::number_in(std::size_t i, double lo, double hi, const std::string& what) const {
   const double value = number(i);
   if (value < lo || value > hi)
-    throw error_at(i, what + " must be in [" + format_number(lo) + ", " + format_number(hi) +
-                          "], found " + word(i).text);
+    throw error_at(i, what + " must be in [" + short_number(lo) + ", " + short_number(hi) +
+                          "], found " + excerpt(word(i).text));
   return value;
 }
 

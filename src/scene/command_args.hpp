@@ -35,8 +35,8 @@ class CommandArgs {
   double number(std::size_t i) const;
   Vec3 vec3(std::size_t first) const;
   Vec3 nonzero_vec3(std::size_t first, const std::string& what) const;
-  // A number that must be a whole number >= `min` (and fit in an int).
-  int whole_number(std::size_t i, int min, const std::string& what) const;
+  // A number that must be a whole number in [min, max].
+  int whole_number(std::size_t i, int min, int max, const std::string& what) const;
   // A number that must lie in [lo, hi].
   double number_in(std::size_t i, double lo, double hi, const std::string& what) const;
 

@@ -2,6 +2,7 @@
 
 #include <cstddef>
 
+#include "scene/limits.hpp"
 #include "scene/source_location.hpp"
 
 namespace clrt {
@@ -56,6 +57,12 @@ std::vector<Line> split_into_lines(const std::string& text, const std::string& f
     std::size_t end = text.find('\n', start);
     if (end == std::string::npos) end = text.size();
     ++number;
+    if (end - start > limits::kMaxLineBytes)
+      throw SceneError({file, number, static_cast<int>(limits::kMaxLineBytes) + 1},
+                       "the line is " + std::to_string(end - start) +
+                           " bytes long, more than the limit of " +
+                           std::to_string(limits::kMaxLineBytes) + "; it starts '" +
+                           text.substr(start, limits::kExcerptBytes) + "...'");
     std::vector<Word> words = split_words(text.substr(start, end - start), number, file);
     if (!words.empty()) lines.push_back({number, std::move(words)});
     start = end + 1;

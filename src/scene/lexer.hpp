@@ -21,8 +21,8 @@ struct Line {
 
 // Words are separated by runs of spaces, tabs and carriage returns (so CRLF files read the same);
 // `#` starts a comment that runs to the end of the line. A word that starts with `"` runs to the
-// next `"` and may hold spaces and `#` (used for mesh paths). Throws SceneError on an
-// unterminated quote, located in `file`.
+// next `"` and may hold spaces and `#` (used for mesh paths). Throws SceneError, located in
+// `file`, on an unterminated quote or a line longer than limits::kMaxLineBytes.
 std::vector<Line> split_into_lines(const std::string& text, const std::string& file);
 
 }  // namespace clrt

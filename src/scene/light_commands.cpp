@@ -3,6 +3,8 @@
 #include <map>
 
 #include "scene/command_table.hpp"
+#include "scene/limits.hpp"
+#include "scene/number.hpp"
 
 namespace clrt {
 namespace {
@@ -31,11 +33,11 @@ void spot(LightSpec& light, const CommandArgs& a) {
   light.angle_degrees = a.number(angle);
   if (light.angle_degrees <= 0 || light.angle_degrees > 180)
     throw a.error_at(angle,
-                     "the spot angle must be > 0 and <= 180 degrees, found " + a.word(angle).text);
+                     "the spot angle must be > 0 and <= 180 degrees, found " + excerpt(a.word(angle).text));
   if (a.count() > exponent) {
     light.exponent = a.number(exponent);
     if (light.exponent < 0)
-      throw a.error_at(exponent, "the spot exponent must be >= 0, found " + a.word(exponent).text);
+      throw a.error_at(exponent, "the spot exponent must be >= 0, found " + excerpt(a.word(exponent).text));
   }
 }
 
@@ -46,8 +48,10 @@ void area(LightSpec& light, const CommandArgs& a) {
   light.edge_u = a.nonzero_vec3(kFirst + 3, "the area light's edge u");
   light.edge_v = a.nonzero_vec3(kFirst + 6, "the area light's edge v");
   const std::size_t samples = kFirst + 9;
-  light.samples =
-      a.count() > samples ? a.whole_number(samples, 1, "the number of light samples") : 16;
+  light.samples = a.count() > samples
+                      ? a.whole_number(samples, 1, static_cast<int>(limits::kMaxLightSamples),
+                                       "the number of light samples")
+                      : 16;
 }
 
 struct KindEntry {
@@ -82,7 +86,7 @@ const KindEntry& find_kind(const CommandArgs& a) {
   }
   const auto entry = light_kinds().find(lower_case(a.word(kKind).text));
   if (entry == light_kinds().end())
-    throw a.error_at(kKind, "unknown light kind '" + a.word(kKind).text +
+    throw a.error_at(kKind, "unknown light kind '" + excerpt(a.word(kKind).text) +
                                 "' (expected ambient, point, directional, spot or area)");
   return entry->second;
 }
@@ -96,6 +100,12 @@ void light(LoaderState& s, const CommandArgs& a) {
   const KindEntry& kind = find_kind(a);
   spec.kind = kind.kind;
   kind.parse(spec, a);
+  s.shadow_samples += shadow_samples(spec);
+  if (s.shadow_samples > limits::kMaxShadowSamples)
+    throw SceneError(a.command_location(),
+                     "the lights so far take " + std::to_string(s.shadow_samples) +
+                         " shadow-ray samples per shading point, more than the limit of " +
+                         std::to_string(limits::kMaxShadowSamples));
   s.scene.lights.push_back(spec);
 }
 

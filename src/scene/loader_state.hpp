@@ -1,6 +1,7 @@
 // What a loader keeps while it reads a scene file top to bottom.
 #pragma once
 
+#include <cstdint>
 #include <map>
 #include <optional>
 #include <string>
@@ -17,6 +18,7 @@ struct LoaderState {
   Mat4 transform;                           // the current transform M
   int material = 0;                         // the current material: index into scene.materials
   std::map<std::string, int> mesh_by_path;  // resolved path -> index into scene.meshes
+  std::int64_t shadow_samples = 0;          // shadow_samples() of the lights so far
   // The last command that set each camera vector, for errors found only after the whole file.
   std::optional<SourceLocation> eye_set_at, lookat_set_at, up_set_at;
 };

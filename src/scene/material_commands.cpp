@@ -1,5 +1,6 @@
 // material / surface: appends a material and makes it the current one.
 #include "scene/command_table.hpp"
+#include "scene/limits.hpp"
 
 namespace clrt {
 namespace {
@@ -17,7 +18,7 @@ void material(LoaderState& s, const CommandArgs& a) {
   m.ks = a.number(k + 2);
   m.shininess = a.number(k + 3);
   if (m.shininess < 0)
-    throw a.error_at(k + 3, "the Phong exponent must be >= 0, found " + a.word(k + 3).text);
+    throw a.error_at(k + 3, "the Phong exponent must be >= 0, found " + excerpt(a.word(k + 3).text));
   m.kr = a.number_in(k + 4, 0, 1, "kr");
   m.kt = a.number_in(k + 5, 0, 1, "kt");
   if (a.count() > 9) {

@@ -1,5 +1,6 @@
 // Reads Eric Haines' Neutral File Format (the SPD benchmark scenes) into the same Scene as .ray.
 #include "scene/camera_check.hpp"
+#include "scene/coordinate_check.hpp"
 #include "scene/nff_entities.hpp"
 #include "scene/nff_state.hpp"
 #include "scene/scene_loaders.hpp"
@@ -51,6 +52,7 @@ Scene load_nff_scene(const std::string& path) {
   finish_view(state, end_of(entities, path));
   finish_lights(state);
   check_camera(state.loader);
+  check_coordinates(state.loader);
   return std::move(state.loader.scene);
 }
 

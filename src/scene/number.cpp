@@ -3,7 +3,10 @@
 #include <cctype>
 #include <charconv>
 #include <cstddef>
+#include <cmath>
 #include <system_error>
+
+#include "scene/limits.hpp"
 
 namespace clrt {
 namespace {
@@ -60,6 +63,7 @@ ParsedNumber parse_number(std::string_view word) {
   ParsedNumber parsed;
   const auto result = std::from_chars(digits.data(), digits.data() + digits.size(), parsed.value);
   if (result.ec == std::errc::result_out_of_range) return {0, NumberProblem::OutOfRange};
+  if (std::fabs(parsed.value) > limits::kMaxNumber) return {0, NumberProblem::TooLarge};
   return parsed;
 }
 

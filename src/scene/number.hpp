@@ -10,6 +10,7 @@ enum class NumberProblem {
   NotANumber,  // not entirely a decimal float such as `.5`, `-2`, `1e-3`
   NotFinite,   // spelled NaN or Inf
   OutOfRange,  // a decimal float too large (or too small) for a double, like 1e999
+  TooLarge,    // a double beyond +-limits::kMaxNumber, like 1e13
 };
 
 struct ParsedNumber {
@@ -18,7 +19,8 @@ struct ParsedNumber {
 };
 
 // Locale-independent: `.` is always the decimal point. Hexadecimal floats, leading or trailing
-// spaces, and anything after the number are rejected.
+// spaces, and anything after the number are rejected. Every scene format's loader parses its
+// numbers here, so all of them share the limit on their size.
 ParsedNumber parse_number(std::string_view word);
 
 }  // namespace clrt

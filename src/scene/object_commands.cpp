@@ -2,6 +2,9 @@
 #include <filesystem>
 
 #include "scene/command_table.hpp"
+#include "scene/coordinate_check.hpp"
+#include "scene/input_text.hpp"
+#include "scene/limits.hpp"
 #include "scene/mesh_loader.hpp"
 
 namespace clrt {
@@ -18,7 +21,7 @@ void sphere(LoaderState& s, const CommandArgs& a) {
   if (a.count() == 4) {
     const Vec3 centre = a.vec3(0);
     const double radius = a.number(3);
-    if (radius <= 0) throw a.error_at(3, "the sphere radius must be > 0, found " + a.word(3).text);
+    if (radius <= 0) throw a.error_at(3, "the sphere radius must be > 0, found " + excerpt(a.word(3).text));
     to_world = to_world * Mat4::translate(centre) * Mat4::scale({radius, radius, radius});
   }
   add_instance(s, a.command_location(), ShapeKind::Sphere, to_world);
@@ -34,7 +37,7 @@ void cone(LoaderState& s, const CommandArgs& a) {
   if (a.count() == 2) {
     for (std::size_t i = 0; i < 2; ++i) {
       radii[i] = a.number(i);
-      if (radii[i] < 0) throw a.error_at(i, "a cone radius must be >= 0, found " + a.word(i).text);
+      if (radii[i] < 0) throw a.error_at(i, "a cone radius must be >= 0, found " + excerpt(a.word(i).text));
     }
     if (radii[0] == 0 && radii[1] == 0) throw a.error_at(0, "the cone radii must not both be 0");
   }
@@ -49,6 +52,7 @@ void triangle(LoaderState& s, const CommandArgs& a) {
   t.v0 = s.transform.transform_point(a.vec3(0));
   t.v1 = s.transform.transform_point(a.vec3(3));
   t.v2 = s.transform.transform_point(a.vec3(6));
+  for (const Vec3& v : {t.v0, t.v1, t.v2}) check_world_point(v, a.command_location());
   t.material = s.material;
   s.scene.triangles.push_back(t);
 }
@@ -59,6 +63,12 @@ int mesh_index(LoaderState& s, const CommandArgs& a) {
       (std::filesystem::path(s.scene_folder) / a.word(0).text).lexically_normal().generic_string();
   const auto known = s.mesh_by_path.find(path);
   if (known != s.mesh_by_path.end()) return known->second;
+  try {
+    // Before the OBJ reader: /dev/zero or a huge file would be read until memory runs out.
+    check_input_file(path, limits::kMaxMeshFileBytes);
+  } catch (const InputFileError& e) {
+    throw SceneError(a.command_location(), "bad mesh file " + path + ": cannot be read (" + e.what() + ")");
+  }
   try {
     s.scene.meshes.push_back(load_obj_mesh(path));
   } catch (const MeshError& e) {

@@ -2,7 +2,9 @@
 
 #include "scene/camera_check.hpp"
 #include "scene/command_table.hpp"
+#include "scene/coordinate_check.hpp"
 #include "scene/lexer.hpp"
+#include "scene/limits.hpp"
 #include "scene/scene_loaders.hpp"
 
 namespace clrt {
@@ -12,7 +14,8 @@ void apply(LoaderState& state, const Line& line) {
   const CommandArgs args(state.scene.path, line);
   const auto command = command_table().find(args.name());
   if (command == command_table().end() || line.words.front().quoted)
-    throw SceneError(args.command_location(), "unknown command '" + line.words.front().text + "'");
+    throw SceneError(args.command_location(),
+                     "unknown command '" + excerpt(line.words.front().text) + "'");
   command->second(state, args);
 }
 
@@ -25,6 +28,7 @@ Scene load_ray_scene(const std::string& path) {
   state.scene.materials.push_back(MaterialSpec{});
   for (const Line& line : split_into_lines(read_scene_file(path), path)) apply(state, line);
   check_camera(state);
+  check_coordinates(state);
   return std::move(state.scene);
 }
 

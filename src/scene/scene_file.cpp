@@ -1,25 +1,15 @@
-#include <cerrno>
-#include <cstring>
-#include <filesystem>
-#include <fstream>
-#include <sstream>
-
+#include "scene/input_text.hpp"
+#include "scene/limits.hpp"
 #include "scene/scene_loaders.hpp"
 
 namespace clrt {
 
 std::string read_scene_file(const std::string& path) {
-  const auto cannot_read = [&](const std::string& why) {
-    return SceneError({path, 1, 1}, "cannot read the scene file (" + why + ")");
-  };
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) throw cannot_read("it is a folder");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw cannot_read(std::strerror(errno));
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (in.bad()) throw cannot_read("read error");
-  return text.str();
+  try {
+    return read_input_text(path, limits::kMaxSceneFileBytes);
+  } catch (const InputFileError& e) {
+    throw SceneError({path, 1, 1}, std::string("cannot read the scene file (") + e.what() + ")");
+  }
 }
 
 }  // namespace clrt

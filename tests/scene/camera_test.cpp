@@ -58,21 +58,21 @@ TEST_CASE("fov must be strictly between 0 and 180", "[scene][camera][errors]") {
   CHECK(load_text("fov 0.001\n").camera.fov_degrees == 0.001);
 }
 
-TEST_CASE("resolution must be whole numbers >= 1", "[scene][camera][errors]") {
-  require_error("resolution 0 300\n", 1, 12, "width must be a whole number >= 1");
-  require_error("resolution 500 2.5\n", 1, 16, "height must be a whole number >= 1");
-  require_error("resolution -5 300\n", 1, 12, "whole number >= 1");
+TEST_CASE("resolution must be whole numbers from 1 to 65536", "[scene][camera][errors]") {
+  require_error("resolution 0 300\n", 1, 12, "width must be a whole number from 1 to 65536");
+  require_error("resolution 500 2.5\n", 1, 16, "height must be a whole number from 1 to 65536");
+  require_error("resolution -5 300\n", 1, 12, "whole number from 1");
   require_error("resolution 1e10 300\n", 1, 12, "whole number");
 }
 
-TEST_CASE("samples must be a whole number >= 1", "[scene][camera][errors]") {
-  require_error("samples 0\n", 1, 9, "whole number >= 1");
-  require_error("samples 1.5\n", 1, 9, "whole number >= 1");
+TEST_CASE("samples must be a whole number from 1 to 65536", "[scene][camera][errors]") {
+  require_error("samples 0\n", 1, 9, "whole number from 1 to 65536");
+  require_error("samples 1.5\n", 1, 9, "whole number from 1");
 }
 
-TEST_CASE("maxdepth must be a whole number >= 0", "[scene][camera][errors]") {
-  require_error("maxdepth -1\n", 1, 10, "whole number >= 0");
-  require_error("maxdepth 0.5\n", 1, 10, "whole number >= 0");
+TEST_CASE("maxdepth must be a whole number from 0 to 65536", "[scene][camera][errors]") {
+  require_error("maxdepth -1\n", 1, 10, "whole number from 0 to 65536");
+  require_error("maxdepth 0.5\n", 1, 10, "whole number from 0");
 }
 
 TEST_CASE("eye equal to lookat is an error at the later of the two commands",

@@ -84,7 +84,7 @@ TEST_CASE("argument counts after the light kind", "[scene][lights][errors]") {
 TEST_CASE("light range rules", "[scene][lights][errors]") {
   require_error("light 1 1 1 directional 0 0 0\n", 1, 25,
                 "light direction must not be a zero-length vector");
-  require_error("light 1 1 1 directional 1e200 0 0\n", 1, 25, "light direction is too long");
+  require_error("light 1 1 1 directional 1e200 0 0\n", 1, 25, "'1e200' is too large");
   require_error("light 1 1 1 spot 0 4 0 0 0 0 30\n", 1, 24,
                 "spot axis must not be a zero-length vector");
   require_error("light 1 1 1 spot 0 4 0 0 -1 0 0\n", 1, 31, "spot angle must be > 0 and <= 180");
@@ -94,6 +94,6 @@ TEST_CASE("light range rules", "[scene][lights][errors]") {
                 "edge u must not be a zero-length vector");
   require_error("light 1 1 1 area 0 4 0 1 0 0 0 0 0\n", 1, 30,
                 "edge v must not be a zero-length vector");
-  require_error("light 1 1 1 area 0 4 0 1 0 0 0 0 1 0\n", 1, 36, "whole number >= 1");
-  require_error("light 1 1 1 area 0 4 0 1 0 0 0 0 1 2.5\n", 1, 36, "whole number >= 1");
+  require_error("light 1 1 1 area 0 4 0 1 0 0 0 0 1 0\n", 1, 36, "whole number from 1 to 65536");
+  require_error("light 1 1 1 area 0 4 0 1 0 0 0 0 1 2.5\n", 1, 36, "whole number from 1 to 65536");
 }

@@ -35,5 +35,13 @@ TEST_CASE("NaN and infinity spellings are not finite numbers", "[number]") {
 TEST_CASE("literals beyond the range of a double are rejected", "[number]") {
   CHECK(parse_number("1e999").problem == NumberProblem::OutOfRange);
   CHECK(parse_number("-1e400").problem == NumberProblem::OutOfRange);
-  CHECK(parse_number("1e308").problem == NumberProblem::None);
+}
+
+TEST_CASE("literals beyond the scene limit of 1e12 are too large", "[number][limits]") {
+  CHECK(parse_number("1e12").problem == NumberProblem::None);
+  CHECK(parse_number("-1e12").problem == NumberProblem::None);
+  CHECK(parse_number("1.000001e12").problem == NumberProblem::TooLarge);
+  CHECK(parse_number("-1e13").problem == NumberProblem::TooLarge);
+  CHECK(parse_number("1e308").problem == NumberProblem::TooLarge);
+  CHECK(parse_number("1e-300").problem == NumberProblem::None);
 }

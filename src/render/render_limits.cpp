@@ -1,0 +1,145 @@
+#include "render/render_limits.hpp"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <fstream>
+#include <sstream>
+
+#include "render/wave_sizes.hpp"
+#include "render/wavefront.hpp"
+#include "scene/limits.hpp"
+
+namespace clrt {
+namespace {
+
+// Host bytes per pixel: the linear float image (12), its 8-bit copy (4) and the encoded file
+// (up to 12 for PFM).
+constexpr std::uint64_t kHostBytesPerPixel = 28;
+constexpr std::uint64_t kGeometryBytesPerPrimitive = 256;
+
+std::string mib(std::uint64_t bytes) {
+  std::ostringstream out;
+  out.precision(1);
+  out << std::fixed << static_cast<double>(bytes) / (1024.0 * 1024.0) << " MiB";
+  return out.str();
+}
+
+[[noreturn]] void refuse(int exit_code, const std::string& message) {
+  throw RenderLimitError(exit_code, message);
+}
+
+void check_request(const Scene& scene, const RenderOptions& o) {
+  const std::int64_t width = o.width, height = o.height;
+  if (width < 1 || height < 1 || width > limits::kMaxImageSide || height > limits::kMaxImageSide)
+    refuse(2, "the image size " + std::to_string(width) + "x" + std::to_string(height) +
+                  " is beyond the limit: each side must be from 1 to " +
+                  std::to_string(limits::kMaxImageSide));
+  if (width * height > limits::kMaxPixels)
+    refuse(2, "the image size " + std::to_string(width) + "x" + std::to_string(height) + " is " +
+                  std::to_string(width * height) + " pixels, more than the limit of " +
+                  std::to_string(limits::kMaxPixels));
+  if (o.samples < 1 || o.samples > limits::kMaxSamples)
+    refuse(2, std::to_string(o.samples) + " samples per pixel is beyond the limit: from 1 to " +
+                  std::to_string(limits::kMaxSamples));
+  if (o.max_depth < 0 || o.max_depth > limits::kMaxDepth)
+    refuse(2, "a maximum depth of " + std::to_string(o.max_depth) +
+                  " is beyond the limit: from 0 to " + std::to_string(limits::kMaxDepth));
+  std::int64_t shadow = 0;
+  for (const LightSpec& light : scene.lights) {
+    if (shadow_samples(light) > limits::kMaxLightSamples)
+      refuse(2, "an area light takes " + std::to_string(light.samples) +
+                    " samples, more than the limit of " + std::to_string(limits::kMaxLightSamples));
+    shadow += shadow_samples(light);
+  }
+  if (shadow > limits::kMaxShadowSamples)
+    refuse(2, "the lights take " + std::to_string(shadow) +
+                  " shadow-ray samples per shading point, more than the limit of " +
+                  std::to_string(limits::kMaxShadowSamples));
+}
+
+std::uint64_t shadow_samples_per_point(const Scene& scene) {
+  std::uint64_t sum = 0;
+  for (const LightSpec& light : scene.lights) sum += static_cast<std::uint64_t>(shadow_samples(light));
+  return sum;
+}
+
+std::uint64_t pixel_count(const RenderOptions& o) {
+  return static_cast<std::uint64_t>(o.width) * static_cast<std::uint64_t>(o.height);
+}
+
+// The device bytes of one device's render; refuses a buffer the device cannot allocate.
+std::uint64_t check_device(const Scene& scene, const RenderOptions& o, const DeviceBudget& device,
+                           std::uint64_t geometry_bytes) {
+  const WaveSizes sizes = wave_sizes(device.wavefront, static_cast<std::uint64_t>(o.samples),
+                                     shadow_samples_per_point(scene));
+  std::uint64_t total = geometry_bytes;
+  for (const WaveSizes::Buffer& buffer : sizes.buffers()) {
+    if (buffer.bytes > device.max_allocation)
+      refuse(1, "the " + buffer.what + " buffer needs " + mib(buffer.bytes) + " on " + device.name +
+                    ", more than its largest allocation (" + mib(device.max_allocation) +
+                    "): lower --wavefront (now " + std::to_string(device.wavefront) + ")" +
+                    (sizes.shade_chunk == 1 ? " or the lights' samples" : ""));
+    total += buffer.bytes;
+  }
+  if (total > device.global_memory)
+    refuse(1, "the render needs about " + mib(total) + " of memory on " + device.name +
+                  " (scene " + mib(geometry_bytes) + ", queues " + mib(total - geometry_bytes) +
+                  "), more than its " + mib(device.global_memory) + ": lower --wavefront");
+  return total;
+}
+
+std::uint64_t available_host_memory() {
+  std::ifstream meminfo("/proc/meminfo");
+  std::string key;
+  std::uint64_t kib = 0;
+  std::string unit;
+  while (meminfo >> key >> kib >> unit)
+    if (key == "MemAvailable:") return kib * 1024;
+  const long pages = ::sysconf(_SC_AVPHYS_PAGES), page = ::sysconf(_SC_PAGESIZE);
+  return pages > 0 && page > 0 ? static_cast<std::uint64_t>(pages) * static_cast<std::uint64_t>(page)
+                               : UINT64_MAX;
+}
+
+}  // namespace
+
+std::uint64_t estimated_geometry_bytes(const Scene& scene) {
+  std::uint64_t primitives = scene.instances.size() + scene.triangles.size() + 1;
+  for (const MeshData& mesh : scene.meshes) primitives += mesh.corners.size() / 3;
+  return primitives * kGeometryBytesPerPrimitive;
+}
+
+MachineBudget measure_budget(const std::vector<DeviceEntry>& devices, const RenderOptions& options) {
+  MachineBudget budget;
+  budget.host_available = available_host_memory();
+  for (const DeviceEntry& entry : devices) {
+    DeviceBudget d;
+    d.name = entry.device.name();
+    d.wavefront = options.wavefront ? options.wavefront : default_wavefront(entry.device);
+    d.max_allocation = entry.device.get_info<cl_ulong>(CL_DEVICE_MAX_MEM_ALLOC_SIZE);
+    d.global_memory = entry.device.get_info<cl_ulong>(CL_DEVICE_GLOBAL_MEM_SIZE);
+    d.uses_host_memory = entry.device.get_info<cl_bool>(CL_DEVICE_HOST_UNIFIED_MEMORY) == CL_TRUE;
+    budget.devices.push_back(d);
+  }
+  return budget;
+}
+
+void check_render_limits(const Scene& scene, const RenderOptions& options,
+                         const MachineBudget& budget) {
+  check_request(scene, options);
+  const std::uint64_t geometry = estimated_geometry_bytes(scene);
+  const std::uint64_t image = pixel_count(options) * kHostBytesPerPixel;
+  // The host holds the image and builds the geometry tables (which it keeps while they upload),
+  // and gives its memory to every device that has none of its own.
+  std::uint64_t host = image + geometry;
+  for (const DeviceBudget& device : budget.devices) {
+    const std::uint64_t on_device = check_device(scene, options, device, geometry);
+    if (device.uses_host_memory) host += on_device;
+  }
+  if (host > budget.host_available)
+    refuse(1, "the render needs about " + mib(host) + " of host memory (image " + mib(image) +
+                  ", scene " + mib(geometry) + "), more than the " + mib(budget.host_available) +
+                  " available");
+}
+
+}  // namespace clrt

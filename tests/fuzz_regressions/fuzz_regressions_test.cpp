@@ -1,0 +1,55 @@
+// Replays every input a fuzz target found (tests/fuzz/regressions/TARGET/, see its README)
+// through the path that target drives: each must now be rejected with its reader's own error
+// (scenes: every one found so far is a scene clrt must refuse) or read into a consistent
+// result, never crash or throw anything else.
+#include <catch2/catch.hpp>
+
+#include <filesystem>
+#include <set>
+#include <string>
+
+#include "fuzz_paths.hpp"
+
+namespace fs = std::filesystem;
+using clrt::fuzz::Outcome;
+
+namespace {
+
+const fs::path kRegressions = fs::path(CLRT_SOURCE_DIR) / "tests" / "fuzz" / "regressions";
+
+std::set<fs::path> inputs_of(const std::string& target) {
+  std::set<fs::path> files;
+  const fs::path dir = kRegressions / target;
+  if (fs::is_directory(dir))
+    for (const auto& entry : fs::directory_iterator(dir)) files.insert(entry.path());
+  return files;
+}
+
+}  // namespace
+
+TEST_CASE("every fuzz target's folder of found inputs is one this test replays", "[fuzz]") {
+  const std::set<std::string> replayed = {"fuzz_ray_scene", "fuzz_obj_mesh", "fuzz_image_fsf",
+                                          "fuzz_image_ppm", "fuzz_image_png", "open"};
+  for (const auto& entry : fs::directory_iterator(kRegressions))
+    if (entry.is_directory()) CHECK(replayed.count(entry.path().filename().string()) == 1);
+}
+
+TEST_CASE("scenes the fuzzer found are rejected with a scene error", "[fuzz]") {
+  const std::set<fs::path> files = inputs_of("fuzz_ray_scene");
+  REQUIRE_FALSE(files.empty());
+  for (const fs::path& file : files) {
+    INFO(file);
+    CHECK(clrt::fuzz::ray_scene(file.string()) == Outcome::Rejected);
+  }
+}
+
+TEST_CASE("meshes and images the fuzzer found are rejected or read consistently", "[fuzz]") {
+  for (const char* target : {"fuzz_obj_mesh", "fuzz_image_fsf", "fuzz_image_ppm", "fuzz_image_png"})
+    for (const fs::path& file : inputs_of(target)) {
+      INFO(file);
+      if (std::string(target) == "fuzz_obj_mesh")
+        CHECK_NOTHROW(clrt::fuzz::obj_mesh(file.string()));
+      else
+        CHECK_NOTHROW(clrt::fuzz::image(file.string()));
+    }
+}

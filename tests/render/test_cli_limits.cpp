@@ -1,0 +1,102 @@
+// The limits of issue 11 through the executable: each request beyond them exits before any work
+// with the right code and a message that names the real cause, and writes nothing.
+#include <catch2/catch.hpp>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <set>
+#include <string>
+
+#include "render_support.hpp"
+#include "scratch_dir.hpp"
+#include "spawn_clrt.hpp"
+
+using namespace clrt::test;
+namespace fs = std::filesystem;
+
+namespace {
+
+// Runs clrt on `scene` (text written to DIR/s.ray) with `options`; it must exit `code` with
+// `message` in its output and leave DIR holding only the scene.
+void refuses(const std::string& scene, const std::string& options, int code,
+             const std::string& message) {
+  ScratchDir dir;
+  const std::string path = dir.write("s.ray", scene);
+  const CommandResult r = run_clrt(quoted(path) + " -q -o " + quoted(dir.file("out.png")) + " " + options);
+  INFO(r.output);
+  CHECK(r.exit_code == code);
+  CHECK_THAT(r.output, Catch::Contains(message));
+  CHECK(dir.entries() == std::set<std::string>{"s.ray"});
+}
+
+}  // namespace
+
+TEST_CASE("the six-line scene whose light samples wrapped in 32 bits exits 2", "[cli][limits]") {
+  // It crashed clrt with SIGSEGV: the shade kernel wrote shadow slots past their buffer.
+  refuses("resolution 40 40\nsphere\n"
+          "light 1 1 1 area -1 3 -1 2 0 0 0 0 2 2147483647\n"
+          "light 1 1 1 area -1 3 -1 2 0 0 0 0 2 2147483647\n"
+          "light 1 1 1 point 0 3 3\nlight 1 1 1 point 0 3 3\n",
+          "", 2, "s.ray:3:38: error: the number of light samples must be a whole number from 1 to 65536");
+}
+
+TEST_CASE("image sizes beyond the limits exit 2 before any work", "[cli][limits]") {
+  const std::string scene = "sphere\n";
+  // 100000x100000 allocated 16.9 GB and ran for minutes.
+  refuses(scene, "--resolution 100000x100000", 2,
+          "clrt: error: the image size 100000x100000 is beyond the limit: each side must be from 1 to 65536");
+  refuses(scene, "--resolution 60000x60000", 2,
+          "the image size 60000x60000 is 3600000000 pixels, more than the limit of 268435456");
+  // In the file, 65536 x 65537 wrapped in 32 bits and rendered a subset.
+  refuses("resolution 65536 65537\nsphere\n", "", 2, "s.ray:1:18: error: the image height must be a whole number");
+}
+
+TEST_CASE("a scene's maxdepth has the command line's cap", "[cli][limits]") {
+  // Two facing mirrors at this depth ran for about a day.
+  refuses("maxdepth 2000000000\nsphere\n", "", 2, "s.ray:1:10: error: maxdepth must be a whole number from 0 to 65536");
+  refuses("sphere\n", "--max-depth 65537", 2, "--max-depth");
+}
+
+TEST_CASE("/dev/zero as the scene exits 2 without reading it", "[cli][limits]") {
+  ScratchDir dir;
+  const CommandResult r = run_clrt("/dev/zero -q -o " + quoted(dir.file("out.png")));
+  INFO(r.output);
+  CHECK(r.exit_code == 2);
+  CHECK_THAT(r.output, Catch::Contains("/dev/zero:1:1: error: cannot read the scene file (it is not a regular file)"));
+  CHECK(dir.entries().empty());
+}
+
+TEST_CASE("an output that is an input is refused before any work", "[cli][limits]") {
+  ScratchDir dir;
+  const std::string scene = "eye 0 0 5\nsphere\nmesh m.ppm\n";
+  dir.write("m.ppm", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+  SECTION("the default output of a scene named s.png is the scene") {
+    dir.write("s.png", scene);
+    ScratchDir logs;
+    ClrtProcess clrt({"-q", "s.png"}, dir.path().string(), {}, logs.file("log"));
+    const int status = clrt.wait();
+    REQUIRE(WIFEXITED(status));
+    CHECK(WEXITSTATUS(status) == 2);
+    CHECK_THAT(file_bytes(logs.file("log")),
+               Catch::Contains("the output s.png is the scene s.png itself; name another output with -o"));
+  }
+  SECTION("-o names the scene through a hard link") {
+    dir.write("s.png", scene);
+    fs::create_hard_link(dir.file("s.png"), dir.file("link.png"));
+    const CommandResult r = run_clrt(quoted(dir.file("s.png")) + " -q -o " + quoted(dir.file("link.png")));
+    INFO(r.output);
+    CHECK(r.exit_code == 2);
+    CHECK_THAT(r.output, Catch::Contains("is the scene"));
+  }
+  SECTION("-o names a mesh") {
+    dir.write("s.png", scene);
+    const CommandResult r = run_clrt(quoted(dir.file("s.png")) + " -q -o " + quoted(dir.file("m.ppm")));
+    INFO(r.output);
+    CHECK(r.exit_code == 2);
+    CHECK_THAT(r.output, Catch::Contains("is the mesh"));
+  }
+  CHECK(file_bytes(dir.file("s.png")) == scene);
+  CHECK(file_bytes(dir.file("m.ppm")).rfind("v 0 0 0", 0) == 0);
+}
