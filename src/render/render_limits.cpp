@@ -1,5 +1,7 @@
 #include "render/render_limits.hpp"
 
+#include "device/device_tuning.hpp"
+
 #include <unistd.h>
 
 #include <algorithm>
@@ -73,15 +75,17 @@ std::uint64_t check_device(const Scene& scene, const RenderOptions& o, const Dev
                            std::uint64_t geometry_bytes) {
   const WaveSizes sizes = wave_sizes(device.wavefront, static_cast<std::uint64_t>(o.samples),
                                      shadow_samples_per_point(scene));
-  std::uint64_t total = geometry_bytes;
+  std::uint64_t queues = 0;
   for (const WaveSizes::Buffer& buffer : sizes.buffers()) {
     if (buffer.bytes > device.max_allocation)
       refuse(1, "the " + buffer.what + " buffer needs " + mib(buffer.bytes) + " on " + device.name +
                     ", more than its largest allocation (" + mib(device.max_allocation) +
                     "): lower --wavefront (now " + std::to_string(device.wavefront) + ")" +
                     (sizes.shade_chunk == 1 ? " or the lights' samples" : ""));
-    total += buffer.bytes;
+    queues += buffer.bytes;
   }
+  // Every lane has queues of its own.
+  const std::uint64_t total = geometry_bytes + queues * device.lanes;
   if (total > device.global_memory)
     refuse(1, "the render needs about " + mib(total) + " of memory on " + device.name +
                   " (scene " + mib(geometry_bytes) + ", queues " + mib(total - geometry_bytes) +
@@ -115,7 +119,9 @@ MachineBudget measure_budget(const std::vector<DeviceEntry>& devices, const Rend
   for (const DeviceEntry& entry : devices) {
     DeviceBudget d;
     d.name = entry.device.name();
-    d.wavefront = options.wavefront ? options.wavefront : default_wavefront(entry.device);
+    DeviceTuning tuning = tuning_for(classify(entry.device));
+    d.wavefront = options.wavefront ? options.wavefront : tuning.wavefront;
+    d.lanes = options.lanes ? options.lanes : tuning.lanes;
     d.max_allocation = entry.device.get_info<cl_ulong>(CL_DEVICE_MAX_MEM_ALLOC_SIZE);
     d.global_memory = entry.device.get_info<cl_ulong>(CL_DEVICE_GLOBAL_MEM_SIZE);
     d.uses_host_memory = entry.device.get_info<cl_bool>(CL_DEVICE_HOST_UNIFIED_MEMORY) == CL_TRUE;

@@ -28,6 +28,7 @@ class RenderLimitError : public std::runtime_error {
 struct DeviceBudget {
   std::string name;
   std::uint64_t wavefront = 0;       // the rays per queue it will render with
+  std::uint64_t lanes = 1;           // waves in flight, each with its own queues
   std::uint64_t max_allocation = 0;  // CL_DEVICE_MAX_MEM_ALLOC_SIZE
   std::uint64_t global_memory = 0;   // CL_DEVICE_GLOBAL_MEM_SIZE
   bool uses_host_memory = false;     // CL_DEVICE_HOST_UNIFIED_MEMORY: its buffers are host memory

@@ -12,18 +12,17 @@ Global<T> WaveQueues::make(DeviceContext& device, std::size_t count, const char*
   return allocate<T>(device, count, what);
 }
 
-WaveQueues::WaveQueues(DeviceContext& device, std::uint32_t capacity, std::uint32_t shadow_samples)
-    : capacity_(capacity),
+WaveQueues::WaveQueues(DeviceContext& device, const WaveSizes& sizes, std::uint32_t shadow_samples)
+    : capacity_(static_cast<std::uint32_t>(sizes.capacity)),
       shadow_samples_(shadow_samples),
-      shade_chunk_(shadow_samples == 0 ? capacity
-                                       : std::max<std::uint32_t>(1, capacity / shadow_samples)) {
+      shade_chunk_(static_cast<std::uint32_t>(sizes.shade_chunk)) {
   const std::size_t shadows = std::max<std::size_t>(1, shadow_slots_per_chunk());
-  rays = make<dev::Ray>(device, capacity, "ray queue");
-  next_rays = make<dev::Ray>(device, capacity, "next ray queue");
-  hits = make<dev::Hit>(device, capacity, "hit");
-  colour = make<dev::f4>(device, capacity, "ray colour");
-  spawn_slots = make<dev::Ray>(device, 2 * std::size_t{capacity}, "spawned ray slot");
-  spawn_flags = make<cl_uint>(device, 2 * std::size_t{capacity}, "spawned ray flag");
+  rays = make<dev::Ray>(device, capacity_, "ray queue");
+  next_rays = make<dev::Ray>(device, capacity_, "next ray queue");
+  hits = make<dev::Hit>(device, capacity_, "hit");
+  colour = make<dev::f4>(device, capacity_, "ray colour");
+  spawn_slots = make<dev::Ray>(device, 2 * std::size_t{capacity_}, "spawned ray slot");
+  spawn_flags = make<cl_uint>(device, 2 * std::size_t{capacity_}, "spawned ray flag");
   shadow_slots = make<dev::ShadowRay>(device, shadows, "shadow ray slot");
   shadow_flags = make<cl_uint>(device, shadows, "shadow ray flag");
   shadow_queue = make<dev::ShadowRay>(device, shadows, "shadow ray queue");

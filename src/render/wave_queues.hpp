@@ -6,12 +6,14 @@
 
 #include "device/device_context.hpp"
 #include "device/kernel_args.hpp"
+#include "render/wave_sizes.hpp"
 
 namespace clrt {
 
 class WaveQueues {
  public:
-  WaveQueues(DeviceContext& device, std::uint32_t capacity, std::uint32_t shadow_samples);
+  // Sized as the checks before a render assumed (render/wave_sizes.hpp).
+  WaveQueues(DeviceContext& device, const WaveSizes& sizes, std::uint32_t shadow_samples);
 
   std::uint32_t capacity() const { return capacity_; }
   // Rays shaded per shade launch: their shadow slots fill the shadow buffers.

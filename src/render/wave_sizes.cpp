@@ -29,7 +29,7 @@ std::vector<WaveSizes::Buffer> WaveSizes::buffers() const {
           {"shadow ray queue", sizeof(dev::ShadowRay) * shadow_slots},
           {"shadow visibility", sizeof(dev::f4) * shadow_slots},
           {"sample colour", sizeof(dev::f4) * capacity},
-          {"pixel", sizeof(dev::f4) * capacity}};
+          {"pixel", sizeof(dev::f4) * wave_pixels}};
 }
 
 }  // namespace clrt

@@ -6,9 +6,8 @@
 namespace clrt {
 namespace {
 
-// A pixel's samples always share a wave, so a queue holds at least one pixel's worth.
-std::uint32_t queue_capacity(const IntegratorConfig& config, const DeviceFrame& frame) {
-  return std::max(config.capacity, frame.host.camera.samples);
+WaveSizes sizes_of(const IntegratorConfig& config, const DeviceFrame& frame) {
+  return wave_sizes(config.capacity, frame.host.camera.samples, frame.host.params.shadow_samples);
 }
 
 std::uint32_t pass_limit(const DeviceFrame& frame) {
@@ -22,8 +21,8 @@ WavefrontIntegrator::WavefrontIntegrator(DeviceContext& device, const compute::p
     : device_(device),
       frame_(frame),
       samples_per_pixel_(frame.host.camera.samples),
-      wave_pixels_(queue_capacity(config, frame) / frame.host.camera.samples),
-      queues_(device, queue_capacity(config, frame), frame.host.params.shadow_samples),
+      wave_pixels_(static_cast<std::uint32_t>(sizes_of(config, frame).wave_pixels)),
+      queues_(device, sizes_of(config, frame), frame.host.params.shadow_samples),
       resolver_(device, program, queues_.capacity(), wave_pixels_),
       profiler_(device, program, config.profile, config.local_size, pass_limit(frame),
                 queues_.capacity() / Profiler::kCountChunk + 1, config.timeline),

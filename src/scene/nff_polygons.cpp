@@ -7,12 +7,15 @@
 namespace clrt {
 namespace {
 
+// Ear clipping takes time quadratic in the vertex count: a larger polygon is refused.
+constexpr int kMaxPolygonVertices = 1 << 20;
+
 // The vertex count, checked against the numbers that follow it (`per_vertex` for each vertex).
 std::size_t vertex_count(const CommandArgs& a, std::size_t per_vertex, const std::string& layout) {
   if (a.count() == 0)
     throw a.error_past_end("wrong number of arguments: " + a.command_word().text +
                            " needs its vertex count");
-  const auto n = static_cast<std::size_t>(a.whole_number(0, 3, "the vertex count"));
+  const auto n = static_cast<std::size_t>(a.whole_number(0, 3, kMaxPolygonVertices, "the vertex count"));
   a.require_count(
       {n * per_vertex}, 1,
       a.command_word().text + " with " + a.word(0).text + " vertices (" + layout + " each)");

@@ -1,6 +1,7 @@
 // v and its parts: from, at, up, angle, hither, resolution, one per line in this order.
 #include <cmath>
 
+#include "scene/limits.hpp"
 #include "scene/nff_state.hpp"
 
 namespace clrt {
@@ -66,8 +67,9 @@ void hither(NffState&, const CommandArgs& a) {
 void resolution(NffState& s, const CommandArgs& a) {
   a.require_count({2});
   Scene& scene = s.loader.scene;
-  scene.width = a.whole_number(0, 1, "the image width");
-  scene.height = a.whole_number(1, 1, "the image height");
+  const int side = static_cast<int>(limits::kMaxImageSide);
+  scene.width = a.whole_number(0, 1, side, "the image width");
+  scene.height = a.whole_number(1, 1, side, "the image height");
   scene.camera.fov_degrees = fov_from_nff_angle(s.angle_degrees, scene.width);
 }
 
