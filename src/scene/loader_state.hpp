@@ -7,6 +7,7 @@
 #include <string>
 
 #include "math/mat4.hpp"
+#include "scene/file_source.hpp"
 #include "scene/scene.hpp"
 #include "scene/source_location.hpp"
 
@@ -14,6 +15,7 @@ namespace clrt {
 
 struct LoaderState {
   Scene scene;
+  const FileSource* files = nullptr;        // where the scene's files are read from
   std::string scene_folder;                 // mesh paths are relative to it
   Mat4 transform;                           // the current transform M
   int material = 0;                         // the current material: index into scene.materials

@@ -8,6 +8,8 @@
 #include <cerrno>
 #include <cstring>
 
+#include "scene/input_file_checks.hpp"
+
 namespace clrt {
 namespace {
 
@@ -22,20 +24,17 @@ struct Descriptor {
 }  // namespace
 
 MappedFile::MappedFile(const std::string& path, std::uint64_t max_bytes) {
-  const auto fail = [&](const std::string& why) { return FileReadError("cannot be read (" + why + ")"); };
-  const Descriptor file{::open(path.c_str(), O_RDONLY | O_CLOEXEC)};
-  if (file.fd < 0) throw fail(std::strerror(errno));
+  // O_NONBLOCK: opening a pipe must not wait for a writer before the checks refuse it.
+  const Descriptor file{::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK)};
+  if (file.fd < 0) throw InputFileError(std::strerror(errno));
   struct stat info {};
-  if (::fstat(file.fd, &info) != 0) throw fail(std::strerror(errno));
-  if (S_ISDIR(info.st_mode)) throw fail("it is a folder");
-  if (!S_ISREG(info.st_mode)) throw fail("it is not a regular file");
-  if (static_cast<std::uint64_t>(info.st_size) > max_bytes)
-    throw fail("it is larger than " + std::to_string(max_bytes >> 20) + " MiB");
+  if (::fstat(file.fd, &info) != 0) throw InputFileError(std::strerror(errno));
+  check_input_status(info, max_bytes);
   size_ = static_cast<std::size_t>(info.st_size);
   if (size_ == 0) return;  // mmap refuses a length of 0
   // MAP_POPULATE reads the whole file in one request instead of a page fault per page.
   void* data = ::mmap(nullptr, size_, PROT_READ, MAP_PRIVATE | MAP_POPULATE, file.fd, 0);
-  if (data == MAP_FAILED) throw fail(std::strerror(errno));
+  if (data == MAP_FAILED) throw InputFileError(std::strerror(errno));
   data_ = static_cast<const char*>(data);
 }
 

@@ -6,7 +6,8 @@
 #include <vector>
 
 #include "math/parallel_for.hpp"
-#include "scene/mapped_file.hpp"
+#include "scene/input_file_checks.hpp"
+#include "scene/limits.hpp"
 #include "scene/obj_chunk.hpp"
 #include "scene/obj_index_check.hpp"
 #include "scene/obj_polygons.hpp"
@@ -124,12 +125,12 @@ MeshError::MeshError(const SourceLocation& where, const std::string& message)
     : std::runtime_error(where.file + ":" + std::to_string(where.line) + ":" + std::to_string(where.column) +
                          ": " + message) {}
 
-MeshData load_obj_mesh(const std::string& path) {
-  std::optional<MappedFile> file;
+MeshData load_obj_mesh(const std::string& path, const FileSource& files) {
+  std::unique_ptr<FileBytes> file;
   try {
-    file.emplace(path, kMaxMeshFileBytes);
-  } catch (const FileReadError& e) {
-    throw MeshError(path, e.what());
+    file = files.open(path, limits::kMaxMeshFileBytes);
+  } catch (const InputFileError& e) {
+    throw MeshError(path, std::string("cannot be read (") + e.what() + ")");
   }
   const std::vector<std::string_view> slices = split_into_slices(file->text());
   std::vector<ObjChunk> chunks(slices.size());

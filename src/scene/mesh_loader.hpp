@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "scene/file_source.hpp"
 #include "scene/scene.hpp"
 #include "scene/source_location.hpp"
 
@@ -19,15 +20,12 @@ class MeshError : public std::runtime_error {
   MeshError(const SourceLocation& where, const std::string& message);  // "PATH:LINE:COLUMN: MESSAGE"
 };
 
-// Larger mesh files are refused: every line and column number then fits the int of a
-// SourceLocation.
-constexpr std::uint64_t kMaxMeshFileBytes = INT32_MAX;
-
 // Polygons are cut into fans. Vertex normals are kept only if every corner of every face has
 // one. Throws MeshError for a file that cannot be read, a malformed line (a word that is not a
 // finite single-precision number, a wrong number of them, a bad face corner), an index out of
 // range, or a mesh with no triangles. A large file is parsed in slices on every core; the result
 // and the error reported do not depend on how many.
-MeshData load_obj_mesh(const std::string& path);
+// The file comes from `files` (the disk unless the scene's files came from elsewhere).
+MeshData load_obj_mesh(const std::string& path, const FileSource& files = disk_files());
 
 }  // namespace clrt

@@ -39,15 +39,16 @@ SourceLocation end_of(const std::vector<Line>& entities, const std::string& path
 
 }  // namespace
 
-Scene load_nff_scene(const std::string& path) {
+Scene load_nff_scene(const std::string& path, const FileSource& files) {
   NffState state;
+  state.loader.files = &files;
   Scene& scene = state.loader.scene;
   scene.path = path;
   // SPD traces ray trees 5 deep counting the eye ray as the first; clrt counts it as depth 0.
   scene.max_depth = 4;
   scene.materials.push_back(MaterialSpec{});
   const std::vector<Line> entities =
-      group_nff_entities(split_into_lines(read_scene_file(path), path), path);
+      group_nff_entities(split_into_lines(read_scene_file(files, path), path), path);
   for (const Line& entity : entities) apply(state, entity);
   finish_view(state, end_of(entities, path));
   finish_lights(state);

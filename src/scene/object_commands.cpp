@@ -3,7 +3,6 @@
 
 #include "scene/command_table.hpp"
 #include "scene/coordinate_check.hpp"
-#include "scene/input_text.hpp"
 #include "scene/limits.hpp"
 #include "scene/mesh_loader.hpp"
 
@@ -64,13 +63,7 @@ int mesh_index(LoaderState& s, const CommandArgs& a) {
   const auto known = s.mesh_by_path.find(path);
   if (known != s.mesh_by_path.end()) return known->second;
   try {
-    // Before the OBJ reader: /dev/zero or a huge file would be read until memory runs out.
-    check_input_file(path, limits::kMaxMeshFileBytes);
-  } catch (const InputFileError& e) {
-    throw SceneError(a.command_location(), "bad mesh file " + path + ": cannot be read (" + e.what() + ")");
-  }
-  try {
-    s.scene.meshes.push_back(load_obj_mesh(path));
+    s.scene.meshes.push_back(load_obj_mesh(path, *s.files));
   } catch (const MeshError& e) {
     throw SceneError(a.command_location(), std::string("bad mesh file ") + e.what());
   }

@@ -21,12 +21,13 @@ void apply(LoaderState& state, const Line& line) {
 
 }  // namespace
 
-Scene load_ray_scene(const std::string& path) {
+Scene load_ray_scene(const std::string& path, const FileSource& files) {
   LoaderState state;
+  state.files = &files;
   state.scene.path = path;
   state.scene_folder = std::filesystem::path(path).parent_path().string();
   state.scene.materials.push_back(MaterialSpec{});
-  for (const Line& line : split_into_lines(read_scene_file(path), path)) apply(state, line);
+  for (const Line& line : split_into_lines(read_scene_file(files, path), path)) apply(state, line);
   check_camera(state);
   check_coordinates(state);
   return std::move(state.scene);

@@ -7,6 +7,7 @@
 
 #include "math/mat4.hpp"
 #include "math/vec3.hpp"
+#include "scene/file_source.hpp"
 #include "scene/source_location.hpp"
 
 namespace clrt {
@@ -85,6 +86,7 @@ struct Scene {
 
 // Reads a scene file: NFF when its name ends in `.nff` (any case), else `.ray` (and the meshes it
 // names). Throws SceneError on any problem in the file.
-Scene load_scene(const std::string& path);
+// The files come from `files`: the disk unless they were received (an MPI rank).
+Scene load_scene(const std::string& path, const FileSource& files = disk_files());
 
 }  // namespace clrt

@@ -1,12 +1,12 @@
-#include "scene/input_text.hpp"
+#include "scene/input_file_checks.hpp"
 #include "scene/limits.hpp"
 #include "scene/scene_loaders.hpp"
 
 namespace clrt {
 
-std::string read_scene_file(const std::string& path) {
+std::string read_scene_file(const FileSource& files, const std::string& path) {
   try {
-    return read_input_text(path, limits::kMaxSceneFileBytes);
+    return std::string(files.open(path, limits::kMaxSceneFileBytes)->text());
   } catch (const InputFileError& e) {
     throw SceneError({path, 1, 1}, std::string("cannot read the scene file (") + e.what() + ")");
   }

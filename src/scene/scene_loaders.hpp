@@ -3,14 +3,15 @@
 
 #include <string>
 
+#include "scene/file_source.hpp"
 #include "scene/scene.hpp"
 
 namespace clrt {
 
 // The whole file; a SceneError at 1:1 when it cannot be read (missing, a folder, a read error).
-std::string read_scene_file(const std::string& path);
+std::string read_scene_file(const FileSource& files, const std::string& path);
 
-Scene load_ray_scene(const std::string& path);
-Scene load_nff_scene(const std::string& path);
+Scene load_ray_scene(const std::string& path, const FileSource& files);
+Scene load_nff_scene(const std::string& path, const FileSource& files);
 
 }  // namespace clrt

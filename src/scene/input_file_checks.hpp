@@ -1,0 +1,22 @@
+// What the loaders accept as an input file: a regular file of a bounded size.
+#pragma once
+
+#include <sys/stat.h>
+
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+
+namespace clrt {
+
+// Why a file could not be read; what() is the reason alone (no path), for the caller to place.
+class InputFileError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// Throws InputFileError unless `info` describes a regular file (not a folder, a device such as
+// /dev/zero, or a pipe) of at most `max_bytes`.
+void check_input_status(const struct stat& info, std::uint64_t max_bytes);
+
+}  // namespace clrt
