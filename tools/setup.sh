@@ -18,6 +18,7 @@ packages=(
   libopenexr-dev                 # OpenEXR output and input (half or 32-bit float HDR, tiles' data windows)
   nlohmann-json3-dev             # JSON for --stats=json and the experiment records
   python3-matplotlib             # the plots of clrt-experiment (and its test)
+  libopenmpi-dev openmpi-bin     # clrt-mpi: one image across the ranks of an MPI job (and mpirun for its tests)
 )
 
 source tools/lib/install_missing.sh

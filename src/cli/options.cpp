@@ -2,6 +2,7 @@
 
 #include <filesystem>
 #include <regex>
+#include <sstream>
 #include <tuple>
 
 #include "cli/argument_words.hpp"
@@ -114,6 +115,10 @@ void add_device_options(CLI::App& app, CliOptions& o) {
 }  // namespace
 
 ParseResult parse_command_line(int argc, char** argv) {
+  return parse_arguments({argv + 1, argv + argc}, true);
+}
+
+ParseResult parse_arguments(std::vector<std::string> args, bool print) {
   ParseResult result;
   CliOptions& o = result.options;
   CLI::App app{"clrt: a wavefront OpenCL ray tracer for .ray and .nff scenes", "clrt"};
@@ -132,7 +137,7 @@ ParseResult parse_command_line(int argc, char** argv) {
   app.add_flag("-q,--quiet", o.quiet, "print nothing but errors (no device line, no progress)");
 
   result.exit_code =
-      parse_tool_arguments(app, regular_argument_words({argv + 1, argv + argc}));
+      parse_tool_arguments(app, regular_argument_words(std::move(args)), print);
   if (result.exit_code) return result;
   try {
     if (stats || app.count("--stats-format"))
@@ -141,7 +146,8 @@ ParseResult parse_command_line(int argc, char** argv) {
     if (o.outfile == kStdoutPath && !o.format)
       throw CLI::ValidationError("-o -", "standard output needs --format png|ppm|pfm|fsf|exr");
   } catch (const CLI::ParseError& e) {
-    result.exit_code = app.exit(e) == 0 ? 0 : 2;
+    std::ostringstream silent;
+    result.exit_code = (print ? app.exit(e) : app.exit(e, silent, silent)) == 0 ? 0 : 2;
   }
   return result;
 }

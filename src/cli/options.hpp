@@ -3,6 +3,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "cli/animation_options.hpp"
 #include "cli/region_options.hpp"
@@ -42,6 +43,9 @@ struct ParseResult {
 };
 
 ParseResult parse_command_line(int argc, char** argv);
+// The words after the program's name; `print` false: no message (the MPI ranks but the first,
+// which prints it).
+ParseResult parse_arguments(std::vector<std::string> args, bool print);
 
 // The scene's settings overridden by whatever the command line gave. Throws UsageError for a
 // region that does not fit the image.

@@ -48,6 +48,8 @@ void check_writable(const std::string& path) {
     throw UsageError("cannot write " + path + ": the folder " + folder + " is not writable");
 }
 
+}  // namespace
+
 ImageOutput resolve_image_output(const CliOptions& cli, const FramePlan& frames) {
   std::error_code error;
   if (std::filesystem::is_directory(output_path(cli), error))
@@ -66,6 +68,8 @@ ImageOutput resolve_image_output(const CliOptions& cli, const FramePlan& frames)
   check_writable(output.path);
   return output;
 }
+
+namespace {
 
 // Where frame `frame` goes: the output itself for a still or an FSF animation, else a numbered
 // file beside it.
@@ -92,22 +96,10 @@ void print_stats(const CliOptions& cli, const RenderStats& stats, const ImageOut
 int render_frames(const CliOptions& cli, Scene& scene, const FramePlan& frames,
                   const ImageOutput& output, RenderStats& stats, Progress& progress,
                   Clock::time_point start) {
-  RenderSetup setup;
-  setup.options = resolve_render_options(cli, scene);
-  setup.devices = select_devices(cli.device);
-  setup.profile = cli.stats != StatsFormat::None;
-  check_render_setup(setup);
-  check_render_limits(scene, setup.options, measure_budget(setup.devices, setup.options));
+  const RenderSetup setup = checked_render_setup(cli, scene, select_devices(cli.device));
   if (!cli.quiet)
     for (const DeviceEntry& d : setup.devices) progress.message("device " + describe_device(d));
-
-  progress.phase("building the BVH");
-  GeometryData geometry = build_geometry(scene);
-  release_mesh_data(scene);  // the BVH's tables hold all the device needs
-  // The loader's and the builder's scratch goes back to the system before the devices and the
-  // image take their memory, rather than staying in the heap's free lists.
-  malloc_trim(0);
-  Renderer renderer(scene, std::move(geometry), setup, &progress);
+  Renderer renderer(scene, built_geometry(scene, progress), setup, &progress);
   const PixelRect region = render_region(setup.options);
   const bool eight_bit = !holds_floats(output.format);
   std::unique_ptr<FsfAnimationWriter> animation;
@@ -155,6 +147,38 @@ int render_frames(const CliOptions& cli, Scene& scene, const FramePlan& frames,
 
 }  // namespace
 
+RenderSetup checked_render_setup(const CliOptions& cli, const Scene& scene,
+                                 std::vector<DeviceEntry> devices) {
+  RenderSetup setup;
+  setup.options = resolve_render_options(cli, scene);
+  setup.devices = std::move(devices);
+  setup.profile = cli.stats != StatsFormat::None;
+  check_render_setup(setup);
+  check_render_limits(scene, setup.options, measure_budget(setup.devices, setup.options));
+  return setup;
+}
+
+GeometryData built_geometry(Scene& scene, Progress& progress) {
+  progress.phase("building the BVH");
+  GeometryData geometry = build_geometry(scene);
+  release_mesh_data(scene);  // the BVH's tables hold all the device needs
+  // The loader's and the builder's scratch goes back to the system before the devices and the
+  // image take their memory, rather than staying in the heap's free lists.
+  malloc_trim(0);
+  return geometry;
+}
+
+void check_outputs_are_not_inputs(const ImageOutput& output, const FramePlan& frames,
+                                  const Scene& scene) {
+  try {
+    if (!output.is_stdout())
+      for (std::uint32_t frame = frames.first; frame <= frames.last; ++frame)
+        check_output_is_not_input(frame_output(output, frames, frame).path, scene);
+  } catch (const ImageError& e) {
+    throw UsageError(e.what());
+  }
+}
+
 int run_clrt(const CliOptions& cli) {
   const auto start = Clock::now();
   // PoCL reads its thread count when the first OpenCL call loads it.
@@ -179,13 +203,7 @@ int run_clrt(const CliOptions& cli) {
     return 2;
   }
   stats.load_seconds = seconds_since(start);
-  try {
-    if (!output.is_stdout())
-      for (std::uint32_t frame = frames.first; frame <= frames.last; ++frame)
-        check_output_is_not_input(frame_output(output, frames, frame).path, scene);
-  } catch (const ImageError& e) {
-    throw UsageError(e.what());
-  }
+  check_outputs_are_not_inputs(output, frames, scene);
   return render_frames(cli, scene, frames, output, stats, progress, start);
 }
 

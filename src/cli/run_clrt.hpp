@@ -4,10 +4,27 @@
 // FILE:LINE:COLUMN: error: ....
 #pragma once
 
+#include <vector>
+
 #include "cli/options.hpp"
+#include "device/device_select.hpp"
+#include "geometry/geometry_data.hpp"
+#include "render/renderer.hpp"
 
 namespace clrt {
 
 int run_clrt(const CliOptions& cli);
+
+// The steps clrt-mpi shares with clrt:
+// the output, checked before any work (UsageError);
+ImageOutput resolve_image_output(const CliOptions& cli, const FramePlan& frames);
+// that no output overwrites the scene or a mesh it read (UsageError);
+void check_outputs_are_not_inputs(const ImageOutput& output, const FramePlan& frames,
+                                  const Scene& scene);
+// the render settings on `devices`, with every limit checked (UsageError, RenderLimitError);
+RenderSetup checked_render_setup(const CliOptions& cli, const Scene& scene,
+                                 std::vector<DeviceEntry> devices);
+// the BVH, after which the scene's meshes are freed.
+GeometryData built_geometry(Scene& scene, Progress& progress);
 
 }  // namespace clrt

@@ -1,6 +1,7 @@
 #include "cli/tool_command_line.hpp"
 
 #include <algorithm>
+#include <sstream>
 
 #include "version.hpp"
 
@@ -15,12 +16,15 @@ void identify_tool(CLI::App& app) {
   });
 }
 
-std::optional<int> parse_tool_arguments(CLI::App& app, std::vector<std::string> args) {
+std::optional<int> parse_tool_arguments(CLI::App& app, std::vector<std::string> args,
+                                        bool print) {
   try {
     std::reverse(args.begin(), args.end());  // CLI11 takes them last first
     app.parse(args);
   } catch (const CLI::ParseError& e) {
-    return app.exit(e) == 0 ? 0 : 2;
+    std::ostringstream silent;
+    const int status = print ? app.exit(e) : app.exit(e, silent, silent);
+    return status == 0 ? 0 : 2;
   }
   return std::nullopt;
 }

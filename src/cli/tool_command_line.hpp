@@ -15,8 +15,10 @@ namespace clrt {
 void identify_tool(CLI::App& app);
 
 // Parses `args` (the words after the program's name): nothing when the program goes on, else
-// the status to exit with (the message printed).
-std::optional<int> parse_tool_arguments(CLI::App& app, std::vector<std::string> args);
+// the status to exit with (the message printed, unless `print` is false: the MPI ranks but
+// the first parse the same words and stay silent).
+std::optional<int> parse_tool_arguments(CLI::App& app, std::vector<std::string> args,
+                                        bool print = true);
 std::optional<int> parse_tool_arguments(CLI::App& app, int argc, char** argv);
 
 }  // namespace clrt
