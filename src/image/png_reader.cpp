@@ -33,6 +33,21 @@ void read_from_memory(png_structp png, png_bytep out, std::size_t size) {
   input->position += size;
 }
 
+// libpng allocates a chunk's declared length before reading it, so a forged length (a 45-byte
+// file declaring 1.3 GB) would cost that much memory: every chunk must fit in the file first.
+void check_chunk_lengths(const std::vector<std::uint8_t>& bytes) {
+  constexpr std::size_t kSignature = 8, kFraming = 12;  // length, type, CRC
+  for (std::size_t at = kSignature; at + kFraming <= bytes.size();) {
+    const std::uint64_t length = std::uint64_t{bytes[at]} << 24 | std::uint64_t{bytes[at + 1]} << 16 |
+                                 std::uint64_t{bytes[at + 2]} << 8 | bytes[at + 3];
+    if (length > bytes.size() - at - kFraming)
+      throw ImageError("a chunk declares " + std::to_string(length) +
+                       " bytes, more than the file has left");
+    if (std::memcmp(&bytes[at + 4], "IEND", 4) == 0) return;
+    at += kFraming + length;
+  }
+}
+
 class PngReadStructs {
  public:
   explicit PngReadStructs(PngErrors& errors)
@@ -75,6 +90,11 @@ class PngDecoder {
   explicit PngDecoder(const std::string& path)
       : path_(path), bytes_(image_detail::read_file_bytes(path)), input_{{}, &bytes_},
         structs_(input_.errors) {
+    try {
+      check_chunk_lengths(bytes_);
+    } catch (const ImageError& e) {
+      throw ImageError(path_ + ": not a readable PNG: " + e.what());
+    }
     png_structp png = structs_.png();
     png_infop info = structs_.info();
     png_textp texts = nullptr;

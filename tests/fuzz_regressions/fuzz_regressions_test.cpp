@@ -28,15 +28,17 @@ std::set<fs::path> inputs_of(const std::string& target) {
 }  // namespace
 
 TEST_CASE("every fuzz target's folder of found inputs is one this test replays", "[fuzz]") {
-  const std::set<std::string> replayed = {"fuzz_ray_scene", "fuzz_obj_mesh", "fuzz_image_fsf",
-                                          "fuzz_image_ppm", "fuzz_image_png", "open"};
+  const std::set<std::string> replayed = {"fuzz_ray_scene", "fuzz_nff_scene", "fuzz_obj_mesh",
+                                          "fuzz_image_fsf", "fuzz_image_ppm", "fuzz_image_png",
+                                          "fuzz_image_pfm", "fuzz_image_exr", "open"};
   for (const auto& entry : fs::directory_iterator(kRegressions))
     if (entry.is_directory()) CHECK(replayed.count(entry.path().filename().string()) == 1);
 }
 
 TEST_CASE("scenes the fuzzer found are rejected with a scene error", "[fuzz]") {
-  const std::set<fs::path> files = inputs_of("fuzz_ray_scene");
+  std::set<fs::path> files = inputs_of("fuzz_ray_scene");
   REQUIRE_FALSE(files.empty());
+  files.merge(inputs_of("fuzz_nff_scene"));
   for (const fs::path& file : files) {
     INFO(file);
     CHECK(clrt::fuzz::ray_scene(file.string()) == Outcome::Rejected);
@@ -44,7 +46,8 @@ TEST_CASE("scenes the fuzzer found are rejected with a scene error", "[fuzz]") {
 }
 
 TEST_CASE("meshes and images the fuzzer found are rejected or read consistently", "[fuzz]") {
-  for (const char* target : {"fuzz_obj_mesh", "fuzz_image_fsf", "fuzz_image_ppm", "fuzz_image_png"})
+  for (const char* target : {"fuzz_obj_mesh", "fuzz_image_fsf", "fuzz_image_ppm", "fuzz_image_png",
+                             "fuzz_image_pfm", "fuzz_image_exr"})
     for (const fs::path& file : inputs_of(target)) {
       INFO(file);
       if (std::string(target) == "fuzz_obj_mesh")

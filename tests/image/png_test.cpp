@@ -216,3 +216,12 @@ TEST_CASE("PNG info describes colour types and bit depths as stored", "[image][p
   CHECK(clrt::read_image_info(fixture("gray_alpha8.png")).channels == "grey, alpha");
   CHECK(clrt::read_image_info(fixture("gray1.png")).samples == "1-bit");
 }
+
+TEST_CASE("a chunk longer than the file is refused before libpng allocates it", "[image][png]") {
+  // The fuzzer's 45-byte file whose second chunk declares 1347179589 bytes: libpng allocated
+  // 1.3 GB for it before finding the file too short.
+  const std::string path =
+      std::string(CLRT_SOURCE_DIR) + "/tests/fuzz/regressions/fuzz_image_png/chunk-length-1347179589.png";
+  CHECK_THROWS_WITH(clrt::read_png(path),
+                    Contains("a chunk declares 1347179589 bytes, more than the file has left"));
+}
