@@ -9,7 +9,10 @@
 namespace clrt::image_detail {
 
 void encode_fsf(const EightBitRows& rows, ByteSink& sink);  // every frame
-void encode_png(const EightBitRows& rows, ByteSink& sink);  // frame 0, and the placement
+// Frame 0, and the placement.
+void encode_png(const EightBitRows& rows, const PngEncoding& encoding, ByteSink& sink);
+// ImageError for an encoding libpng cannot take; called before any output exists.
+void check_png_encoding(const PngEncoding& encoding);
 void encode_ppm(const EightBitRows& rows, ByteSink& sink);  // frame 0
 void encode_pfm(const FloatImage& image, ByteSink& sink);
 void encode_exr(const FloatImage& image, ExrPixel pixel, ByteSink& sink);  // and the placement

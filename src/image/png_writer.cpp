@@ -1,6 +1,7 @@
 // PNG through libpng's full API (the simplified one cannot write text chunks): rows are
 // quantised one at a time and the encoded bytes stream into the sink as libpng produces them.
 #include <png.h>
+#include <zlib.h>
 
 #include <vector>
 
@@ -50,11 +51,43 @@ class PngWriteStructs {
   png_infop info_;
 };
 
+int filter_mask(PngFilters filters) {
+  switch (filters) {
+    case PngFilters::None: return PNG_FILTER_NONE;
+    case PngFilters::Sub: return PNG_FILTER_SUB;
+    case PngFilters::Up: return PNG_FILTER_UP;
+    case PngFilters::Average: return PNG_FILTER_AVG;
+    case PngFilters::Paeth: return PNG_FILTER_PAETH;
+    case PngFilters::Adaptive: return PNG_ALL_FILTERS;
+  }
+  return PNG_ALL_FILTERS;
+}
+
+int zlib_strategy(PngStrategy strategy) {
+  switch (strategy) {
+    case PngStrategy::Default: return Z_DEFAULT_STRATEGY;
+    case PngStrategy::Filtered: return Z_FILTERED;
+    case PngStrategy::Rle: return Z_RLE;
+    case PngStrategy::HuffmanOnly: return Z_HUFFMAN_ONLY;
+  }
+  return Z_DEFAULT_STRATEGY;
+}
+
+// libpng's compressed-data buffer, hence the size of each IDAT chunk: large enough that the
+// chunks pass the sink's gathering buffer straight to the output (libpng's default is 8 KiB).
+constexpr std::size_t kIdatBytes = std::size_t{1} << 17;
+
 }  // namespace
+
+void check_png_encoding(const PngEncoding& encoding) {
+  if (encoding.level < 0 || encoding.level > 9)
+    throw ImageError("PNG compression level " + std::to_string(encoding.level) +
+                     " is outside 0-9");
+}
 
 // An opaque frame (everything clrt renders) is stored as RGB: a quarter smaller, same pixels.
 // The sRGB chunk says the samples are display values, as the contract's quantisation makes them.
-void encode_png(const EightBitRows& rows, ByteSink& sink) {
+void encode_png(const EightBitRows& rows, const PngEncoding& encoding, ByteSink& sink) {
   PngOutput output{{}, &sink};
   const PngWriteStructs structs(output.errors);
   png_structp png = structs.png();
@@ -78,6 +111,10 @@ void encode_png(const EightBitRows& rows, ByteSink& sink) {
                  static_cast<png_uint_32>(rows.height()), 8,
                  opaque ? PNG_COLOR_TYPE_RGB : PNG_COLOR_TYPE_RGBA, PNG_INTERLACE_NONE,
                  PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+    png_set_compression_level(png, encoding.level);
+    png_set_compression_strategy(png, zlib_strategy(encoding.strategy));
+    png_set_filter(png, PNG_FILTER_TYPE_BASE, filter_mask(encoding.filters));
+    png_set_compression_buffer_size(png, kIdatBytes);
     png_set_sRGB(png, info, PNG_sRGB_INTENT_PERCEPTUAL);
     if (placement) png_set_text(png, info, &text, 1);
     png_write_info(png, info);
