@@ -70,6 +70,18 @@ TEST_CASE("every PNG filter, strategy and level stores the same pixels", "[image
       }
 }
 
+// The rows are compressed in bands of at least 16 rows on every core; the bands must join into
+// one stream whatever their number, including a band of a single row.
+TEST_CASE("PNG images of one to many bands store their pixels", "[image][png]") {
+  ScratchDir dir;
+  for (const int height : {1, 15, 16, 17, 33, 300, 1000}) {
+    INFO("height " << height);
+    const FloatImage render = test_render(5, height);
+    const std::string path = write_with(dir, "tall.png", render, {});
+    CHECK(clrt::read_png(path).frames == clrt::quantize(render).frames);
+  }
+}
+
 TEST_CASE("the PNG settings reach the encoder", "[image][png]") {
   ScratchDir dir;
   const FloatImage render = test_render(64, 48);

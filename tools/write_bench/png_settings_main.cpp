@@ -102,7 +102,7 @@ std::vector<Row> rows(const std::vector<clrt::PngEncoding>& encodings, std::size
   std::vector<Row> all;
   for (const clrt::PngEncoding& encoding : encodings) {
     std::string label = clrt::describe(encoding);
-    if (encoding == clrt::kPngLibraryDefaults) label += " (libpng's default)";
+    if (encoding == clrt::kPngLibraryDefaults) label += " (the former default: libpng's)";
     if (encoding == clrt::PngEncoding{}) label = "**" + label + " (clrt's default)**";
     all.push_back({label, clrt::ImageFormat::Png, {clrt::ExrPixel::Half, encoding},
                    std::vector(images, unmeasured)});
@@ -155,7 +155,7 @@ int run(const Options& options, const std::vector<clrt::PngEncoding>& encodings)
   std::cout << "Time: best of " << options.runs << " rounds, each encoding every image with "
             << "every setting into memory (quantisation, filters, compression, copies); size "
                "of the file. Each image: ms / KiB.\n\n"
-            << "| setting | ms (sum) | MiB (sum) | speed vs libpng default | size vs libpng "
+            << "| setting | ms (sum) | MiB (sum) | speed vs former default | size vs former "
                "default |";
   for (const Input& input : inputs) std::cout << " " << input.name << " |";
   std::cout << "\n|---|---:|---:|---:|---:|";
