@@ -11,7 +11,7 @@ namespace clrt::image_detail {
 void encode_fsf(const EightBitRows& rows, ByteSink& sink);  // every frame
 // Frame 0, and the placement.
 void encode_png(const EightBitRows& rows, const PngEncoding& encoding, ByteSink& sink);
-// ImageError for an encoding libpng cannot take; called before any output exists.
+// ImageError for an encoding zlib cannot take; called before any output exists.
 void check_png_encoding(const PngEncoding& encoding);
 void encode_ppm(const EightBitRows& rows, ByteSink& sink);  // frame 0
 void encode_pfm(const FloatImage& image, ByteSink& sink);
