@@ -105,6 +105,17 @@ class Deflater {
   // Compresses `size` bytes onto the end of `out`, growing it when zlib's bound was not enough
   // (only a flush can pass it, by a few bytes).
   void add(const std::uint8_t* data, std::size_t size, int flush, ByteBuffer& out) {
+    // zlib counts input in 32 bits: a row of a billion pixels goes in parts.
+    constexpr std::size_t kMaxPart = std::size_t{1} << 30;
+    for (; size > kMaxPart; data += kMaxPart, size -= kMaxPart)
+      add_part(data, kMaxPart, Z_NO_FLUSH, out);
+    add_part(data, size, flush, out);
+  }
+
+  std::size_t bound(std::size_t size) { return deflateBound(&stream_, static_cast<uLong>(size)); }
+
+ private:
+  void add_part(const std::uint8_t* data, std::size_t size, int flush, ByteBuffer& out) {
     stream_.next_in = const_cast<Bytef*>(data);
     stream_.avail_in = static_cast<uInt>(size);
     do {
@@ -118,9 +129,6 @@ class Deflater {
     } while (stream_.avail_out == 0 || stream_.avail_in > 0);
   }
 
-  std::size_t bound(std::size_t size) { return deflateBound(&stream_, static_cast<uLong>(size)); }
-
- private:
   z_stream stream_{};
 };
 
@@ -156,7 +164,7 @@ void compress_band(const EightBitRows& rows, bool rgba, const PngEncoding& encod
   for (int y = out.first_row; y < out.end_row; ++y) {
     const std::uint8_t* current = row(y);
     filter_row(encoding.filters, previous, current, row_bytes, bpp, filtered.data());
-    out.adler = adler32(out.adler, filtered.data(), static_cast<uInt>(filtered.size()));
+    out.adler = adler32_z(out.adler, filtered.data(), filtered.size());
     const int flush = y + 1 < out.end_row ? Z_NO_FLUSH : last ? Z_FINISH : Z_SYNC_FLUSH;
     deflater.add(filtered.data(), filtered.size(), flush, out.bytes);
     previous = current;
@@ -171,13 +179,15 @@ class BandWorkers {
               std::vector<Band>& bands)
       : bands_(bands) {
     const std::size_t count = std::min<std::size_t>(usable_cores(), bands.size());
-    for (std::size_t i = 0; i < count; ++i)
-      threads_.emplace_back([this, &rows, rgba, &encoding] { work(rows, rgba, encoding); });
+    try {
+      for (std::size_t i = 0; i < count; ++i)
+        threads_.emplace_back([this, &rows, rgba, &encoding] { work(rows, rgba, encoding); });
+    } catch (...) {  // no destructor runs for a constructor that throws
+      stop();
+      throw;
+    }
   }
-  ~BandWorkers() {
-    stop_ = true;
-    for (std::thread& thread : threads_) thread.join();
-  }
+  ~BandWorkers() { stop(); }
   BandWorkers(const BandWorkers&) = delete;
   BandWorkers& operator=(const BandWorkers&) = delete;
 
@@ -190,6 +200,11 @@ class BandWorkers {
   }
 
  private:
+  void stop() {
+    stop_ = true;
+    for (std::thread& thread : threads_) thread.join();
+  }
+
   void work(const EightBitRows& rows, bool rgba, const PngEncoding& encoding) {
     for (std::size_t band; !stop_ && (band = next_++) < bands_.size();) {
       std::exception_ptr failure;

@@ -59,7 +59,8 @@ FilterType chosen_type(PngFilters filters, const std::uint8_t* up, const std::ui
   std::uint64_t best_cost = UINT64_MAX;
   for (const FilterType type : {kNone, kSub, kUp, kAverage, kPaeth}) {
     std::uint64_t cost = 0;
-    predict(type, up, row, n, bpp, [&](std::size_t, std::uint8_t v) { cost += v < 128 ? v : 256 - v; });
+    predict(type, up, row, n, bpp,
+            [&](std::size_t, std::uint8_t v) { cost += v < 128 ? v : 256 - v; });
     if (cost < best_cost) {
       best = type;
       best_cost = cost;
