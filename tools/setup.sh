@@ -15,6 +15,7 @@ packages=(
   catch2                         # the test framework (2.13 on Debian 12)
   libcli11-dev                   # the command line
   libpng-dev                     # PNG output and input
+  zlib1g-dev                     # the PNG writer's compression, on every core (libpng-dev pulls it in too)
   libopenexr-dev                 # OpenEXR output and input (half or 32-bit float HDR, tiles' data windows)
   nlohmann-json3-dev             # JSON for --stats=json and the experiment records
   python3-matplotlib             # the plots of clrt-experiment (and its test)

@@ -22,6 +22,11 @@ inline void append_u32_le(std::vector<std::uint8_t>& out, std::uint32_t value) {
     out.push_back(static_cast<std::uint8_t>(value >> shift));
 }
 
+inline void append_u32_be(std::vector<std::uint8_t>& out, std::uint32_t value) {
+  for (int shift = 24; shift >= 0; shift -= 8)
+    out.push_back(static_cast<std::uint8_t>(value >> shift));
+}
+
 // Shifts, not memcpy, so the order is the same on every host; compilers make it one store on a
 // little-endian one.
 inline void store_u32_le(std::uint8_t* out, std::uint32_t value) {

@@ -12,7 +12,10 @@ void encode_fsf(const EightBitRows& rows, ByteSink& sink);  // every frame
 // The pieces of an FSF file, for an animation written frame by frame (fsf_animation.hpp).
 void write_fsf_header(int width, int height, std::size_t frames, ByteSink& sink);
 void write_fsf_frame(const EightBitRows& rows, std::size_t frame, ByteSink& sink);
-void encode_png(const EightBitRows& rows, ByteSink& sink);  // frame 0, and the placement
+// Frame 0, and the placement.
+void encode_png(const EightBitRows& rows, const PngEncoding& encoding, ByteSink& sink);
+// ImageError for an encoding zlib cannot take; called before any output exists.
+void check_png_encoding(const PngEncoding& encoding);
 void encode_ppm(const EightBitRows& rows, ByteSink& sink);  // frame 0
 void encode_pfm(const FloatImage& image, ByteSink& sink);
 void encode_exr(const FloatImage& image, ExrPixel pixel, ByteSink& sink);  // and the placement

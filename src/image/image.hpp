@@ -8,6 +8,8 @@
 #include <variant>
 #include <vector>
 
+#include "image/png_encoding.hpp"
+
 namespace clrt {
 
 // Where an image lies in a larger frame: its top-left pixel is (x, y) of a full_width x
@@ -78,7 +80,13 @@ bool holds_floats(ImageFormat format);          // PFM and EXR; the others store
 enum class ExrPixel { Half, Float };
 
 struct WriteOptions {
-  ExrPixel exr_pixel = ExrPixel::Half;
+  // A constructor rather than an aggregate, so that callers may name the leading options only
+  // ({ExrPixel::Float}) without a missing-initializer warning.
+  WriteOptions(ExrPixel exr_pixel_ = ExrPixel::Half, PngEncoding png_ = {})
+      : exr_pixel(exr_pixel_), png(png_) {}
+
+  ExrPixel exr_pixel;
+  PngEncoding png;  // a level outside 0-9 is an ImageError before anything is written
 };
 
 // Writes `image` in the format its extension names. PFM and EXR keep the unclamped floats; the

@@ -1,91 +1,84 @@
-// PNG through libpng's full API (the simplified one cannot write text chunks): rows are
-// quantised one at a time and the encoded bytes stream into the sink as libpng produces them.
-#include <png.h>
+// PNG written by clrt itself around zlib, not through libpng: libpng compresses a stream on one
+// thread, and at 1920x1080 that alone was 20 ms, against a target of 5% of the whole command
+// (docs/images.md, "Choosing the PNG encoder"). The chunks are few and simple; libpng still
+// reads every PNG, and the tests read what this writes with it.
+#include <zlib.h>
 
+#include <algorithm>
+#include <cstring>
+#include <string>
 #include <vector>
 
+#include "image/byte_order.hpp"
 #include "image/encoders.hpp"
 #include "image/placement.hpp"
-#include "image/png_errors.hpp"
+#include "image/png_bands.hpp"
 
 namespace clrt::image_detail {
 namespace {
 
-struct PngOutput {
-  PngErrors errors;
-  ByteSink* sink;
-};
+constexpr std::uint8_t kSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+constexpr std::uint8_t kColourRgb = 2, kColourRgba = 6;
+constexpr std::uint8_t kSrgbPerceptual = 0;
+// PNG limits a chunk to 2^31 - 1 bytes; a band larger than this goes into several IDATs.
+constexpr std::size_t kMaxChunkBytes = std::size_t{1} << 30;
 
-void write_to_sink(png_structp png, png_bytep data, std::size_t size) {
-  auto* output = static_cast<PngOutput*>(png_get_io_ptr(png));
-  bool failed = false;
-  try {
-    output->sink->write(data, size);
-  } catch (...) {
-    output->errors.failure = std::current_exception();
-    failed = true;
-  }
-  if (failed) png_error(png, "the output failed");
+void write_chunk(ByteSink& sink, const char (&type)[5], const std::uint8_t* data,
+                 std::size_t size) {
+  std::vector<std::uint8_t> head;
+  append_u32_be(head, static_cast<std::uint32_t>(size));
+  head.insert(head.end(), type, type + 4);
+  uLong crc = crc32(0, head.data() + 4, 4);
+  if (size > 0) crc = crc32_z(crc, data, size);  // a null buffer would restart the CRC
+  std::vector<std::uint8_t> tail;
+  append_u32_be(tail, static_cast<std::uint32_t>(crc));
+  sink.write(head.data(), head.size());
+  if (size > 0) sink.write(data, size);
+  sink.write(tail.data(), tail.size());
 }
 
-void flush_nothing(png_structp) {}
+void write_chunk(ByteSink& sink, const char (&type)[5], const std::vector<std::uint8_t>& data) {
+  write_chunk(sink, type, data.data(), data.size());
+}
 
-class PngWriteStructs {
- public:
-  explicit PngWriteStructs(PngErrors& errors)
-      : png_(png_create_write_struct(PNG_LIBPNG_VER_STRING, &errors, png_record_error,
-                                     png_ignore_warning)),
-        info_(png_ ? png_create_info_struct(png_) : nullptr) {
-    if (!info_) throw ImageError("PNG encoding failed: libpng could not allocate its state");
-  }
-  ~PngWriteStructs() { png_destroy_write_struct(&png_, &info_); }
-  PngWriteStructs(const PngWriteStructs&) = delete;
-  PngWriteStructs& operator=(const PngWriteStructs&) = delete;
-
-  png_structp png() const { return png_; }
-  png_infop info() const { return info_; }
-
- private:
-  png_structp png_;
-  png_infop info_;
-};
+std::vector<std::uint8_t> header(const EightBitRows& rows, bool rgba) {
+  std::vector<std::uint8_t> ihdr;
+  append_u32_be(ihdr, static_cast<std::uint32_t>(rows.width()));
+  append_u32_be(ihdr, static_cast<std::uint32_t>(rows.height()));
+  // 8-bit samples; deflate compression, adaptive filtering (PNG's only methods), no interlace.
+  ihdr.insert(ihdr.end(), {8, rgba ? kColourRgba : kColourRgb, 0, 0, 0});
+  return ihdr;
+}
 
 }  // namespace
 
+void check_png_encoding(const PngEncoding& encoding) {
+  if (encoding.level < 0 || encoding.level > 9)
+    throw ImageError("PNG compression level " + std::to_string(encoding.level) +
+                     " is outside 0-9");
+}
+
 // An opaque frame (everything clrt renders) is stored as RGB: a quarter smaller, same pixels.
 // The sRGB chunk says the samples are display values, as the contract's quantisation makes them.
-void encode_png(const EightBitRows& rows, ByteSink& sink) {
-  PngOutput output{{}, &sink};
-  const PngWriteStructs structs(output.errors);
-  png_structp png = structs.png();
-  png_infop info = structs.info();
-  const bool opaque = rows.opaque();
-  const auto placement = recorded_placement(rows.placement(), rows.width(), rows.height());
-  std::string placement_value =
-      placement ? placement_text(*placement, rows.width(), rows.height()) : "";
-  std::string key = kPngPlacementKey;
-  png_text text{};
-  text.compression = PNG_TEXT_COMPRESSION_NONE;
-  text.key = key.data();
-  text.text = placement_value.data();
-  text.text_length = placement_value.size();
-  std::vector<std::uint8_t> scratch(4 * static_cast<std::size_t>(rows.width()));
-  std::uint8_t* row = scratch.data();
-
-  const bool ok = png_guarded(png, [&] {
-    png_set_write_fn(png, &output, write_to_sink, flush_nothing);
-    png_set_IHDR(png, info, static_cast<png_uint_32>(rows.width()),
-                 static_cast<png_uint_32>(rows.height()), 8,
-                 opaque ? PNG_COLOR_TYPE_RGB : PNG_COLOR_TYPE_RGBA, PNG_INTERLACE_NONE,
-                 PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
-    png_set_sRGB(png, info, PNG_sRGB_INTENT_PERCEPTUAL);
-    if (placement) png_set_text(png, info, &text, 1);
-    png_write_info(png, info);
-    for (int y = 0; y < rows.height(); ++y)
-      png_write_row(png, opaque ? rows.rgb_row(0, y, row) : rows.rgba_row(0, y, row));
-    png_write_end(png, nullptr);
+// A placement goes into a tEXt chunk before the image data.
+void encode_png(const EightBitRows& rows, const PngEncoding& encoding, ByteSink& sink) {
+  const bool rgba = !rows.opaque();
+  sink.write(kSignature, sizeof kSignature);
+  write_chunk(sink, "IHDR", header(rows, rgba));
+  write_chunk(sink, "sRGB", {kSrgbPerceptual});
+  if (const auto placement = recorded_placement(rows.placement(), rows.width(), rows.height())) {
+    const std::string text = placement_text(*placement, rows.width(), rows.height());
+    // The keyword, its terminating NUL as the separator, the text.
+    std::vector<std::uint8_t> chunk(kPngPlacementKey,
+                                    kPngPlacementKey + std::strlen(kPngPlacementKey) + 1);
+    chunk.insert(chunk.end(), text.begin(), text.end());
+    write_chunk(sink, "tEXt", chunk);
+  }
+  compress_png_rows(rows, rgba, encoding, [&](const std::uint8_t* data, std::size_t size) {
+    for (std::size_t start = 0; start < size; start += kMaxChunkBytes)
+      write_chunk(sink, "IDAT", data + start, std::min(kMaxChunkBytes, size - start));
   });
-  if (!ok) throw_png_failure(output.errors, "PNG encoding failed: ");
+  write_chunk(sink, "IEND", nullptr, 0);
 }
 
 }  // namespace clrt::image_detail

@@ -21,7 +21,7 @@ void encode(ImageFormat format, const Image& image, const WriteOptions& options,
     case ImageFormat::Fsf:
       return image_detail::encode_fsf(EightBitRows(image), sink);
     case ImageFormat::Png:
-      return image_detail::encode_png(EightBitRows(image), sink);
+      return image_detail::encode_png(EightBitRows(image), options.png, sink);
     case ImageFormat::Ppm:
       return image_detail::encode_ppm(EightBitRows(image), sink);
     case ImageFormat::Pfm:
@@ -45,11 +45,22 @@ void encode_into(ByteSink& sink, const std::string& name, ImageFormat format, co
   sink.finish();
 }
 
-// Each checks the image before it touches the output.
+// What can be refused before the output is touched.
+template <typename Image>
+void check_writable(const Image& image, ImageFormat format, const WriteOptions& options,
+                    const std::string& name) {
+  image_detail::check_image(image, "cannot write " + name);
+  try {
+    if (format == ImageFormat::Png) image_detail::check_png_encoding(options.png);
+  } catch (const ImageError& error) {
+    throw ImageError("cannot write " + name + ": " + error.what());
+  }
+}
+
 template <typename Image>
 void write_file(const std::string& path, ImageFormat format, const Image& image,
                 const WriteOptions& options) {
-  image_detail::check_image(image, "cannot write " + path);
+  check_writable(image, format, options, path);
   image_detail::AtomicFile file(path);
   encode_into(file, path, format, image, options);
 }
@@ -58,7 +69,7 @@ template <typename Image>
 void write_fd(int fd, ImageFormat format, const Image& image, const WriteOptions& options) {
   const std::string name =
       fd == STDOUT_FILENO ? "standard output" : "file descriptor " + std::to_string(fd);
-  image_detail::check_image(image, "cannot write " + name);
+  check_writable(image, format, options, name);
   image_detail::FdSink sink(fd, name);
   encode_into(sink, name, format, image, options);
 }

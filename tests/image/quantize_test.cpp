@@ -50,3 +50,32 @@ TEST_CASE("quantize rejects an empty image and a pixel array of the wrong length
   CHECK_THROWS_AS(clrt::quantize(FloatImage{0, 0, {}}), ImageError);
   CHECK_THROWS_AS(clrt::quantize(FloatImage{2, 1, {0, 0, 0}}), ImageError);
 }
+
+// The rows are quantised in vector loops with a scalar remainder: a long, odd row checks every
+// lane against values whose byte is known by construction.
+TEST_CASE("quantize gives each channel of a long row its own nearest byte", "[image][quantize]") {
+  std::vector<float> rgb;
+  std::vector<std::uint8_t> expected;
+  const auto add = [&](float value, int byte) {
+    rgb.push_back(value);
+    expected.push_back(static_cast<std::uint8_t>(byte));
+  };
+  for (int k = 0; k < 255; ++k) {
+    add(static_cast<float>(k / 255.0), k);
+    add(static_cast<float>((k + 0.49) / 255.0), k);
+    add(static_cast<float>((k + 0.51) / 255.0), k + 1);
+  }
+  add(std::numeric_limits<float>::quiet_NaN(), 0);
+  add(-std::numeric_limits<float>::quiet_NaN(), 0);
+  add(std::numeric_limits<float>::infinity(), 255);
+  add(-0.0f, 0);
+  add(3.0f, 255);
+  add(-2.0f, 0);
+  const int width = static_cast<int>(rgb.size() / 3);  // 257 pixels
+  const std::vector<std::uint8_t> rgba = clrt::quantize(FloatImage{width, 1, rgb}).frames.at(0);
+  REQUIRE(rgba.size() == 4u * static_cast<std::size_t>(width));
+  for (std::size_t i = 0; i < expected.size(); ++i) {
+    INFO("channel " << i << " value " << rgb[i]);
+    CHECK(rgba[i + i / 3] == expected[i]);
+  }
+}
