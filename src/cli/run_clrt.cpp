@@ -19,6 +19,7 @@
 #include "render/orbit.hpp"
 #include "render/output_guard.hpp"
 #include "render/render_limits.hpp"
+#include "render/device_preparation.hpp"
 #include "render/renderer.hpp"
 #include "render/usage_error.hpp"
 #include "scene/scene.hpp"
@@ -95,11 +96,17 @@ void print_stats(const CliOptions& cli, const RenderStats& stats, const ImageOut
 
 int render_frames(const CliOptions& cli, Scene& scene, const FramePlan& frames,
                   const ImageOutput& output, RenderStats& stats, Progress& progress,
-                  Clock::time_point start) {
-  const RenderSetup setup = checked_render_setup(cli, scene, select_devices(cli.device));
+                  DevicePreparation& preparation, Clock::time_point start) {
+  const RenderSetup setup = checked_render_setup(cli, scene, preparation.devices());
   if (!cli.quiet)
     for (const DeviceEntry& d : setup.devices) progress.message("device " + describe_device(d));
-  Renderer renderer(scene, built_geometry(scene, progress), setup, &progress);
+  GeometryData geometry = built_geometry(scene, progress);
+  progress.phase("building the kernels");
+  const auto wait_start = Clock::now();
+  std::vector<PreparedDevice> prepared = preparation.take();
+  // What the command waited for OpenCL and the kernels, which started with the load.
+  const double kernel_wait = seconds_since(wait_start);
+  Renderer renderer(scene, std::move(geometry), setup, std::move(prepared), &progress);
   const PixelRect region = render_region(setup.options);
   const bool eight_bit = !holds_floats(output.format);
   std::unique_ptr<FsfAnimationWriter> animation;
@@ -130,6 +137,7 @@ int render_frames(const CliOptions& cli, Scene& scene, const FramePlan& frames,
   }
   if (animation) animation->finish();
   renderer.report(stats);
+  stats.build_seconds += kernel_wait;
   stats.width = region.width;
   stats.height = region.height;
   stats.frames = frames.count();
@@ -189,6 +197,8 @@ int run_clrt(const CliOptions& cli) {
   }
   const FramePlan frames = resolve_frames(cli.animation);
   const ImageOutput output = resolve_image_output(cli, frames);
+  // OpenCL starts and the kernels build while the scene loads.
+  DevicePreparation preparation(cli.device);
   Progress progress(!cli.quiet);
   RenderStats stats;
   stats.scene = cli.scene;
@@ -204,7 +214,7 @@ int run_clrt(const CliOptions& cli) {
   }
   stats.load_seconds = seconds_since(start);
   check_outputs_are_not_inputs(output, frames, scene);
-  return render_frames(cli, scene, frames, output, stats, progress, start);
+  return render_frames(cli, scene, frames, output, stats, progress, preparation, start);
 }
 
 }  // namespace clrt

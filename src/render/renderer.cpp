@@ -125,6 +125,10 @@ Renderer::Renderer(const Scene& scene, const RenderSetup& setup, Progress* progr
 
 Renderer::Renderer(const Scene& scene, GeometryData geometry, const RenderSetup& setup,
                    Progress* progress)
+    : Renderer(scene, std::move(geometry), setup, {}, progress) {}
+
+Renderer::Renderer(const Scene& scene, GeometryData geometry, const RenderSetup& setup,
+                   std::vector<PreparedDevice> prepared, Progress* progress)
     : options_(setup.options), geometry_(std::move(geometry)), devices_(std::make_unique<Devices>()) {
   check_render_setup(setup);
   setup_stats_.bvh_seconds = geometry_.build_seconds;
@@ -134,11 +138,18 @@ Renderer::Renderer(const Scene& scene, GeometryData geometry, const RenderSetup&
 
   if (progress) progress->phase("building the kernels");
   const auto start = Clock::now();
-  for (const DeviceEntry& entry : setup.devices) {
+  for (std::size_t i = 0; i < setup.devices.size(); ++i) {
+    const DeviceEntry& entry = setup.devices[i];
     const DeviceTuning tuning = tuning_of(entry, options_);
     DeviceWorker w;
-    w.context = std::make_unique<DeviceContext>(entry);
-    const compute::program program = build_renderer_program(*w.context);
+    compute::program program;
+    if (i < prepared.size()) {
+      w.context = std::move(prepared[i].context);
+      program = prepared[i].program;
+    } else {
+      w.context = std::make_unique<DeviceContext>(entry);
+      program = build_renderer_program(*w.context);
+    }
     w.frame = std::make_unique<DeviceFrame>(*w.context, frame, geometry_);
     w.timeline = std::make_unique<BusyTimeline>();
     IntegratorConfig config;

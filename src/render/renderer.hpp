@@ -9,6 +9,7 @@
 #include "device/device_select.hpp"
 #include "geometry/geometry_data.hpp"
 #include "image/image.hpp"
+#include "render/device_preparation.hpp"
 #include "render/pixel_rect.hpp"
 #include "render/progress.hpp"
 #include "render/render_options.hpp"
@@ -42,6 +43,10 @@ class Renderer {
   // device computes in its tables where they lie.
   Renderer(const Scene& scene, GeometryData geometry, const RenderSetup& setup,
            Progress* progress = nullptr);
+  // The same on devices whose contexts and programs are ready (DevicePreparation), in the
+  // order of setup.devices.
+  Renderer(const Scene& scene, GeometryData geometry, const RenderSetup& setup,
+           std::vector<PreparedDevice> prepared, Progress* progress = nullptr);
   ~Renderer();
   Renderer(const Renderer&) = delete;
   Renderer& operator=(const Renderer&) = delete;
