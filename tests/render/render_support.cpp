@@ -2,7 +2,9 @@
 
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <stdexcept>
@@ -15,6 +17,15 @@ namespace clrt::test {
 
 std::string test_scene(const std::string& name) {
   return std::string(CLRT_SOURCE_DIR) + "/tests/render/scenes/" + name;
+}
+
+std::vector<std::string> repository_scenes() {
+  std::vector<std::string> out;
+  for (const auto& entry :
+       std::filesystem::recursive_directory_iterator(std::string(CLRT_SOURCE_DIR) + "/scenes"))
+    if (entry.path().extension() == ".ray") out.push_back(entry.path().string());
+  std::sort(out.begin(), out.end());
+  return out;
 }
 
 FloatImage render_file(const std::string& path, const std::function<void(RenderOptions&)>& adjust) {

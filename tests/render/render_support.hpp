@@ -5,6 +5,7 @@
 #include <array>
 #include <functional>
 #include <string>
+#include <vector>
 
 #include "image/image.hpp"
 #include "render/render_options.hpp"
@@ -14,6 +15,9 @@ namespace clrt::test {
 
 // tests/render/scenes/NAME
 std::string test_scene(const std::string& name);
+
+// Every .ray file under the repository's scenes/, sorted.
+std::vector<std::string> repository_scenes();
 
 // Loads and renders `path` on the CPU device with the scene's own settings, changed by `adjust`.
 FloatImage render_file(const std::string& path,

@@ -19,15 +19,6 @@ using namespace clrt::test;
 
 namespace {
 
-std::vector<std::string> repository_scenes() {
-  std::vector<std::string> out;
-  for (const auto& entry :
-       std::filesystem::recursive_directory_iterator(std::string(CLRT_SOURCE_DIR) + "/scenes"))
-    if (entry.path().extension() == ".ray") out.push_back(entry.path().string());
-  std::sort(out.begin(), out.end());
-  return out;
-}
-
 bool same_bits(const FloatImage& a, const FloatImage& b) {
   return a.width == b.width && a.height == b.height && a.rgb.size() == b.rgb.size() &&
          std::memcmp(a.rgb.data(), b.rgb.data(), sizeof(float) * a.rgb.size()) == 0;

@@ -23,15 +23,6 @@ namespace {
 
 constexpr std::uint32_t kWidth = 23, kHeight = 17;
 
-std::vector<std::string> repository_scenes() {
-  std::vector<std::string> out;
-  for (const auto& entry :
-       std::filesystem::recursive_directory_iterator(std::string(CLRT_SOURCE_DIR) + "/scenes"))
-    if (entry.path().extension() == ".ray") out.push_back(entry.path().string());
-  std::sort(out.begin(), out.end());
-  return out;
-}
-
 const std::vector<PixelRect> kRegions = {
     {0, 0, 1, 1},                      // the top-left pixel
     {kWidth - 1, kHeight - 1, 1, 1},   // the bottom-right pixel
