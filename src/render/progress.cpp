@@ -33,10 +33,6 @@ Progress::Progress(bool enabled)
       start_(std::chrono::steady_clock::now()),
       last_draw_(start_) {}
 
-Progress::Progress(std::uint64_t total, bool enabled) : Progress(enabled) {
-  start("rendering", total);
-}
-
 Progress::~Progress() { clear(); }
 
 void Progress::phase(const std::string& name) {

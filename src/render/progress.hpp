@@ -15,8 +15,6 @@ class Progress {
  public:
   // Draws nothing unless `enabled` and stderr is a terminal.
   explicit Progress(bool enabled);
-  // A bar over `total` units from the start, for users of the old single-phase form.
-  Progress(std::uint64_t total, bool enabled);
   ~Progress();
   Progress(const Progress&) = delete;
   Progress& operator=(const Progress&) = delete;
