@@ -118,10 +118,11 @@ ParseResult parse_command_line(int argc, char** argv) {
   return parse_arguments({argv + 1, argv + argc}, true);
 }
 
-ParseResult parse_arguments(std::vector<std::string> args, bool print) {
+ParseResult parse_arguments(std::vector<std::string> args, bool print,
+                            const std::string& program) {
   ParseResult result;
   CliOptions& o = result.options;
-  CLI::App app{"clrt: a wavefront OpenCL ray tracer for .ray and .nff scenes", "clrt"};
+  CLI::App app{program + ": a wavefront OpenCL ray tracer for .ray and .nff scenes", program};
   identify_tool(app);
   app.add_option("scene", o.scene, "the .ray or .nff scene to render");
   add_image_options(app, o);

@@ -43,9 +43,10 @@ struct ParseResult {
 };
 
 ParseResult parse_command_line(int argc, char** argv);
-// The words after the program's name; `print` false: no message (the MPI ranks but the first,
-// which prints it).
-ParseResult parse_arguments(std::vector<std::string> args, bool print);
+// The words after the program's name, for `program` (clrt, or clrt-mpi which takes the same
+// options); `print` false: no message (the MPI ranks but the first, which prints it).
+ParseResult parse_arguments(std::vector<std::string> args, bool print,
+                            const std::string& program = "clrt");
 
 // The scene's settings overridden by whatever the command line gave. Throws UsageError for a
 // region that does not fit the image.

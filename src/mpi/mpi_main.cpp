@@ -144,7 +144,7 @@ int main(int argc, char** argv) {
     if (session.first()) std::cerr << "clrt-mpi: error: " << e.what() << "\n";
     return 2;
   }
-  const clrt::ParseResult parsed = clrt::parse_arguments(args, session.first());
+  const clrt::ParseResult parsed = clrt::parse_arguments(args, session.first(), "clrt-mpi");
   if (parsed.exit_code) return *parsed.exit_code;
   return run(session, parsed.options, tile);
 }

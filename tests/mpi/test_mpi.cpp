@@ -105,3 +105,17 @@ TEST_CASE("a rank that dies mid-render ends the job with no file", "[mpi]") {
   CHECK(r.exit_code != 0);
   CHECK(dir.entries().empty());
 }
+
+TEST_CASE("clrt-mpi names its version and refuses a bad option with exit 2, printed once",
+          "[mpi]") {
+  const CommandResult version = run_program(CLRT_MPI_EXE, "--version");
+  CHECK(version.exit_code == 0);
+  CHECK(version.output.find("clrt-mpi, from clrt ") == 0);
+  const CommandResult bad = run_mpi(mpirun(2) + "--no-such-option scene.ray");
+  INFO(bad.output);
+  CHECK(bad.exit_code == 2);
+  CHECK(count_of(bad.output, "clrt-mpi: error:") == 1);
+  const CommandResult tile = run_mpi(mpirun(2) + "--tile 0x5 scene.ray");
+  CHECK(tile.exit_code == 2);
+  CHECK(count_of(tile.output, "clrt-mpi: error: --tile takes") == 1);
+}
