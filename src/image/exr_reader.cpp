@@ -11,6 +11,7 @@
 #include <climits>
 #include <new>
 
+#include "image/exr_header_check.hpp"
 #include "image/checked_size.hpp"
 #include "image/decoders.hpp"
 #include "image/exr_streams.hpp"
@@ -76,6 +77,7 @@ ExrLayout layout_of(const Imf::Header& header, const std::string& path) {
 template <typename Read>
 auto read_exr_file(const std::string& path, const Read& read) {
   const std::vector<std::uint8_t> bytes = image_detail::read_file_bytes(path);
+  image_detail::check_exr_window(bytes, path);
   try {
     image_detail::MemoryIStream stream(bytes, path.c_str());
     Imf::InputFile file(stream);

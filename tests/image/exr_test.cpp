@@ -140,3 +140,29 @@ TEST_CASE("EXR reader rejects what is not a whole OpenEXR file, naming it", "[im
   CHECK_THROWS_WITH(clrt::read_exr(path), Contains(path));
   CHECK_THROWS_AS(clrt::read_exr(dir.file("missing.exr")), ImageError);
 }
+
+TEST_CASE("an EXR header that declares more than the file holds is refused before OpenEXR reads it",
+          "[image][exr]") {
+  // fuzz_image_exr's 300-byte file: an attribute whose size field reads 1886220131 made
+  // OpenEXR allocate 1.9 GB before finding the file too short.
+  const std::string forged = std::string(CLRT_SOURCE_DIR) +
+                             "/tests/fuzz/regressions/fuzz_image_exr/attribute-size-1886220131.exr";
+  CHECK_THROWS_WITH(clrt::read_exr(forged), Contains("declares 1886220131 bytes"));
+
+  // A small, valid file whose data window is made 20 million lines tall (its offset table alone
+  // would need 78126 chunks), then 200 million (more pixels than clrt reads).
+  ScratchDir dir;
+  const std::string path = dir.file("tall.exr");
+  clrt::write_image(path, FloatImage(4, 3, std::vector<float>(36, 0.5f)));
+  Bytes bytes = read_bytes(path);
+  const std::string text(bytes.begin(), bytes.end());
+  const std::size_t window = text.find("dataWindow");
+  REQUIRE(window != std::string::npos);
+  const std::size_t y_max = window + std::strlen("dataWindow") + 1 + std::strlen("box2i") + 1 + 4 + 12;
+  for (const auto& [lines, message] : {std::pair<std::int32_t, const char*>{20000000, "needs 78126 chunks"},
+                                       {200000000, "larger than clrt reads"}}) {
+    std::memcpy(&bytes[y_max], &lines, 4);
+    write_bytes(path, bytes);
+    CHECK_THROWS_WITH(clrt::read_exr(path), Contains(message));
+  }
+}
