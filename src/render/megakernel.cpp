@@ -24,7 +24,8 @@ MegakernelIntegrator::MegakernelIntegrator(DeviceContext& device, const compute:
       resolver_(device, program, wave_samples(config, frame), wave_pixels_),
       ray_counts_(allocate<cl_uint>(device, std::size_t{wave_samples(config, frame)} * CLRT_RAY_KINDS,
                                     "ray count")),
-      profiler_(device, program, config.profile, config.local_size, 1, 0, config.timeline),
+      profiler_(device, program, config.profile, config.local_size, 1,
+                wave_samples(config, frame) / Profiler::kCountChunk + 1, config.timeline),
       megakernel_(program) {
   check_megakernel_depth(frame.host.params.max_depth, config.megakernel_depth);
 }

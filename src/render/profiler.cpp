@@ -29,6 +29,7 @@ Profiler::Profiler(DeviceContext& device, const compute::program& program, bool 
       totals_(allocate<cl_ulong>(device, enabled ? std::size_t{passes} * CLRT_RAY_KINDS : 1,
                                  "ray count")),
       count_ray_kinds_(program),
+      fold_ray_counts_(program),
       add_ray_kinds_(program),
       add_shadow_rays_(program),
       commit_ray_counts_(program) {
@@ -41,12 +42,15 @@ void Profiler::count_queue(const Global<dev::Ray>& rays, std::uint32_t count, st
   if (!enabled_ || count == 0) return;
   const std::uint32_t chunks = (count + kCountChunk - 1) / kCountChunk;
   launch(count_ray_kinds_, {rays, count, kCountChunk, partial_}, chunks, pass);
-  count_rows(partial_, chunks, pass);
+  launch(add_ray_kinds_, {partial_, chunks, pass, staging_}, 1, pass);
 }
 
-void Profiler::count_rows(const Global<cl_uint>& partial, std::uint32_t rows, std::uint32_t pass) {
-  if (!enabled_ || rows == 0) return;
-  launch(add_ray_kinds_, {partial, rows, pass, staging_}, 1, pass);
+void Profiler::count_rows(const Global<cl_uint>& rows, std::uint32_t row_count,
+                          std::uint32_t pass) {
+  if (!enabled_ || row_count == 0) return;
+  const std::uint32_t chunks = (row_count + kCountChunk - 1) / kCountChunk;
+  launch(fold_ray_counts_, {rows, row_count, kCountChunk, partial_}, chunks, pass);
+  launch(add_ray_kinds_, {partial_, chunks, pass, staging_}, 1, pass);
 }
 
 void Profiler::count_shadows(const Global<cl_uint>& count, std::uint32_t pass) {

@@ -40,7 +40,7 @@ class Profiler {
   // The shadow rays a compaction left counted on the device.
   void count_shadows(const Global<cl_uint>& count, std::uint32_t pass);
   // Per-sample counts written by the megakernel: `rows` rows of CLRT_RAY_KINDS.
-  void count_rows(const Global<cl_uint>& partial, std::uint32_t rows, std::uint32_t pass);
+  void count_rows(const Global<cl_uint>& rows, std::uint32_t row_count, std::uint32_t pass);
 
   // A wave ends: its counts and times join the render's (commit) or are dropped (it is retried).
   std::size_t wave_mark() const { return timed_.size(); }
@@ -75,6 +75,7 @@ class Profiler {
   Global<cl_uint> partial_;
   Global<cl_ulong> staging_, totals_;
   TypedKernel<CountRayKindsArgs> count_ray_kinds_;
+  TypedKernel<FoldRayCountsArgs> fold_ray_counts_;
   TypedKernel<AddRayKindsArgs> add_ray_kinds_;
   TypedKernel<AddShadowRaysArgs> add_shadow_rays_;
   TypedKernel<CommitRayCountsArgs> commit_ray_counts_;

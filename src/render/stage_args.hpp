@@ -150,6 +150,15 @@ struct CountRayKindsArgs {
   CLRT_KERNEL_ARGS(rays, count, chunk, partial)
 };
 
+struct FoldRayCountsArgs {
+  static constexpr const char* kName = "fold_ray_counts";
+  Global<const cl_uint> rows;
+  cl_uint row_count = 0, chunk = 0;
+  Global<cl_uint> partial;
+
+  CLRT_KERNEL_ARGS(rows, row_count, chunk, partial)
+};
+
 struct AddRayKindsArgs {
   static constexpr const char* kName = "add_ray_kinds";
   Global<const cl_uint> partial;

@@ -50,7 +50,7 @@ TEST_CASE("the renderer's program holds every stage kernel", "[kernel-source]") 
   for (const char* kernel :
        {"generate", "intersect", "shade", "shadow", "compact_count", "compact_scan",
         "compact_scatter", "gather_shadows", "accumulate_samples", "resolve", "count_ray_kinds",
-        "add_ray_kinds", "add_shadow_rays", "commit_ray_counts", "megakernel"}) {
+        "fold_ray_counts", "add_ray_kinds", "add_shadow_rays", "commit_ray_counts", "megakernel"}) {
     INFO(kernel);
     CHECK(std::regex_search(program, std::regex(std::string("__kernel void ") + kernel + "\\(")));
   }

@@ -19,7 +19,8 @@ namespace {
 using RendererKernels =
     std::tuple<GenerateArgs, IntersectArgs, ShadeArgs, ShadowArgs, GatherShadowsArgs,
                AccumulateSamplesArgs, ResolveArgs, MegakernelArgs, CompactCountArgs,
-               CompactScanArgs, CompactScatterArgs, CountRayKindsArgs, AddRayKindsArgs,
+               CompactScanArgs, CompactScatterArgs, CountRayKindsArgs, FoldRayCountsArgs,
+               AddRayKindsArgs,
                AddShadowRaysArgs, CommitRayCountsArgs>;
 
 template <class Args>

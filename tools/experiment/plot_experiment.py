@@ -29,12 +29,12 @@ def plot_mrays(summary, out):
     configs = list(dict.fromkeys(label(s) for s in summary))
     rate = {(scene_name(s), label(s)): s["mrays_per_second"] for s in summary}
     width = 0.8 / len(configs)
-    fig, ax = plt.subplots(figsize=(max(6, 1.2 * len(scenes) * max(1, len(configs) / 2)), 4.5))
+    fig, ax = plt.subplots(figsize=(min(16, max(6, 0.35 * len(scenes) * len(configs))), 5))
     for k, config in enumerate(configs):
         xs = [i + k * width for i in range(len(scenes))]
         ax.bar(xs, [rate.get((sc, config), 0) for sc in scenes], width, label=config)
     ax.set_xticks([i + 0.4 - width / 2 for i in range(len(scenes))])
-    ax.set_xticklabels(scenes, rotation=30, ha="right")
+    ax.set_xticklabels(scenes, rotation=45, ha="right", fontsize="small")
     ax.set_ylabel("Mrays/s (all ray kinds, render time)")
     ax.set_title("Throughput per scene, device and variant")
     ax.legend(fontsize="small")
@@ -51,18 +51,19 @@ def plot_kernels(summary, out):
     configs = list(seconds)
     kernels = sorted({k for c in configs for k in seconds[c]},
                      key=lambda k: -sum(seconds[c][k] for c in configs))
-    fig, ax = plt.subplots(figsize=(8, 1.2 + 0.6 * len(configs)))
+    fig, ax = plt.subplots(figsize=(9, 2.2 + 0.5 * len(configs)))
+    colours = plt.get_cmap("tab20").colors
     left = [0.0] * len(configs)
-    for kernel in kernels:
+    for n, kernel in enumerate(kernels):
         shares = []
         for c in configs:
             total = sum(seconds[c].values()) or 1.0
             shares.append(100.0 * seconds[c][kernel] / total)
-        ax.barh(configs, shares, left=left, label=kernel)
+        ax.barh(configs, shares, left=left, label=kernel, color=colours[n % len(colours)])
         left = [a + b for a, b in zip(left, shares)]
     ax.set_xlabel("% of device time (medians, summed over scenes)")
     ax.set_title("Where the device time goes")
-    ax.legend(fontsize="x-small", ncol=4, loc="upper center", bbox_to_anchor=(0.5, -0.25))
+    ax.legend(fontsize="x-small", ncol=1, loc="center left", bbox_to_anchor=(1.01, 0.5))
     fig.tight_layout()
     fig.savefig(os.path.join(out, "kernels.png"), dpi=110)
     plt.close(fig)
