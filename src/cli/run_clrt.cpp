@@ -7,6 +7,7 @@
 #include <chrono>
 #include <cstdlib>
 #include <filesystem>
+#include <future>
 #include <iostream>
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -94,19 +95,21 @@ void print_stats(const CliOptions& cli, const RenderStats& stats, const ImageOut
   if (cli.stats == StatsFormat::Json) out << stats.to_json().dump(2) << "\n";
 }
 
+// The devices and their programs, prepared while the scene loads.
+struct Devices {
+  std::vector<DeviceEntry> entries;
+  std::vector<PreparedDevice> prepared;
+  double seconds = 0;
+};
+
 int render_frames(const CliOptions& cli, Scene& scene, const FramePlan& frames,
                   const ImageOutput& output, RenderStats& stats, Progress& progress,
-                  DevicePreparation& preparation, Clock::time_point start) {
-  const RenderSetup setup = checked_render_setup(cli, scene, preparation.devices());
+                  Devices& devices, Clock::time_point start) {
+  const RenderSetup setup = checked_render_setup(cli, scene, devices.entries);
   if (!cli.quiet)
     for (const DeviceEntry& d : setup.devices) progress.message("device " + describe_device(d));
-  GeometryData geometry = built_geometry(scene, progress);
-  progress.phase("building the kernels");
-  const auto wait_start = Clock::now();
-  std::vector<PreparedDevice> prepared = preparation.take();
-  // What the command waited for OpenCL and the kernels, which started with the load.
-  const double kernel_wait = seconds_since(wait_start);
-  Renderer renderer(scene, std::move(geometry), setup, std::move(prepared), &progress);
+  Renderer renderer(scene, built_geometry(scene, progress), setup, std::move(devices.prepared),
+                    &progress);
   const PixelRect region = render_region(setup.options);
   const bool eight_bit = !holds_floats(output.format);
   std::unique_ptr<FsfAnimationWriter> animation;
@@ -137,7 +140,7 @@ int render_frames(const CliOptions& cli, Scene& scene, const FramePlan& frames,
   }
   if (animation) animation->finish();
   renderer.report(stats);
-  stats.build_seconds += kernel_wait;
+  stats.build_seconds += devices.seconds;
   stats.width = region.width;
   stats.height = region.height;
   stats.frames = frames.count();
@@ -197,24 +200,40 @@ int run_clrt(const CliOptions& cli) {
   }
   const FramePlan frames = resolve_frames(cli.animation);
   const ImageOutput output = resolve_image_output(cli, frames);
-  // OpenCL starts and the kernels build while the scene loads.
-  DevicePreparation preparation(cli.device);
   Progress progress(!cli.quiet);
   RenderStats stats;
   stats.scene = cli.scene;
   stats.version = clrt_version_string();
   progress.phase("loading " + cli.scene);
+  // The scene loads on a thread of its own while this one starts OpenCL and builds the kernels
+  // (LLVM, inside PoCL, keeps per-thread state: it stays on the main thread).
+  std::future<Scene> loading = std::async(std::launch::async, [&cli, &stats, start] {
+    Scene loaded = load_scene(cli.scene);
+    stats.load_seconds = seconds_since(start);
+    return loaded;
+  });
+  Devices devices;
+  std::exception_ptr device_error;
+  try {
+    const auto prepare_start = Clock::now();
+    devices.entries = select_devices(cli.device);
+    devices.prepared = prepare_devices(devices.entries);
+    devices.seconds = seconds_since(prepare_start);
+  } catch (...) {
+    device_error = std::current_exception();
+  }
   Scene scene;
   try {
-    scene = load_scene(cli.scene);
+    scene = loading.get();
   } catch (const SceneError& e) {
+    // A scene error is the user's to fix first, whatever else went wrong.
     progress.finish();
     std::cerr << e.what() << "\n";
     return 2;
   }
-  stats.load_seconds = seconds_since(start);
+  if (device_error) std::rethrow_exception(device_error);
   check_outputs_are_not_inputs(output, frames, scene);
-  return render_frames(cli, scene, frames, output, stats, progress, preparation, start);
+  return render_frames(cli, scene, frames, output, stats, progress, devices, start);
 }
 
 }  // namespace clrt

@@ -43,7 +43,7 @@ class Renderer {
   // device computes in its tables where they lie.
   Renderer(const Scene& scene, GeometryData geometry, const RenderSetup& setup,
            Progress* progress = nullptr);
-  // The same on devices whose contexts and programs are ready (DevicePreparation), in the
+  // The same on devices whose contexts and programs are ready (prepare_devices), in the
   // order of setup.devices.
   Renderer(const Scene& scene, GeometryData geometry, const RenderSetup& setup,
            std::vector<PreparedDevice> prepared, Progress* progress = nullptr);

@@ -23,7 +23,13 @@ foreach(target IN LISTS clrt_test_targets)
   add_test(NAME sanitized:${target}
            COMMAND ${CMAKE_COMMAND} -E env ${clrt_sanitized_dir}/${relative}/${target}
            WORKING_DIRECTORY ${PROJECT_SOURCE_DIR})
+  # A test may ask for more ASan options with the target property CLRT_ASAN_OPTIONS.
+  get_target_property(extra_asan_options ${target} CLRT_ASAN_OPTIONS)
+  set(asan_options detect_leaks=1:detect_stack_use_after_return=1)
+  if(extra_asan_options)
+    string(APPEND asan_options :${extra_asan_options})
+  endif()
   set_tests_properties(sanitized:${target} PROPERTIES
     FIXTURES_REQUIRED clrt_sanitized LABELS sanitized
-    ENVIRONMENT "POCL_CACHE_DIR=${clrt_sanitized_dir}/pocl-cache;ASAN_OPTIONS=detect_leaks=1:detect_stack_use_after_return=1;LSAN_OPTIONS=suppressions=${PROJECT_SOURCE_DIR}/tools/sanitizers/lsan.supp:print_suppressions=0;UBSAN_OPTIONS=print_stacktrace=1")
+    ENVIRONMENT "POCL_CACHE_DIR=${clrt_sanitized_dir}/pocl-cache;ASAN_OPTIONS=${asan_options};LSAN_OPTIONS=suppressions=${PROJECT_SOURCE_DIR}/tools/sanitizers/lsan.supp:print_suppressions=0;UBSAN_OPTIONS=print_stacktrace=1")
 endforeach()
