@@ -24,6 +24,12 @@ def scene_name(entry):
     return os.path.basename(entry["scene"])
 
 
+def save(fig, out, name):
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, name), dpi=110)
+    plt.close(fig)
+
+
 def plot_mrays(summary, out):
     scenes = list(dict.fromkeys(scene_name(s) for s in summary))
     configs = list(dict.fromkeys(label(s) for s in summary))
@@ -38,9 +44,7 @@ def plot_mrays(summary, out):
     ax.set_ylabel("Mrays/s (all ray kinds, render time)")
     ax.set_title("Throughput per scene, device and variant")
     ax.legend(fontsize="small")
-    fig.tight_layout()
-    fig.savefig(os.path.join(out, "mrays.png"), dpi=110)
-    plt.close(fig)
+    save(fig, out, "mrays.png")
 
 
 def plot_kernels(summary, out):
@@ -64,9 +68,7 @@ def plot_kernels(summary, out):
     ax.set_xlabel("% of device time (medians, summed over scenes)")
     ax.set_title("Where the device time goes")
     ax.legend(fontsize="x-small", ncol=1, loc="center left", bbox_to_anchor=(1.01, 0.5))
-    fig.tight_layout()
-    fig.savefig(os.path.join(out, "kernels.png"), dpi=110)
-    plt.close(fig)
+    save(fig, out, "kernels.png")
 
 
 def plot_wavefront(summary, out):
@@ -87,9 +89,7 @@ def plot_wavefront(summary, out):
     ax.set_ylabel("Mrays/s")
     ax.set_title("Wavefront size sweep")
     ax.legend(fontsize="x-small")
-    fig.tight_layout()
-    fig.savefig(os.path.join(out, "wavefront.png"), dpi=110)
-    plt.close(fig)
+    save(fig, out, "wavefront.png")
 
 
 def main():
