@@ -1,6 +1,10 @@
 #include "device/device_context.hpp"
 
+#include <optional>
 #include <sstream>
+#include <vector>
+
+#include "device/program_cache.hpp"
 
 namespace clrt {
 
@@ -28,15 +32,55 @@ DeviceContext::DeviceContext(const DeviceEntry& entry, const compute::context& c
 
 DeviceContext DeviceContext::lane() const { return DeviceContext(entry_, context_); }
 
+namespace {
+
+// Everything a compiled binary depends on besides the driver's own state.
+std::string program_identity(const compute::device& device, const std::string& source,
+                             const std::string& options) {
+  const compute::platform platform = device.platform();
+  return platform.name() + "\n" + platform.version() + "\n" + device.name() + "\n" +
+         device.version() + "\n" + device.driver_version() + "\n" + options + "\n" + source;
+}
+
+// The cached binary, built; none if there is none or the driver refuses it (then it is dropped).
+std::optional<compute::program> build_cached(const ProgramCache& cache,
+                                             const compute::context& context,
+                                             const compute::device& device,
+                                             const std::string& options) {
+  const std::optional<std::string> binary = cache.load();
+  if (!binary) return std::nullopt;
+  try {
+    compute::program program = compute::program::create_with_binary(
+        reinterpret_cast<const unsigned char*>(binary->data()), binary->size(), context);
+    if (clBuildProgram(program.get(), 1, &device.get(), options.c_str(), nullptr, nullptr) ==
+        CL_SUCCESS)
+      return program;
+  } catch (const compute::opencl_error&) {
+  }
+  cache.forget();
+  return std::nullopt;
+}
+
+}  // namespace
+
 compute::program DeviceContext::build(const std::string& source, const std::string& options) const {
-  compute::program program = compute::program::create_with_source(source, context_);
   const std::string all_options = std::string(kProgramOptions) + (options.empty() ? "" : " " + options);
+  std::optional<ProgramCache> cache;
+  if (const auto folder = ProgramCache::folder_from_environment())
+    cache.emplace(*folder, program_identity(entry_.device, source, all_options));
+  if (cache)
+    if (auto program = build_cached(*cache, context_, entry_.device, all_options)) return *program;
+  compute::program program = compute::program::create_with_source(source, context_);
   const cl_int status = clBuildProgram(program.get(), 1, &entry_.device.get(), all_options.c_str(),
                                        nullptr, nullptr);
   if (status != CL_SUCCESS) {
     throw DeviceError("kernel build failed on " + name() + " (" +
                       compute::opencl_error::to_string(status) + "); build log:\n" +
                       program.build_log());
+  }
+  if (cache) {
+    const std::vector<unsigned char> binary = program.binary();
+    cache->store(std::string(binary.begin(), binary.end()));
   }
   return program;
 }

@@ -1,8 +1,9 @@
 // The clrt executable gives the same bytes for the same scene and seed whatever the run: twice
-// over, with other --wavefront sizes (including one small enough that waves restart), on one
-// PoCL thread, on two devices splitting the pixels, with another local size, with one or three waves in flight, with the megakernel,
-// and the same as clrt::render() in this process. PFM output holds the unclamped
-// floats, so equal files mean bit-identical renders.
+// over, with the program built from source rather than taken from clrt's cache, with other
+// --wavefront sizes (including one small enough that waves restart), on one PoCL thread, on two
+// devices splitting the pixels, with another local size, with one or three waves in flight, with
+// the megakernel, and the same as clrt::render() in this process. PFM output holds the
+// unclamped floats, so equal files mean bit-identical renders.
 #include <catch2/catch.hpp>
 
 #include <regex>
@@ -25,6 +26,7 @@ struct Run {
 
 const std::vector<Run> kRuns = {
     {"a second run", "", ""},
+    {"a program built from source, not from clrt's cache", "", "CLRT_CACHE_DIR="},
     {"--wavefront 1024", "--wavefront 1024", ""},
     {"--wavefront 4096", "--wavefront 4096", ""},
     {"one PoCL thread", "", "POCL_MAX_PTHREAD_COUNT=1"},
