@@ -2,6 +2,7 @@
 // Exit codes: 0 success, 1 runtime failure (device, kernel build, output), 2 usage or scene error.
 #include <iostream>
 
+#include "cli/heap_policy.hpp"
 #include "cli/options.hpp"
 #include "cli/run_clrt.hpp"
 #include "image/image.hpp"
@@ -10,6 +11,7 @@
 #include "render/usage_error.hpp"
 
 int main(int argc, char** argv) {
+  clrt::return_large_blocks_when_freed();
   clrt::remove_temporaries_on_signal();
   const clrt::ParseResult parsed = clrt::parse_command_line(argc, argv);
   if (parsed.exit_code) return *parsed.exit_code;

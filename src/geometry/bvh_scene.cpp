@@ -10,13 +10,24 @@
 namespace clrt {
 namespace {
 
-// The bottom levels of all meshes, built on every core (large scenes have many meshes), each
-// mesh's per-triangle rows written in its leaf order.
-std::vector<BvhTree> build_mesh_bvhs(const std::vector<TriangleSource>& sources, GeometryData& geometry) {
+// The bottom levels of all meshes, built on every core (large scenes have many meshes), then
+// each mesh's per-triangle rows written in its leaf order. The rows' tables are made only once
+// the trees stand, so that they are not resident beside the builders' scratch (the peak of a
+// large mesh's build).
+std::vector<BvhTree> build_mesh_bvhs(const std::vector<TriangleSource>& sources, GeometryData& geometry,
+                                     const std::function<void(std::size_t)>& rows_written) {
   std::vector<BvhTree> trees(sources.size());
   parallel_for(trees.size(), 1, [&](std::size_t m) {
     trees[m] = build_bvh(triangle_boxes(sources[m]), BvhBuildSettings{});
+  });
+  std::size_t triangles = 0;
+  for (const TriangleSource& source : sources) triangles += source.size();
+  geometry.triangle_normals.resize(triangles);
+  geometry.triangle_materials.resize(triangles);
+  geometry.triangle_source.resize(triangles);
+  parallel_for(trees.size(), 1, [&](std::size_t m) {
     write_triangle_rows(sources[m], trees[m].order, geometry.meshes[m].first_triangle, geometry);
+    if (rows_written) rows_written(m);
   });
   return trees;
 }
@@ -47,9 +58,10 @@ std::vector<T> in_order(const std::vector<T>& items, const std::vector<std::uint
 
 }  // namespace
 
-void build_scene_bvh(const Scene& scene, const std::vector<TriangleSource>& sources, GeometryData& out) {
+void build_scene_bvh(const Scene& scene, const std::vector<TriangleSource>& sources, GeometryData& out,
+                     const std::function<void(std::size_t)>& rows_written) {
   const auto start = std::chrono::steady_clock::now();
-  const std::vector<BvhTree> mesh_trees = build_mesh_bvhs(sources, out);
+  const std::vector<BvhTree> mesh_trees = build_mesh_bvhs(sources, out, rows_written);
 
   const TopItems items = top_items(scene, out, mesh_trees);
   BvhBuildSettings top_settings;

@@ -2,6 +2,8 @@
 // and a top level over every instance except the planes.
 #pragma once
 
+#include <cstddef>
+#include <functional>
 #include <vector>
 
 #include "geometry/geometry_data.hpp"
@@ -10,9 +12,12 @@
 namespace clrt {
 
 // Builds the BVH of `out`, whose instance and mesh tables are filled (mesh m's triangles read
-// from sources[m]), whose per-triangle tables are sized and whose nodes are empty: reorders the
-// non-plane instances into leaf order, writes each mesh's per-triangle rows in its leaf order,
-// fills `nodes`, every Mesh.root_node and `build_seconds`.
-void build_scene_bvh(const Scene& scene, const std::vector<TriangleSource>& sources, GeometryData& out);
+// from sources[m]) and whose per-triangle tables and nodes are empty: reorders the non-plane
+// instances into leaf order, sizes the per-triangle tables and writes each mesh's rows in its
+// leaf order, fills `nodes`, every Mesh.root_node and `build_seconds`. `rows_written(m)`, if given, is called
+// once mesh m's per-triangle rows are written (from any thread): from then on the build reads
+// only that mesh's positions and corners.
+void build_scene_bvh(const Scene& scene, const std::vector<TriangleSource>& sources, GeometryData& out,
+                     const std::function<void(std::size_t)>& rows_written = {});
 
 }  // namespace clrt

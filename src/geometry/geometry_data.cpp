@@ -1,6 +1,7 @@
 #include "geometry/geometry_data.hpp"
 
 #include <cstdint>
+#include <functional>
 #include <stdexcept>
 
 #include "geometry/bvh_scene.hpp"
@@ -24,14 +25,7 @@ void append_instances(const Scene& scene, bool planes, GeometryData& out) {
   }
 }
 
-}  // namespace
-
-std::size_t GeometryData::device_bytes() const {
-  return bytes(instances) + bytes(meshes) + bytes(triangle_normals) + bytes(triangle_materials) +
-         bytes(nodes);
-}
-
-GeometryData build_geometry(const Scene& scene) {
+GeometryData build_tables(const Scene& scene, const std::function<void(std::size_t)>& rows_written) {
   GeometryData out;
   append_instances(scene, true, out);
   out.plane_count = static_cast<dev::u32>(out.instances.size());
@@ -48,10 +42,27 @@ GeometryData build_geometry(const Scene& scene) {
     triangles += source.size();
     if (triangles > UINT32_MAX) throw std::length_error("the scene has more than 2^32 - 1 triangles");
   }
-  out.triangle_normals.resize(triangles);
-  out.triangle_materials.resize(triangles);
-  out.triangle_source.resize(triangles);
-  build_scene_bvh(scene, sources, out);
+  build_scene_bvh(scene, sources, out, rows_written);
+  return out;
+}
+
+}  // namespace
+
+std::size_t GeometryData::device_bytes() const {
+  return bytes(instances) + bytes(meshes) + bytes(triangle_normals) + bytes(triangle_materials) +
+         bytes(nodes);
+}
+
+GeometryData build_geometry(const Scene& scene) { return build_tables(scene, {}); }
+
+GeometryData build_geometry_releasing_meshes(Scene& scene) {
+  GeometryData out = build_tables(scene, [&scene](std::size_t m) {
+    if (m >= scene.meshes.size()) return;  // the loose triangles' mesh
+    MeshData& mesh = scene.meshes[m];
+    std::vector<Vec3>().swap(mesh.normals);
+    std::vector<std::uint32_t>().swap(mesh.corner_normals);
+  });
+  release_mesh_data(scene);
   return out;
 }
 

@@ -37,6 +37,12 @@ struct GeometryData {
 
 GeometryData build_geometry(const Scene& scene);
 
+// The same, freeing the data of `scene`'s meshes as the build is done with it: each mesh's normals
+// once its per-triangle rows hold them (before the BVH table, the build's largest allocation, is
+// written), the rest at the end (release_mesh_data). For a 1M-triangle mesh with normals the
+// build's peak is 24 MB lower.
+GeometryData build_geometry_releasing_meshes(Scene& scene);
+
 // Frees the positions, normals and corners of `scene`'s meshes (each keeps its path): once
 // build_geometry has run, its BVH table and per-triangle tables hold all the device needs, and
 // nothing reads the meshes again.

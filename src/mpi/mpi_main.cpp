@@ -8,6 +8,7 @@
 #include <iostream>
 #include <optional>
 
+#include "cli/heap_policy.hpp"
 #include "cli/options.hpp"
 #include "cli/run_clrt.hpp"
 #include "image/interrupt_cleanup.hpp"
@@ -134,6 +135,7 @@ int run(const mpi::Session& session, const CliOptions& cli, const mpi::TileSize&
 }  // namespace
 
 int main(int argc, char** argv) {
+  clrt::return_large_blocks_when_freed();
   clrt::remove_temporaries_on_signal();
   clrt::mpi::Session session(argc, argv);
   std::vector<std::string> args(argv + 1, argv + argc);

@@ -146,6 +146,9 @@ MeshData load_obj_mesh(const std::string& path, const FileSource& files) {
   for (std::size_t i = 0; i < chunks.size(); ++i)
     if (bad[i]) fail_at_corner(path, slices[i], starts.lines[i], *bad[i], starts.total_elements);
   if (starts.total_corners == 0) throw MeshError(path, "the mesh has no triangles");
+  // Everything is parsed and checked: the file's pages go before gather holds the slices' tables
+  // and the mesh's side by side (the peak of loading a large mesh).
+  file.reset();
 
   MeshData mesh;
   mesh.path = path;

@@ -514,3 +514,33 @@ TEST_CASE("once the geometry is built the meshes' data can be freed", "[bvh]") {
   CHECK(m.corner_normals.capacity() == 0);
   CHECK(before.triangle_count() == 6 * 8 * 2);
 }
+
+TEST_CASE("a build that frees the meshes as it goes makes the same tables", "[bvh]") {
+  Scene scene;
+  scene.meshes.push_back(ball_mesh(6, 8, true));   // with normals: freed after the rows
+  scene.meshes.push_back(ball_mesh(5, 7, false));  // without
+  for (int m = 0; m < 2; ++m) {
+    scene.meshes[static_cast<std::size_t>(m)].path = "ball" + std::to_string(m) + ".obj";
+    scene.instances.push_back(place_instance(ShapeKind::Mesh, Mat4::translate({3.0 * m, 0, 0})));
+    scene.instances.back().mesh = m;
+  }
+  scene.triangles.push_back({{0, 0, 5}, {1, 0, 5}, {0, 1, 5}, 0});
+  const GeometryData kept = build_geometry(scene);
+  const GeometryData freed = build_geometry_releasing_meshes(scene);
+  const auto same_bytes = [](const auto& a, const auto& b) {
+    return a.size() == b.size() && std::memcmp(a.data(), b.data(), sizeof(a[0]) * a.size()) == 0;
+  };
+  CHECK(same_bytes(kept.nodes, freed.nodes));
+  CHECK(same_bytes(kept.triangle_normals, freed.triangle_normals));
+  CHECK(same_bytes(kept.triangle_materials, freed.triangle_materials));
+  CHECK(same_bytes(kept.instances, freed.instances));
+  CHECK(same_bytes(kept.meshes, freed.meshes));
+  CHECK(kept.triangle_source == freed.triangle_source);
+  for (const MeshData& m : scene.meshes) {
+    CHECK(m.path.rfind("ball", 0) == 0);
+    CHECK(m.positions.capacity() == 0);
+    CHECK(m.normals.capacity() == 0);
+    CHECK(m.corner_normals.capacity() == 0);
+  }
+  CHECK(scene.triangles.size() == 1);
+}

@@ -1,6 +1,7 @@
 #include "clrt_tracer.hpp"
 
 #include <chrono>
+#include <utility>
 
 #include "device/device_tuning.hpp"
 #include "device/transfer.hpp"
@@ -21,9 +22,10 @@ dev::RenderParams tracing_params() {
 }  // namespace
 
 ClrtTracer::ClrtTracer(DeviceContext& device, const compute::program& program,
-                       const GeometryData& geometry)
+                       GeometryData geometry)
     : device_(device),
-      geometry_(device, geometry),
+      tables_(std::move(geometry)),
+      geometry_(device, tables_),
       params_(upload(device, std::vector<dev::RenderParams>{tracing_params()}, "render parameters")),
       intersect_(program),
       shadow_(program),

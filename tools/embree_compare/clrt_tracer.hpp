@@ -23,8 +23,9 @@ struct ClrtBatch {
 
 class ClrtTracer {
  public:
-  // `program` is the renderer's program (renderer_program_source()) built on `device`.
-  ClrtTracer(DeviceContext& device, const compute::program& program, const GeometryData& geometry);
+  // `program` is the renderer's program (renderer_program_source()) built on `device`. The tracer
+  // keeps `geometry`: a CPU device reads its tables where they lie, for as long as the tracer lives.
+  ClrtTracer(DeviceContext& device, const compute::program& program, GeometryData geometry);
 
   // For scene_closest_hit of every ray (intersect.cl).
   ClrtBatch closest_batch(const RaySet& set);
@@ -39,6 +40,7 @@ class ClrtTracer {
 
  private:
   DeviceContext& device_;
+  GeometryData tables_;
   DeviceGeometry geometry_;
   Global<const dev::RenderParams> params_;
   TypedKernel<IntersectArgs> intersect_;

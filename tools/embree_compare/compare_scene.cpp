@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <functional>
+#include <utility>
 
 #include "agreement.hpp"
 #include "clrt_tracer.hpp"
@@ -132,9 +133,9 @@ SceneResult compare_scene(const std::string& path, DeviceContext& device,
     std::fprintf(stderr, "  skipped: Embree gets no %s here\n", result.skipped.c_str());
     return result;
   }
-  const GeometryData geometry = build_geometry(scene);
+  GeometryData geometry = build_geometry(scene);
   result.clrt_build_seconds = geometry.build_seconds;
-  ClrtTracer clrt(device, program, geometry);
+  ClrtTracer clrt(device, program, std::move(geometry));
   const EmbreeScene embree(scene, options.threads, options.quality, options.flags);
   result.embree_build_seconds = embree.build_seconds();
   std::fprintf(stderr, "  %s; build: clrt %.3f s, Embree %.3f s\n", result.primitives.c_str(),
