@@ -75,7 +75,7 @@ void Profiler::settle() {
   for (const Timed& t : timed_) {
     const auto start = t.event.get_profiling_info<cl_ulong>(CL_PROFILING_COMMAND_START);
     const auto end = t.event.get_profiling_info<cl_ulong>(CL_PROFILING_COMMAND_END);
-    if (timeline_) timeline_->add(start, end);
+    if (timeline_) timeline_->add(start, end, t.kernel);
     const double seconds = static_cast<double>(end - start) * 1e-9;
     KernelStats& k = kernels_[t.kernel];
     ++k.launches;

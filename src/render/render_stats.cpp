@@ -55,6 +55,7 @@ void RenderStats::merge(const RenderStats& o) {
   for (const auto& [name, k] : o.kernels) {
     kernels[name].launches += k.launches;
     kernels[name].device_seconds += k.device_seconds;
+    kernels[name].share_seconds += k.share_seconds;
   }
   waves += o.waves;
   wave_restarts += o.wave_restarts;
@@ -101,10 +102,11 @@ std::string RenderStats::to_text() const {
           << std::setw(10) << passes[i].shadow_rays << std::setw(11) << passes[i].max_queue
           << std::setw(10) << passes[i].device_seconds << "\n";
   }
-  out << "kernels:       name                launches  device s\n";
+  out << "kernels:       name                launches  device s   share s\n";
   for (const auto& [name, k] : kernels)
     out << "               " << std::left << std::setw(20) << name << std::right << std::setw(8)
-        << k.launches << std::setw(10) << k.device_seconds << "\n";
+        << k.launches << std::setw(10) << k.device_seconds << std::setw(10) << k.share_seconds
+        << "\n";
   return out.str();
 }
 
@@ -155,7 +157,9 @@ nlohmann::json RenderStats::to_json() const {
                            {"device_seconds", p.device_seconds}});
   j["kernels"] = json::object();
   for (const auto& [name, k] : kernels)
-    j["kernels"][name] = {{"launches", k.launches}, {"device_seconds", k.device_seconds}};
+    j["kernels"][name] = {{"launches", k.launches},
+                          {"device_seconds", k.device_seconds},
+                          {"share_seconds", k.share_seconds}};
   return j;
 }
 

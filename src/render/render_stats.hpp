@@ -32,7 +32,10 @@ struct PassStats {
 
 struct KernelStats {
   std::uint64_t launches = 0;
-  double device_seconds = 0;
+  double device_seconds = 0;  // the sum of its launches' intervals
+  // Its share of the device's busy time: where kernels of several lanes ran at once, each had
+  // an equal part of that time (BusyTimeline). The shares add up to the busy time.
+  double share_seconds = 0;
 };
 
 // "camera", "reflection", "refraction", "shadow": CLRT_RAY_* in order.

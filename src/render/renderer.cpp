@@ -240,7 +240,9 @@ void Renderer::report(RenderStats& stats) {
       own.device_bytes += lane.integrator->device_bytes();
     }
     own.devices.push_back(w.report);
-    own.devices.back().busy_seconds = w.timeline->take_busy_seconds();
+    const DeviceTime time = w.timeline->take();
+    own.devices.back().busy_seconds = time.busy_seconds;
+    for (const auto& [name, seconds] : time.kernel_share_seconds) own.kernels[name].share_seconds += seconds;
   }
   stats.merge(own);
   stats.render_seconds += render_seconds_ + seconds_since(start);

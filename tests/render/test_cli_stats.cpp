@@ -54,6 +54,23 @@ TEST_CASE("the JSON statistics count rays by kind, passes and kernels", "[cli][s
   CHECK(pass_shadows == shadow);
 }
 
+TEST_CASE("the kernels' shares add up to the busy time and their intervals to more",
+          "[cli][stats]") {
+  for (const char* lanes : {" --lanes 1", " --lanes 3 --wavefront 1024"}) {
+    INFO(lanes);
+    const nlohmann::json stats = json_stats(lanes);
+    double shares = 0, intervals = 0;
+    for (const auto& [name, k] : stats["kernels"].items()) {
+      CHECK(k["share_seconds"].get<double>() <= k["device_seconds"].get<double>() * (1 + 1e-9));
+      shares += k["share_seconds"].get<double>();
+      intervals += k["device_seconds"].get<double>();
+    }
+    const double busy = stats["devices"][0]["busy_seconds"];
+    CHECK(shares == Approx(busy).epsilon(1e-6));
+    CHECK(intervals >= busy * (1 - 1e-6));
+  }
+}
+
 TEST_CASE("the megakernel reports the wavefront's rays by kind", "[cli][stats]") {
   const nlohmann::json wavefront = json_stats("");
   const nlohmann::json megakernel = json_stats(" --integrator megakernel");

@@ -2,7 +2,7 @@
 """Plots of a clrt-experiment run: python3 plot_experiment.py RESULTS.json OUT_DIR
 
 mrays.png      Mrays/s per scene, one bar per device and variant (medians over repeats)
-kernels.png    each kernel's share of the device time, per device and variant (all scenes)
+kernels.png    each kernel's share of the device's busy time, per device and variant (all scenes)
 wavefront.png  Mrays/s against the wavefront size, when the experiment swept it
 """
 import json
@@ -65,7 +65,7 @@ def plot_kernels(summary, out):
             shares.append(100.0 * seconds[c][kernel] / total)
         ax.barh(configs, shares, left=left, label=kernel, color=colours[n % len(colours)])
         left = [a + b for a, b in zip(left, shares)]
-    ax.set_xlabel("% of device time (medians, summed over scenes)")
+    ax.set_xlabel("% of the device's busy time (medians, summed over scenes)")
     ax.set_title("Where the device time goes")
     ax.legend(fontsize="x-small", ncol=1, loc="center left", bbox_to_anchor=(1.01, 0.5))
     save(fig, out, "kernels.png")

@@ -100,7 +100,7 @@ nlohmann::json summarize(const nlohmann::json& runs) {
       std::vector<double> v;
       for (const nlohmann::json* r : g)
         if (succeeded(*r) && (*r)["kernels"].contains(name))
-          v.push_back((*r)["kernels"][name]["device_seconds"].get<double>());
+          v.push_back((*r)["kernels"][name]["share_seconds"].get<double>());
       s["kernels"][name] = median(v);
     }
     out.push_back(s);
@@ -185,7 +185,8 @@ std::string markdown_report(const nlohmann::json& results) {
   std::set<std::string> kernels;
   for (const nlohmann::json& s : summary)
     for (const auto& [name, seconds] : s["kernels"].items()) kernels.insert(name);
-  out << "\nDevice seconds per kernel (medians):\n\n| scene | device | variant |";
+  out << "\nEach kernel's share of the device's busy seconds (medians; where lanes ran kernels at "
+         "once, each had an equal part of that time):\n\n| scene | device | variant |";
   for (const std::string& k : kernels) out << " " << k << " |";
   out << "\n|---|---|---|";
   for (std::size_t k = 0; k < kernels.size(); ++k) out << "---:|";
