@@ -5,7 +5,6 @@
 #include <cstdint>
 #include <cstdlib>
 #include <fstream>
-#include <iterator>
 #include <system_error>
 
 namespace clrt {
@@ -52,12 +51,17 @@ ProgramCache::ProgramCache(std::filesystem::path folder, const std::string& iden
       check_(std::string(kMagic) + hex(fnv1a(identity, 0x84222325cbf29ce4ull)) + "\n") {}
 
 std::optional<std::string> ProgramCache::load() const {
-  std::ifstream in(file_, std::ios::binary);
+  std::ifstream in(file_, std::ios::binary | std::ios::ate);
   if (!in) return std::nullopt;
-  std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (bytes.size() <= check_.size() || bytes.compare(0, check_.size(), check_) != 0)
+  const std::streamoff size = in.tellg();
+  if (size <= static_cast<std::streamoff>(check_.size())) return std::nullopt;
+  std::string header(check_.size(), '\0');
+  in.seekg(0);
+  if (!in.read(header.data(), static_cast<std::streamsize>(header.size())) || header != check_)
     return std::nullopt;
-  return bytes.substr(check_.size());
+  std::string binary(static_cast<std::size_t>(size) - check_.size(), '\0');
+  if (!in.read(binary.data(), static_cast<std::streamsize>(binary.size()))) return std::nullopt;
+  return binary;
 }
 
 void ProgramCache::store(const std::string& binary) const {
