@@ -22,11 +22,35 @@ std::int32_t i32_at(const std::vector<std::uint8_t>& bytes, std::size_t at) {
   return out;
 }
 
+// What every OpenEXR header holds (the format's required attributes; OpenEXR writes them all).
+// Without them OpenEXR reads on with defaults, and a forged channel then made it ask for 1.8 GB.
+const char* const kRequired[] = {"channels",         "compression",        "dataWindow",
+                                 "displayWindow",    "lineOrder",          "pixelAspectRatio",
+                                 "screenWindowCenter", "screenWindowWidth"};
+
 // The data window and, for a tiled file, the tile size, read from the header's attributes:
 // name\0 type\0 size(int32) value, until an empty name.
 struct Window {
   std::int64_t width = 0, height = 0, tile_width = 0, tile_height = 0;
+  // The largest x and y sampling of any channel (a chlist entry: name\0, pixel type, pLinear
+  // and 3 reserved bytes, xSampling, ySampling).
+  std::int64_t x_sampling = 1, y_sampling = 1;
+  std::vector<std::string> names;
 };
+
+void read_samplings(const std::vector<std::uint8_t>& bytes, std::size_t at, std::size_t end, Window& w) {
+  while (at < end && bytes[at] != 0) {
+    const auto name_end = std::find(bytes.begin() + static_cast<std::ptrdiff_t>(at),
+                                    bytes.begin() + static_cast<std::ptrdiff_t>(end), 0);
+    at = static_cast<std::size_t>(name_end - bytes.begin()) + 1;
+    if (at + 16 > end) return;
+    const std::int32_t xs = i32_at(bytes, at + 8), ys = i32_at(bytes, at + 12);
+    w.x_sampling = xs < 1 ? 0 : std::max<std::int64_t>(w.x_sampling, xs);
+    w.y_sampling = ys < 1 ? 0 : std::max<std::int64_t>(w.y_sampling, ys);
+    if (xs < 1 || ys < 1) return;
+    at += 16;
+  }
+}
 
 std::optional<Window> read_window(const std::vector<std::uint8_t>& bytes, const std::string& path) {
   Window w;
@@ -42,7 +66,13 @@ std::optional<Window> read_window(const std::vector<std::uint8_t>& bytes, const 
   while (at < bytes.size()) {
     const std::optional<std::string> name = word();
     if (!name) return std::nullopt;
-    if (name->empty()) return found ? std::optional<Window>(w) : std::nullopt;
+    if (name->empty()) {
+      for (const char* required : kRequired)
+        if (std::find(w.names.begin(), w.names.end(), required) == w.names.end())
+          throw ImageError(path + ": not a readable OpenEXR file: its header has no '" + required +
+                           "' attribute");
+      return found ? std::optional<Window>(w) : std::nullopt;
+    }
     const std::optional<std::string> type = word();
     if (!type || at + 4 > bytes.size()) return std::nullopt;
     const std::int64_t size = i32_at(bytes, at);
@@ -50,7 +80,10 @@ std::optional<Window> read_window(const std::vector<std::uint8_t>& bytes, const 
     if (size < 0 || static_cast<std::uint64_t>(size) > bytes.size() - at)
       throw ImageError(path + ": not a readable OpenEXR file: its attribute '" + *name +
                        "' declares " + std::to_string(size) + " bytes, more than the file has left");
-    if (*name == "dataWindow" && *type == "box2i" && size == 16) {
+    w.names.push_back(*name);
+    if (*name == "channels" && *type == "chlist") {
+      read_samplings(bytes, at, at + static_cast<std::size_t>(size), w);
+    } else if (*name == "dataWindow" && *type == "box2i" && size == 16) {
       w.width = std::int64_t{i32_at(bytes, at + 8)} - i32_at(bytes, at) + 1;
       w.height = std::int64_t{i32_at(bytes, at + 12)} - i32_at(bytes, at + 4) + 1;
       found = true;
@@ -68,6 +101,9 @@ std::optional<Window> read_window(const std::vector<std::uint8_t>& bytes, const 
 void check_exr_window(const std::vector<std::uint8_t>& bytes, const std::string& path) {
   const std::optional<Window> w = read_window(bytes, path);
   if (!w || w->width <= 0 || w->height <= 0) return;
+  if (w->x_sampling < 1 || w->y_sampling < 1 || w->x_sampling > w->width || w->y_sampling > w->height)
+    throw ImageError(path + ": not a readable OpenEXR file: a channel's sampling does not fit its " +
+                     std::to_string(w->width) + "x" + std::to_string(w->height) + " data window");
   if (w->width * w->height > kMostPixels)
     throw ImageError(path + ": the OpenEXR data window of " + std::to_string(w->width) + "x" +
                      std::to_string(w->height) + " pixels is larger than clrt reads");

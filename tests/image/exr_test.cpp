@@ -166,3 +166,31 @@ TEST_CASE("an EXR header that declares more than the file holds is refused befor
     CHECK_THROWS_WITH(clrt::read_exr(path), Contains(message));
   }
 }
+
+TEST_CASE("an EXR header without the required attributes, or with a forged sampling, is refused",
+          "[image][exr]") {
+  // fuzz_image_exr's 363-byte file: no dataWindow nor compression, and a channel whose y sampling
+  // reads 1919247474; OpenEXR read on with defaults and asked for 1.8 GB.
+  const std::string forged = std::string(CLRT_SOURCE_DIR) +
+                             "/tests/fuzz/regressions/fuzz_image_exr/channel-sampling-1919247474.exr";
+  CHECK_THROWS_WITH(clrt::read_exr(forged), Contains("has no 'compression' attribute"));
+
+  // A valid file whose first channel's y sampling is made 7, then 0: beyond its 3 lines, and
+  // below 1.
+  ScratchDir dir;
+  const std::string path = dir.file("sampled.exr");
+  clrt::write_image(path, FloatImage(4, 3, std::vector<float>(36, 0.5f)));
+  Bytes bytes = read_bytes(path);
+  const std::string text(bytes.begin(), bytes.end());
+  const std::size_t list = text.find("chlist");
+  REQUIRE(list != std::string::npos);
+  // chlist\0, the size, then the first channel: its name\0, type, pLinear and reserved, x, y.
+  const std::size_t first = list + std::strlen("chlist") + 1 + 4;
+  const std::size_t y_sampling = text.find('\0', first) + 1 + 4 + 4 + 4;
+  for (const std::int32_t sampling : {7, 0}) {
+    INFO(sampling);
+    std::memcpy(&bytes[y_sampling], &sampling, 4);
+    write_bytes(path, bytes);
+    CHECK_THROWS_WITH(clrt::read_exr(path), Contains("sampling does not fit its 4x3 data window"));
+  }
+}
