@@ -167,30 +167,42 @@ TEST_CASE("an EXR header that declares more than the file holds is refused befor
   }
 }
 
-TEST_CASE("an EXR header without the required attributes, or with a forged sampling, is refused",
+TEST_CASE("an EXR header OpenEXR would read past its sizes, or without what it requires, is refused",
           "[image][exr]") {
-  // fuzz_image_exr's 363-byte file: no dataWindow nor compression, and a channel whose y sampling
-  // reads 1919247474; OpenEXR read on with defaults and asked for 1.8 GB.
-  const std::string forged = std::string(CLRT_SOURCE_DIR) +
-                             "/tests/fuzz/regressions/fuzz_image_exr/channel-sampling-1919247474.exr";
-  CHECK_THROWS_WITH(clrt::read_exr(forged), Contains("has no 'compression' attribute"));
+  // fuzz_image_exr's files: a channel list that does not end where its size says, beside a
+  // channel whose y sampling reads 1919247474 (OpenEXR asked for 1.8 GB); a channel of pixel
+  // type 16777215 in a header cut short (1.9 GB).
+  const std::string found = std::string(CLRT_SOURCE_DIR) + "/tests/fuzz/regressions/fuzz_image_exr/";
+  CHECK_THROWS_WITH(clrt::read_exr(found + "channel-sampling-1919247474.exr"),
+                    Contains("'channels' does not end where its size says"));
+  CHECK_THROWS_WITH(clrt::read_exr(found + "channel-type-16777215.exr"),
+                    Contains("channel 'G' has no pixel type OpenEXR knows"));
 
-  // A valid file whose first channel's y sampling is made 7, then 0: beyond its 3 lines, and
-  // below 1.
+  // A valid file whose first channel's y sampling is made 7, then 0; then one whose
+  // compression attribute is renamed.
   ScratchDir dir;
   const std::string path = dir.file("sampled.exr");
   clrt::write_image(path, FloatImage(4, 3, std::vector<float>(36, 0.5f)));
-  Bytes bytes = read_bytes(path);
+  const Bytes valid = read_bytes(path);
+  Bytes bytes = valid;
   const std::string text(bytes.begin(), bytes.end());
   const std::size_t list = text.find("chlist");
   REQUIRE(list != std::string::npos);
   // chlist\0, the size, then the first channel: its name\0, type, pLinear and reserved, x, y.
   const std::size_t first = list + std::strlen("chlist") + 1 + 4;
   const std::size_t y_sampling = text.find('\0', first) + 1 + 4 + 4 + 4;
-  for (const std::int32_t sampling : {7, 0}) {
+  for (const auto& [sampling, message] :
+       {std::pair<std::int32_t, const char*>{7, "sampling does not fit its 4x3 data window"},
+        {0, "has a sampling below 1"}}) {
     INFO(sampling);
     std::memcpy(&bytes[y_sampling], &sampling, 4);
     write_bytes(path, bytes);
-    CHECK_THROWS_WITH(clrt::read_exr(path), Contains("sampling does not fit its 4x3 data window"));
+    CHECK_THROWS_WITH(clrt::read_exr(path), Contains(message));
   }
+  bytes = valid;
+  const std::size_t compression = text.find("compression");
+  REQUIRE(compression != std::string::npos);
+  bytes[compression + std::strlen("compression") - 1] = 'x';
+  write_bytes(path, bytes);
+  CHECK_THROWS_WITH(clrt::read_exr(path), Contains("its header has no 'compression' attribute"));
 }
