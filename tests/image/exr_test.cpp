@@ -149,8 +149,8 @@ TEST_CASE("an EXR header that declares more than the file holds is refused befor
                              "/tests/fuzz/regressions/fuzz_image_exr/attribute-size-1886220131.exr";
   CHECK_THROWS_WITH(clrt::read_exr(forged), Contains("declares 1886220131 bytes"));
 
-  // A small, valid file whose data window is made 20 million lines tall (its offset table alone
-  // would need 78126 chunks), then 200 million (more pixels than clrt reads).
+  // A small, valid file whose data window is made 65536 lines tall (its offset table alone
+  // would need 256 chunks), then 65537 and 200 million (beyond the side clrt reads).
   ScratchDir dir;
   const std::string path = dir.file("tall.exr");
   clrt::write_image(path, FloatImage(4, 3, std::vector<float>(36, 0.5f)));
@@ -159,7 +159,8 @@ TEST_CASE("an EXR header that declares more than the file holds is refused befor
   const std::size_t window = text.find("dataWindow");
   REQUIRE(window != std::string::npos);
   const std::size_t y_max = window + std::strlen("dataWindow") + 1 + std::strlen("box2i") + 1 + 4 + 12;
-  for (const auto& [lines, message] : {std::pair<std::int32_t, const char*>{20000000, "needs 78126 chunks"},
+  for (const auto& [lines, message] : {std::pair<std::int32_t, const char*>{65535, "needs 256 chunks"},
+                                       {65536, "larger than clrt reads"},
                                        {200000000, "larger than clrt reads"}}) {
     std::memcpy(&bytes[y_max], &lines, 4);
     write_bytes(path, bytes);
@@ -205,4 +206,13 @@ TEST_CASE("an EXR header OpenEXR would read past its sizes, or without what it r
   bytes[compression + std::strlen("compression") - 1] = 'x';
   write_bytes(path, bytes);
   CHECK_THROWS_WITH(clrt::read_exr(path), Contains("its header has no 'compression' attribute"));
+}
+
+TEST_CASE("an EXR line longer than clrt's longest side is refused before OpenEXR decodes it",
+          "[image][exr]") {
+  // fuzz_image_exr's 389-byte file: a ZIP data window 5963777 pixels wide, whose 16-line
+  // chunk made OpenEXR's decompressor ask for 1.1 GB.
+  const std::string wide = std::string(CLRT_SOURCE_DIR) +
+                           "/tests/fuzz/regressions/fuzz_image_exr/line-5963777-wide.exr";
+  CHECK_THROWS_WITH(clrt::read_exr(wide), Contains("5963777x2 pixels is larger than clrt reads"));
 }
