@@ -5,7 +5,7 @@
 // are errors, so a damaged placement chunk is never silently dropped.
 #include <png.h>
 
-#include <climits>
+#include <cstdint>
 #include <cstring>
 #include <new>
 
@@ -16,6 +16,10 @@
 
 namespace clrt {
 namespace {
+
+// As long a side and as many pixels as clrt renders (scene/limits.hpp), in any image it reads.
+constexpr png_uint_32 kMostSide = 65536;
+constexpr std::uint64_t kMostPixels = std::uint64_t{1} << 28;
 
 using image_detail::PngErrors;
 using image_detail::png_guarded;
@@ -102,7 +106,9 @@ class PngDecoder {
     const bool ok = png_guarded(png, [&] {
       png_set_read_fn(png, &input_, read_from_memory);
       png_set_crc_action(png, PNG_CRC_ERROR_QUIT, PNG_CRC_ERROR_QUIT);
-      png_set_user_limits(png, INT_MAX / 4, INT_MAX);  // what an Rgba8Image can index
+      // The sides clrt renders: a forged IHDR in a file of a few bytes would otherwise have the
+      // image allocated (and zeroed) at whatever size it names before any pixel is decoded.
+      png_set_user_limits(png, kMostSide, kMostSide);
       png_read_info(png, info);
       png_get_IHDR(png, info, &width_, &height_, &bit_depth_, &colour_type_, &interlace_, nullptr,
                    nullptr);
@@ -111,6 +117,9 @@ class PngDecoder {
       png_get_text(png, info, &texts, &text_count);
     });
     if (!ok) fail();
+    if (std::uint64_t{width_} * height_ > kMostPixels)
+      throw ImageError(path_ + ": the PNG's " + std::to_string(width_) + "x" +
+                       std::to_string(height_) + " pixels are more than clrt reads");
     for (int i = 0; i < text_count; ++i) {
       if (std::strcmp(texts[i].key, image_detail::kPngPlacementKey) != 0) continue;
       const std::string context =

@@ -1,4 +1,5 @@
 #include <algorithm>
+#include <tuple>
 #include <catch2/catch.hpp>
 #include <string>
 
@@ -224,4 +225,28 @@ TEST_CASE("a chunk longer than the file is refused before libpng allocates it", 
       std::string(CLRT_SOURCE_DIR) + "/tests/fuzz/regressions/fuzz_image_png/chunk-length-1347179589.png";
   CHECK_THROWS_WITH(clrt::read_png(path),
                     Contains("a chunk declares 1347179589 bytes, more than the file has left"));
+}
+
+TEST_CASE("a PNG larger than clrt renders is refused before its image is allocated",
+          "[image][png]") {
+  // IHDR rewritten (with its CRC) to a side beyond 65536 (libpng: "Invalid IHDR data", past the
+  // user limit), then to 20000 x 20000 (more pixels than 2^28): the file stays 3x2 pixels of
+  // data, so any allocation would be for nothing.
+  ScratchDir dir;
+  const std::string path = dir.file("forged.png");
+  clrt::write_image(path, Rgba8Image{3, 2, {Bytes(24, 255)}});
+  const Bytes valid = read_bytes(path);
+  for (const auto& [w, h, message] : {std::tuple<std::uint32_t, std::uint32_t, const char*>{
+                                          65537, 2, "Invalid IHDR data"},
+                                      {20000, 20000, "20000x20000 pixels are more than clrt reads"}}) {
+    INFO(w << "x" << h);
+    Bytes file = valid;
+    const Bytes size = concat({u32_be(w), u32_be(h)});
+    std::copy(size.begin(), size.end(), file.begin() + 16);  // after the signature, length, "IHDR"
+    const Bytes ihdr(file.begin() + 12, file.begin() + 29);  // type and 13 bytes of data
+    const Bytes crc = u32_be(png_crc(ihdr));
+    std::copy(crc.begin(), crc.end(), file.begin() + 29);
+    write_bytes(path, file);
+    CHECK_THROWS_WITH(clrt::read_png(path), Contains(message));
+  }
 }
