@@ -4,6 +4,6 @@
 
 namespace clrt {
 
-void return_large_blocks_when_freed() { mallopt(M_MMAP_THRESHOLD, 128 * 1024); }
+void return_large_blocks_when_freed() { mallopt(M_MMAP_THRESHOLD, 1024 * 1024); }
 
 }  // namespace clrt
