@@ -49,16 +49,19 @@ __kernel void megakernel(SCENE_PARAMS, __global const RenderParams* params,
     } else {
       const ShadePoint sp = shade_point(&ray, &hit, materials);
       c = ambient_colour(&sp, materials, params);
-      LightCursor cursor = light_cursor();
-      LightSample ls;
-      float3 term;
-      while (next_light_term(&sp, materials, lights, params, ray.path, &cursor, &ls, &term)) {
-        if (trace) {
-          const ShadowRay sr = shadow_ray_to(&sp, &ls, term, i, params->epsilon);
-          ++counts[CLRT_RAY_SHADOW];
-          c += xyz(shadow_visible(SCENE_ARGS, params->epsilon, &sr));
-        } else {
-          c += term;
+      for (uint l = 0; l < params->light_count; ++l) {
+        __global const Light* light = &lights[l];
+        for (uint j = 0; j < light->samples; ++j) {
+          LightSample ls;
+          const float3 term = light_term(&sp, materials, light, j, ray.path, &ls);
+          if (all(term == (float3)(0.0f))) continue;
+          if (trace) {
+            const ShadowRay sr = shadow_ray_to(&sp, &ls, term, i, params->epsilon);
+            ++counts[CLRT_RAY_SHADOW];
+            c += xyz(shadow_visible(SCENE_ARGS, params->epsilon, &sr));
+          } else {
+            c += term;
+          }
         }
       }
       if (trace && ray.depth < params->max_depth) {

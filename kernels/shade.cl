@@ -36,15 +36,19 @@ __kernel void shade(__global const RenderParams* params, __global const Material
   }
   const ShadePoint sp = shade_point(&ray, &hit, materials);
   float3 c = ambient_colour(&sp, materials, params);
-  LightCursor cursor = light_cursor();
-  LightSample ls;
-  float3 term;
-  while (next_light_term(&sp, materials, lights, params, ray.path, &cursor, &ls, &term)) {
-    if (trace) {
-      my_shadows[cursor.slot] = shadow_ray_to(&sp, &ls, term, i, params->epsilon);
-      my_shadow_flags[cursor.slot] = 1u;
-    } else {
-      c += term;
+  for (uint l = 0; l < params->light_count; ++l) {
+    __global const Light* light = &lights[l];
+    for (uint j = 0; j < light->samples; ++j) {
+      LightSample ls;
+      const float3 term = light_term(&sp, materials, light, j, ray.path, &ls);
+      if (all(term == (float3)(0.0f))) continue;
+      const uint slot = light->first_sample + j;
+      if (trace) {
+        my_shadows[slot] = shadow_ray_to(&sp, &ls, term, i, params->epsilon);
+        my_shadow_flags[slot] = 1u;
+      } else {
+        c += term;
+      }
     }
   }
   colour[i] = as_f4(c);

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The GPU check a maintainer runs on a machine with an OpenCL GPU (about ten minutes):
 #   1. builds clrt (tools/setup.sh) and lists the OpenCL devices;
-#   2. runs the kernel unit tests on the GPU (CLRT_TEST_DEVICE);
+#   2. runs the device tests on the GPU (CLRT_TEST_DEVICE): the kernel unit tests, the driver-fault
+#      reproducer and the same-bytes renders, as CTest runs them on Intel's runtime and Oclgrind;
 #   3. renders every scene of scenes/ (and ../shared/scenes/spd-ray/ when present) on the GPU
 #      and on PoCL and compares the images: identical bytes, or clrt-img diff's PSNR;
 #   4. measures primary-ray throughput through the intersect kernel alone (clrt-bench-bvh);
@@ -30,15 +31,18 @@ step "Devices"
 ./build/clrt --list-devices | tee -a "$summary"
 ./build/clrt --list-devices | grep -q . || fail "no OpenCL device"
 
-step "Kernel unit tests on $gpu"
-for t in build/tests/kernels/test_* build/tests/geometry/test_*; do
-  [[ -x $t ]] || continue
+step "Device tests on $gpu"
+# The programs CTest also runs on Intel's runtime and Oclgrind (build/device-tests.txt, written by
+# tests/CMakeLists.txt): kernel unit tests, the driver-fault reproducer, the same-bytes renders.
+while read -r t; do
+  [[ -x $t ]] || { fail "$t missing"; continue; }
   if CLRT_TEST_DEVICE=$gpu "$t" >"$out/$(basename "$t").log" 2>&1; then
     note "- $(basename "$t"): passed"
   else
     fail "$(basename "$t") (see $out/$(basename "$t").log)"
   fi
-done
+done <build/device-tests.txt
+grep -h "float3 arguments" "$out"/test_vector_calls.log | tee -a "$summary"
 
 step "Every scene on $gpu and on $cpu"
 note "| scene | $gpu s | $cpu s | images |"

@@ -2,6 +2,8 @@
 # Installs the Debian packages clrt needs (only those missing), then configures and builds a
 # Release tree in build/. Idempotent: with everything in place it only runs an incremental build.
 # Usage: bash tools/setup.sh            (as root, or with sudo available)
+#        bash tools/setup.sh --tests    also the OpenCL implementations the tests run on besides
+#                                       PoCL (tools/lib/install_test_devices.sh)
 set -euo pipefail
 
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
@@ -22,10 +24,19 @@ packages=(
   libopenmpi-dev openmpi-bin     # clrt-mpi: one image across the ranks of an MPI job (and mpirun for its tests)
 )
 
+with_tests=0
+case ${1:-} in
+  --tests) with_tests=1 ;;
+  "") ;;
+  *) echo "usage: bash tools/setup.sh [--tests]" >&2; exit 2 ;;
+esac
+
 source tools/lib/install_missing.sh
+source tools/lib/install_test_devices.sh
 install_missing "${packages[@]}"
 
 if [[ ! -f build/CMakeCache.txt ]]; then
   cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
 fi
 cmake --build build -j"$(nproc)"
+if ((with_tests)); then install_test_devices build; fi

@@ -2,6 +2,8 @@
  * once the search is over (normals and materials are only worth computing for the winner). */
 #ifndef CLRT_GEOMETRY_BVH_HIT_RECORD_H
 #define CLRT_GEOMETRY_BVH_HIT_RECORD_H
+
+#include "math/exact.h"
 #include "shared/bvh.h"
 #include "shared/ray.h"
 #include "shared/scene.h"
@@ -16,7 +18,7 @@ typedef struct HitRecord {
   float3 object_normal; /* canonical shapes but spheres: outward normal in object space */
 } HitRecord;
 
-inline HitRecord hit_record_none(float tmax) {
+CLRT_INLINE HitRecord hit_record_none(float tmax) {
   HitRecord r;
   r.t = tmax;
   r.instance = CLRT_NO_HIT;
@@ -26,16 +28,16 @@ inline HitRecord hit_record_none(float tmax) {
   return r;
 }
 
-inline float3 bvh_float3(f4 v) { return (float3)(v.x, v.y, v.z); }
+CLRT_INLINE float3 bvh_float3(f4 v) { return (float3)(v.x, v.y, v.z); }
 
 /* Object-space normal n of instance `inst` in world space; `fallback` when n cannot be
  * normalised (degenerate triangle or interpolated normals that cancel out). */
-inline float3 bvh_world_normal(__global const Instance* inst, float3 n, float3 fallback) {
-  return dot(n, n) > 0.0f ? instance_normal_to_world(inst, n) : fallback;
+CLRT_INLINE float3 bvh_world_normal(__global const Instance* inst, float3 n, float3 fallback) {
+  return dot3(n, n) > 0.0f ? instance_normal_to_world(inst, n) : fallback;
 }
 
 /* Vertex j of lane `lane` of a triangle packet. */
-inline float3 bvh_packet_vertex(__global const BvhTrianglePacket* p, int j, int lane) {
+CLRT_INLINE float3 bvh_packet_vertex(__global const BvhTrianglePacket* p, int j, int lane) {
   __global const float* v = (__global const float*)(p->v + 3 * j);
   return (float3)(v[lane], v[4 + lane], v[8 + lane]);
 }
@@ -44,7 +46,7 @@ inline float3 bvh_packet_vertex(__global const BvhTrianglePacket* p, int j, int 
  * normal is its hit point in object space (the sphere tests in world space leave none); a
  * triangle's vertices come from its packet, which the search has just read, rather than from
  * the triangle table. */
-inline void hit_record_resolve(const HitRecord* r, float3 o, float3 d, __global const Instance* instances,
+CLRT_INLINE void hit_record_resolve(const HitRecord* r, float3 o, float3 d, __global const Instance* instances,
                                __global const Mesh* meshes, __global const BvhBlock* bvh,
                                __global const TriangleNormals* triangle_normals,
                                __global const u32* triangle_materials, Hit* hit) {

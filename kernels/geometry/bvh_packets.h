@@ -2,6 +2,8 @@
  * one per float4 lane. */
 #ifndef CLRT_GEOMETRY_BVH_PACKETS_H
 #define CLRT_GEOMETRY_BVH_PACKETS_H
+
+#include "math/exact.h"
 #include "shared/bvh.h"
 #include "shared/ray.h"
 #include "geometry/bvh_hit_record.h"
@@ -10,7 +12,7 @@
 
 /* The lane of the nearest hit among `hit` (at least one), the first on a tie so that the result
  * depends on nothing but the data; *t_nearest is its t. */
-inline int bvh_nearest_lane(int4 hit, float4 t, float* t_nearest) {
+CLRT_INLINE int bvh_nearest_lane(int4 hit, float4 t, float* t_nearest) {
   const float4 masked = select((float4)(INFINITY), t, hit);
   const float nearest = min(min(masked.x, masked.y), min(masked.z, masked.w));
   const int4 at = isequal(masked, (float4)(nearest)) & hit;
@@ -18,10 +20,10 @@ inline int bvh_nearest_lane(int4 hit, float4 t, float* t_nearest) {
   return at.x ? 0 : (at.y ? 1 : (at.z ? 2 : 3));
 }
 
-inline bool bvh_any_lane(int4 hit) { return (hit.x | hit.y | hit.z | hit.w) != 0; }
+CLRT_INLINE bool bvh_any_lane(int4 hit) { return (hit.x | hit.y | hit.z | hit.w) != 0; }
 
 /* The triangles of `packet` in the frame of the ray's watertight test. */
-inline Triangle4 bvh_load_triangles(__global const BvhTrianglePacket* packet, const TriangleRay* r) {
+CLRT_INLINE Triangle4 bvh_load_triangles(__global const BvhTrianglePacket* packet, const TriangleRay* r) {
   Triangle4 p;
   for (int j = 0; j < 3; ++j) {
     p.x[j] = packet->v[3 * j + r->kx];
@@ -34,7 +36,7 @@ inline Triangle4 bvh_load_triangles(__global const BvhTrianglePacket* packet, co
 /* The `packets` triangle packets from `block` against the mesh's (object-space) ray; the nearest
  * hit in (tmin, best->t) goes into *best, as a hit of `instance` (CLRT_NO_HIT: of the instance
  * the packets name). `first_found` stops at the first packet with a hit. */
-inline bool bvh_test_triangles(__global const BvhBlock* bvh, int block, u32 packets, u32 instance,
+CLRT_INLINE bool bvh_test_triangles(__global const BvhBlock* bvh, int block, u32 packets, u32 instance,
                                const BvhRay* ray, float tmin, bool first_found, HitRecord* best) {
   if (!ray->tri.valid) return false;
   __global const BvhTrianglePacket* packet = (__global const BvhTrianglePacket*)(bvh + block);
@@ -62,11 +64,11 @@ inline bool bvh_test_triangles(__global const BvhBlock* bvh, int block, u32 pack
 /* Where the world ray o + t d meets the spheres of `p` with tmin < t < tmax: the entry, or the
  * exit for a ray that starts inside, as sphere_span and span_hit find it for the unit sphere
  * (the same formulas with the radius put in). */
-inline int4 sphere4_test(__global const BvhSpherePacket* p, float3 o, float3 d, float tmin,
+CLRT_INLINE int4 sphere4_test(__global const BvhSpherePacket* p, float3 o, float3 d, float tmin,
                          float tmax, float4* t) {
   const float4 ox = o.x - p->center_x, oy = o.y - p->center_y, oz = o.z - p->center_z;
   const float4 r2 = p->radius * p->radius;
-  const float a = dot(d, d);
+  const float a = dot3(d, d);
   const float4 b = ox * d.x + oy * d.y + oz * d.z;
   /* r^2 - |l|^2 for l the point of the line nearest the centre keeps its precision when the
    * origin is far from the sphere, unlike b^2 - a c. A zero d gives NaN: a miss. */
@@ -87,7 +89,7 @@ inline int4 sphere4_test(__global const BvhSpherePacket* p, float3 o, float3 d, 
 
 /* The `packets` sphere packets from `block` against the world ray; the nearest hit in
  * (tmin, best->t) goes into *best. `first_found` stops at the first packet with a hit. */
-inline bool bvh_test_spheres(__global const BvhBlock* bvh, int block, u32 packets, float3 o,
+CLRT_INLINE bool bvh_test_spheres(__global const BvhBlock* bvh, int block, u32 packets, float3 o,
                              float3 d, float tmin, bool first_found, HitRecord* best) {
   __global const BvhSpherePacket* packet = (__global const BvhSpherePacket*)(bvh + block);
   bool found = false;

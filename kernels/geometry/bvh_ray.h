@@ -20,21 +20,21 @@ typedef struct BvhRay {
 #if CLRT_BVH_WIDTH == 8
 #define bvh_store_lanes vstore8
 typedef ulong BvhMask;
-inline BvhMask bvh_lane_mask(int8 b) { return as_ulong(convert_uchar8(b)) & 0x0101010101010101ul; }
+CLRT_INLINE BvhMask bvh_lane_mask(int8 b) { return as_ulong(convert_uchar8(b)) & 0x0101010101010101ul; }
 #define bvh_load_lanes(p) vload8(0, p)
 #else
 #define bvh_store_lanes vstore4
 typedef uint BvhMask;
-inline BvhMask bvh_lane_mask(int4 b) { return as_uint(convert_uchar4(b)) & 0x01010101u; }
+CLRT_INLINE BvhMask bvh_lane_mask(int4 b) { return as_uint(convert_uchar4(b)) & 0x01010101u; }
 #define bvh_load_lanes(p) vload4(0, p)
 #endif
 
 /* The lowest lane of a non-zero mask. */
-inline int bvh_first_lane(BvhMask m) {
+CLRT_INLINE int bvh_first_lane(BvhMask m) {
   return (int)(8 * sizeof(BvhMask) - 1 - clz(m & (~m + 1))) >> 3;
 }
 
-inline BvhRay bvh_ray(float3 o, float3 d) {
+CLRT_INLINE BvhRay bvh_ray(float3 o, float3 d) {
   BvhRay r;
   r.o = o;
   r.d = d;
@@ -59,7 +59,7 @@ inline BvhRay bvh_ray(float3 o, float3 d) {
 /* Lane k set when the ray enters child box k within [tmin, tmax]; *t_enter holds the entry
  * distances. The near side of each slab is chosen by the ray's sign, so the empty lanes
  * (min = +inf, max = -inf) give near = +inf, far = -inf and are never entered. */
-inline BvhMask bvh_node_test(__global const BvhNode* node, const BvhRay* r, float tmin, float tmax,
+CLRT_INLINE BvhMask bvh_node_test(__global const BvhNode* node, const BvhRay* r, float tmin, float tmax,
                          BvhLanes* t_enter) {
   /* min_x, max_x, min_y, max_y, min_z, max_z are consecutive members of one type. */
   __global const BvhLanes* bounds = &node->min_x;

@@ -21,7 +21,7 @@ typedef struct BvhStack {
   int size;
 } BvhStack;
 
-inline BvhEntry bvh_entry(int ref, u32 count, float t) {
+CLRT_INLINE BvhEntry bvh_entry(int ref, u32 count, float t) {
   BvhEntry e;
   e.ref = ref;
   e.count = count;
@@ -29,14 +29,14 @@ inline BvhEntry bvh_entry(int ref, u32 count, float t) {
   return e;
 }
 
-inline int4 bvh_pack(int ref, u32 count, float t) { return (int4)(ref, (int)count, as_int(t), 0); }
+CLRT_INLINE int4 bvh_pack(int ref, u32 count, float t) { return (int4)(ref, (int)count, as_int(t), 0); }
 
-inline BvhEntry bvh_unpack(int4 v) { return bvh_entry(v.x, (u32)v.y, as_float(v.z)); }
+CLRT_INLINE BvhEntry bvh_unpack(int4 v) { return bvh_entry(v.x, (u32)v.y, as_float(v.z)); }
 
-inline void bvh_push(BvhStack* s, BvhEntry e) { s->entry[s->size++] = bvh_pack(e.ref, e.count, e.t); }
+CLRT_INLINE void bvh_push(BvhStack* s, BvhEntry e) { s->entry[s->size++] = bvh_pack(e.ref, e.count, e.t); }
 
 /* Pops the next entry the ray enters before t_limit into *e; false when none is left. */
-inline bool bvh_pop(BvhStack* s, float t_limit, BvhEntry* e) {
+CLRT_INLINE bool bvh_pop(BvhStack* s, float t_limit, BvhEntry* e) {
   while (s->size > 0) {
     const int4 top = s->entry[--s->size];
     if (as_float(top.z) < t_limit) {
@@ -50,21 +50,22 @@ inline bool bvh_pop(BvhStack* s, float t_limit, BvhEntry* e) {
 /* Starts loading a node that is about to be pushed: traversal is bound by memory latency, and
  * the loads of the nodes pushed now overlap with the work on the nearest child (20% more
  * incoherent rays per second on PoCL). */
-inline void bvh_prefetch(__global const BvhNode* node) {
-#ifdef __clang__
-  /* PoCL's prefetch() does nothing; clang's builtin emits the instruction. */
+CLRT_INLINE void bvh_prefetch(__global const BvhNode* node) {
+#ifdef CLRT_CLANG_PREFETCH
+  /* PoCL's prefetch() does nothing; Clang's builtin emits the instruction. The host asks for it
+   * on PoCL alone (src/device/device_context.cpp): other compilers refuse it. */
   for (uint b = 0; b < sizeof(BvhNode); b += 64) __builtin_prefetch((__global const char*)node + b);
 #else
   prefetch((__global const char*)node, sizeof(BvhNode));
 #endif
 }
 
-inline __global const BvhNode* bvh_node(__global const BvhBlock* table, int block) {
+CLRT_INLINE __global const BvhNode* bvh_node(__global const BvhBlock* table, int block) {
   return (__global const BvhNode*)(table + block);
 }
 
 /* Child k entered at t, as a stack entry; an inner node's loading is started. */
-inline int4 bvh_child(__global const BvhBlock* table, const int* child, const u32* count, int k, float t) {
+CLRT_INLINE int4 bvh_child(__global const BvhBlock* table, const int* child, const u32* count, int k, float t) {
   if (child[k] >= 0) bvh_prefetch(bvh_node(table, child[k]));
   return bvh_pack(child[k], count[k], t);
 }
@@ -73,7 +74,7 @@ inline int4 bvh_child(__global const BvhBlock* table, const int* child, const u3
  * becomes the first of them while the others are pushed. When `ordered`, that is the nearest
  * and the others are pushed so that they pop nearest first: closest-hit searches then find
  * near hits early and skip what lies behind them. False when the ray enters no child. */
-inline bool bvh_descend(BvhStack* s, __global const BvhBlock* table, const BvhRay* ray,
+CLRT_INLINE bool bvh_descend(BvhStack* s, __global const BvhBlock* table, const BvhRay* ray,
                         float tmin, float tmax, bool ordered, BvhEntry* e) {
   __global const BvhNode* node = bvh_node(table, e->ref);
   /* The references are read before the box test, not once it has chosen a lane: their cache

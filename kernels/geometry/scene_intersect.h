@@ -32,7 +32,7 @@
 
 /* Canonical shape instance `index` against the world ray; updates *best on a hit in
  * (tmin, best->t). */
-inline bool bvh_test_shape(__global const Instance* instances, u32 index, float3 o, float3 d,
+CLRT_INLINE bool bvh_test_shape(__global const Instance* instances, u32 index, float3 o, float3 d,
                            float tmin, HitRecord* best) {
   __global const Instance* inst = instances + index;
   float3 oo, od, n;
@@ -45,8 +45,12 @@ inline bool bvh_test_shape(__global const Instance* instances, u32 index, float3
 }
 
 /* The search behind both queries: hits in (tmin, best->t) go into *best; `any` stops at the
- * first one. Returns whether anything was hit. */
-inline bool scene_search(SCENE_PARAMS, float3 o, float3 d, float tmin, bool any, HitRecord* best) {
+ * first one. Returns whether anything was hit. The one function a compiler may keep out of
+ * line (inlined into every kernel it doubles PoCL's cold build), so the ray crosses the call as
+ * float4s, never float3s. */
+CLRT_CALLABLE bool scene_search(SCENE_PARAMS, float4 origin, float4 direction, float tmin, bool any,
+                                HitRecord* best) {
+  const float3 o = origin.xyz, d = direction.xyz;
   for (u32 p = 0; p < plane_count; ++p)
     if (bvh_test_shape(instances, p, o, d, tmin, best) && any) return true;
   if (instance_count == plane_count) return best->instance != CLRT_NO_HIT;
@@ -94,18 +98,19 @@ inline bool scene_search(SCENE_PARAMS, float3 o, float3 d, float tmin, bool any,
  * geometric normal), instance, primitive (triangle index within its mesh, else 0), material
  * (resolved: per-triangle for the loose-triangle mesh). On a miss sets hit->instance =
  * CLRT_NO_HIT and returns false. */
-inline bool scene_closest_hit(SCENE_PARAMS, float3 o, float3 d, float tmin, float tmax, Hit* hit) {
+CLRT_INLINE bool scene_closest_hit(SCENE_PARAMS, float3 o, float3 d, float tmin, float tmax, Hit* hit) {
   HitRecord best = hit_record_none(tmax);
-  const bool found = scene_search(SCENE_ARGS, o, d, tmin, false, &best);
+  const bool found = scene_search(SCENE_ARGS, (float4)(o, 0.0f), (float4)(d, 0.0f), tmin, false, &best);
   hit_record_resolve(&best, o, d, instances, meshes, bvh, triangle_normals, triangle_materials, hit);
   return found;
 }
 
 /* Any hit with tmin <= t < tmax (early exit). */
-inline bool scene_any_hit(SCENE_PARAMS, float3 o, float3 d, float tmin, float tmax) {
+CLRT_INLINE bool scene_any_hit(SCENE_PARAMS, float3 o, float3 d, float tmin, float tmax) {
   HitRecord best = hit_record_none(tmax);
   /* The shape routines accept t > tmin; the next float below tmin makes that t >= tmin. */
-  return scene_search(SCENE_ARGS, o, d, nextafter(tmin, -INFINITY), true, &best);
+  return scene_search(SCENE_ARGS, (float4)(o, 0.0f), (float4)(d, 0.0f), nextafter(tmin, -INFINITY), true,
+                      &best);
 }
 
 #endif

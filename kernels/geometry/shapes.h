@@ -4,22 +4,24 @@
 #ifndef CLRT_GEOMETRY_SHAPES_H
 #define CLRT_GEOMETRY_SHAPES_H
 
+#include "math/exact.h"
+
 #include "geometry/span.h"
 #include "shared/scene.h"
 
-inline Span sphere_span(float3 o, float3 d) {
-  const float a = dot(d, d), b = dot(o, d);
+CLRT_INLINE Span sphere_span(float3 o, float3 d) {
+  const float a = dot3(d, d), b = dot3(o, d);
   /* b^2 - a c written as a (1 - |l|^2), l the point of the line nearest the centre: unlike
    * b^2 - a c it keeps its precision when the origin is far from the sphere. A zero d gives
    * NaN here, which the test below turns into a miss. */
   const float3 l = o - (b / a) * d;
-  const float disc = a * (1.0f - dot(l, l));
+  const float disc = a * (1.0f - dot3(l, l));
   if (!(disc >= 0.0f)) return span_empty();
-  const float2 r = quadratic_roots(a, b, dot(o, o) - 1.0f, disc);
+  const float2 r = quadratic_roots(a, b, dot3(o, o) - 1.0f, disc);
   return span_make(r.x, o + r.x * d, r.y, o + r.y * d);
 }
 
-inline Span cube_span(float3 o, float3 d) {
+CLRT_INLINE Span cube_span(float3 o, float3 d) {
   Span s = slab_span(o.x, d.x, (float3)(1.0f, 0.0f, 0.0f));
   s = span_meet(s, slab_span(o.y, d.y, (float3)(0.0f, 1.0f, 0.0f)));
   return span_meet(s, slab_span(o.z, d.z, (float3)(0.0f, 0.0f, 1.0f)));
@@ -28,7 +30,7 @@ inline Span cube_span(float3 o, float3 d) {
 /* Outward normal of the side x^2 + z^2 = R(y)^2 with R(y) = m y + k: half the gradient of
  * x^2 + z^2 - R(y)^2. It vanishes at a cone's apex, where the axis pointing out of the apex
  * stands in (R grows away from the apex, so the apex is at the top when m < 0). */
-inline float3 side_normal(float3 p, float m, float k) {
+CLRT_INLINE float3 side_normal(float3 p, float m, float k) {
   const float3 n = (float3)(p.x, -m * (m * p.y + k), p.z);
   if (n.x == 0.0f && n.y == 0.0f && n.z == 0.0f)
     return (float3)(0.0f, m < 0.0f ? 1.0f : -1.0f, 0.0f);
@@ -38,7 +40,7 @@ inline float3 side_normal(float3 p, float m, float k) {
 /* Where the ray is inside x^2 + z^2 <= R(y)^2, i.e. where f(t) = a t^2 + 2 b t + c <= 0. For a
  * cone that solid is a double cone; between y = -1 and y = 1 only the nappe with R >= 0 lies
  * (the radii are >= 0 there), so the slab that follows removes the other one. */
-inline Span side_span(float3 o, float3 d, float m, float k) {
+CLRT_INLINE Span side_span(float3 o, float3 d, float m, float k) {
   /* Along the ray R = r_o + w t: r_o is R at the origin's height. */
   const float r_o = m * o.y + k, w = m * d.y;
   const float a = d.x * d.x + d.z * d.z - w * w;
@@ -56,7 +58,7 @@ inline Span side_span(float3 o, float3 d, float m, float k) {
    * their float difference would put the double root off by sqrt(epsilon), not epsilon. */
   const float2 e = (float2)(r_o * d.x - w * o.x, r_o * d.z - w * o.z);
   const float across = o.x * d.z - o.z * d.x;
-  const float disc = dot(e, e) - across * across;
+  const float disc = dot2(e, e) - across * across;
   /* No root: f keeps the sign of a (a < 0 only by rounding for a line through the apex). */
   if (disc < 0.0f) return a > 0.0f ? span_empty() : span_all();
   const float2 r = quadratic_roots(a, b, c, disc);
@@ -70,12 +72,12 @@ inline Span side_span(float3 o, float3 d, float m, float k) {
 
 /* Radius r0 at y = -1 to r1 at y = 1 (r0, r1 >= 0, not both 0); the caps come from the slab,
  * which is passed first so that a ray through a rim or the apex takes the cap's normal. */
-inline Span frustum_span(float3 o, float3 d, float r0, float r1) {
+CLRT_INLINE Span frustum_span(float3 o, float3 d, float r0, float r1) {
   const float m = 0.5f * (r1 - r0), k = 0.5f * (r0 + r1);
   return span_meet(slab_span(o.y, d.y, (float3)(0.0f, 1.0f, 0.0f)), side_span(o, d, m, k));
 }
 
-inline bool plane_hit(float3 o, float3 d, float tmin, float* t, float3* normal) {
+CLRT_INLINE bool plane_hit(float3 o, float3 d, float tmin, float* t, float3* normal) {
   if (d.y == 0.0f) return false;
   const float t_hit = -o.y / d.y;
   if (!(t_hit > tmin && t_hit < *t)) return false;
@@ -90,7 +92,7 @@ inline bool plane_hit(float3 o, float3 d, float tmin, float* t, float3* normal) 
  * (not necessarily unit) in *normal. Otherwise returns false and leaves *t and *normal alone.
  * The closed objects include their boundary: a ray that only touches one (a tangent, a ray
  * along a face) hits it. A ray starting inside finds the exit. */
-inline bool intersect_canonical(u32 shape, float cone_r0, float cone_r1, float3 o, float3 d,
+CLRT_INLINE bool intersect_canonical(u32 shape, float cone_r0, float cone_r1, float3 o, float3 d,
                                 float tmin, float* t, float3* normal) {
   Span s;
   switch (shape) {

@@ -7,6 +7,8 @@
 #ifndef CLRT_GEOMETRY_SPAN_H
 #define CLRT_GEOMETRY_SPAN_H
 
+#include "math/exact.h"
+
 /* The ray is inside for t in [t0, t1] (empty when t0 > t1), entering through a surface whose
  * outward normal is n0 and leaving through one whose outward normal is n1. */
 typedef struct Span {
@@ -14,7 +16,7 @@ typedef struct Span {
   float3 n0, n1;
 } Span;
 
-inline Span span_make(float t0, float3 n0, float t1, float3 n1) {
+CLRT_INLINE Span span_make(float t0, float3 n0, float t1, float3 n1) {
   Span s;
   s.t0 = t0;
   s.n0 = n0;
@@ -24,17 +26,17 @@ inline Span span_make(float t0, float3 n0, float t1, float3 n1) {
 }
 
 /* The whole line: a constraint the ray satisfies everywhere. */
-inline Span span_all(void) {
+CLRT_INLINE Span span_all(void) {
   return span_make(-INFINITY, (float3)(0.0f), INFINITY, (float3)(0.0f));
 }
 
-inline Span span_empty(void) {
+CLRT_INLINE Span span_empty(void) {
   return span_make(INFINITY, (float3)(0.0f), -INFINITY, (float3)(0.0f));
 }
 
 /* Where the ray is inside both. On a tie the bound of `a` is kept, so callers pass the piece
  * whose normal should win on shared edges first. */
-inline Span span_meet(Span a, Span b) {
+CLRT_INLINE Span span_meet(Span a, Span b) {
   if (b.t0 > a.t0) {
     a.t0 = b.t0;
     a.n0 = b.n0;
@@ -48,7 +50,7 @@ inline Span span_meet(Span a, Span b) {
 
 /* The span of -1 <= o + t d <= 1 along one axis, whose unit vector is `axis`. A ray parallel
  * to the slab (d exactly 0) is inside everywhere or nowhere: no 0 / 0. */
-inline Span slab_span(float o, float d, float3 axis) {
+CLRT_INLINE Span slab_span(float o, float d, float3 axis) {
   if (d == 0.0f) return fabs(o) <= 1.0f ? span_all() : span_empty();
   const float t_minus = (-1.0f - o) / d, t_plus = (1.0f - o) / d;
   return d > 0.0f ? span_make(t_minus, -axis, t_plus, axis)
@@ -57,7 +59,7 @@ inline Span slab_span(float o, float d, float3 axis) {
 
 /* The first boundary of `s` in (tmin, *t): the entry, or the exit for a ray that starts
  * inside. Leaves *t and *normal alone when there is none. */
-inline bool span_hit(Span s, float tmin, float* t, float3* normal) {
+CLRT_INLINE bool span_hit(Span s, float tmin, float* t, float3* normal) {
   if (!(s.t0 <= s.t1)) return false;
   const bool entering = s.t0 > tmin;
   const float t_hit = entering ? s.t0 : s.t1;
@@ -69,7 +71,7 @@ inline bool span_hit(Span s, float tmin, float* t, float3* normal) {
 
 /* Both roots, in increasing order, of a t^2 + 2 b t + c = 0 with a != 0 and disc = b^2 - a c
  * >= 0, computed without cancellation (q and c / q instead of (-b +- sqrt(disc)) / a). */
-inline float2 quadratic_roots(float a, float b, float c, float disc) {
+CLRT_INLINE float2 quadratic_roots(float a, float b, float c, float disc) {
   const float q = -(b + copysign(sqrt(disc), b));
   /* q is 0 only for b = 0 and disc = 0: the double root at 0. */
   if (q == 0.0f) return (float2)(0.0f);

@@ -14,8 +14,10 @@
 #ifndef CLRT_GEOMETRY_TRIANGLE_H
 #define CLRT_GEOMETRY_TRIANGLE_H
 
+#include "math/exact.h"
+
 /* Component k (0, 1 or 2) of v. */
-inline float triangle_component(float3 v, int k) {
+CLRT_INLINE float triangle_component(float3 v, int k) {
   return k == 0 ? v.x : (k == 1 ? v.y : v.z);
 }
 
@@ -29,7 +31,7 @@ typedef struct TriangleRay {
   bool valid;   /* false for a zero direction, which hits nothing */
 } TriangleRay;
 
-inline TriangleRay triangle_ray(float3 o, float3 d) {
+CLRT_INLINE TriangleRay triangle_ray(float3 o, float3 d) {
   TriangleRay r;
   const float3 ad = fabs(d);
   r.kz = ad.x > ad.y ? (ad.x > ad.z ? 0 : 2) : (ad.y > ad.z ? 1 : 2);
@@ -62,7 +64,7 @@ typedef struct Triangle4Hits {
 
 /* Watertight test of the four triangles; both faces hit. A ray through an edge or vertex (an
  * edge function exactly 0) hits; a degenerate triangle never does. */
-inline Triangle4Hits triangle4_test(const TriangleRay* r, const Triangle4* p, float tmin, float tmax) {
+CLRT_INLINE Triangle4Hits triangle4_test(const TriangleRay* r, const Triangle4* p, float tmin, float tmax) {
 #pragma OPENCL FP_CONTRACT OFF
   float4 x[3], y[3], z[3];
   for (int j = 0; j < 3; ++j) {
@@ -88,7 +90,7 @@ inline Triangle4Hits triangle4_test(const TriangleRay* r, const Triangle4* p, fl
 /* Watertight: true when tmin < t < *t; then *t, barycentrics *u (weight of v1) and *v
  * (weight of v2). Both faces hit. A ray through an edge or vertex (an edge function exactly 0)
  * hits; a degenerate triangle or a zero direction never does. */
-inline bool intersect_triangle(float3 v0, float3 v1, float3 v2, float3 o, float3 d, float tmin,
+CLRT_INLINE bool intersect_triangle(float3 v0, float3 v1, float3 v2, float3 o, float3 d, float tmin,
                                float* t, float* u, float* v) {
   const TriangleRay r = triangle_ray(o, d);
   if (!r.valid) return false;
@@ -107,9 +109,9 @@ inline bool intersect_triangle(float3 v0, float3 v1, float3 v2, float3 o, float3
   return true;
 }
 
-/* Unnormalised geometric normal cross(v1 - v0, v2 - v0): front face = counter-clockwise. */
-inline float3 triangle_normal(float3 v0, float3 v1, float3 v2) {
-  return cross(v1 - v0, v2 - v0);
+/* Unnormalised geometric normal cross3(v1 - v0, v2 - v0): front face = counter-clockwise. */
+CLRT_INLINE float3 triangle_normal(float3 v0, float3 v1, float3 v2) {
+  return cross3(v1 - v0, v2 - v0);
 }
 
 #endif

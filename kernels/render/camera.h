@@ -11,7 +11,7 @@
 /* One sample goes through the pixel centre; more are stratified with one jitter per cell of
  * the camera's grid. The random stream is keyed by the pixel's place in the whole image, never
  * in the region or the wave, so every region of a frame has the full render's bits. */
-inline Ray wave_camera_ray(const Camera* cam, uint region_x, uint region_y, uint region_width,
+CLRT_INLINE Ray wave_camera_ray(const Camera* cam, uint region_x, uint region_y, uint region_width,
                            uint first_pixel, uint index) {
   const uint in_region = first_pixel + index / cam->samples;
   const uint k = index % cam->samples;
@@ -25,7 +25,7 @@ inline Ray wave_camera_ray(const Camera* cam, uint region_x, uint region_y, uint
                      ((float)y + offset.y) * xyz(cam->pixel_dy);
   Ray ray;
   ray.origin = cam->eye;
-  ray.dir = as_f4(normalize(dir));
+  ray.dir = as_f4(normalize3(dir));
   ray.weight = (f4)(1.0f, 1.0f, 1.0f, 0.0f);
   ray.sample = index;
   ray.depth = 0u;

@@ -15,7 +15,7 @@ typedef struct LightSample {
 /* Sample j of `light` from point p; `path` is the shading point's random stream. Area lights
  * split their intensity evenly over their stratified samples. The switch names every kind:
  * the host uploads no other (src/render/frame_setup.cpp). */
-inline LightSample sample_light(__global const Light* light, uint j, float3 p, uint path) {
+CLRT_INLINE LightSample sample_light(__global const Light* light, uint j, float3 p, uint path) {
   LightSample s;
   s.intensity = xyz(light->color);
   s.position = xyz(light->position);
@@ -37,13 +37,13 @@ inline LightSample sample_light(__global const Light* light, uint j, float3 p, u
       break;
   }
   const float3 delta = s.position - p;
-  s.distance = length(delta);
+  s.distance = length3(delta);
   s.to_light = delta / s.distance;
   if (light->kind == CLRT_LIGHT_SPOT) {
     /* D runs from the light to P: lit when S.D >= cos(angle), scaled by (S.D)^exp. With a
      * cone wider than 90 degrees S.D may be negative: the factor is then 1 for exp 0 (as
      * pow(x, 0) = 1) and 0 otherwise, where pow() of a negative base is undefined. */
-    const float sd = dot(xyz(light->direction), -s.to_light);
+    const float sd = dot3(xyz(light->direction), -s.to_light);
     const float falloff = power(fmax(sd, 0.0f), light->spot_exponent);
     s.intensity = sd >= light->cos_cutoff ? s.intensity * falloff : (float3)(0.0f);
   }

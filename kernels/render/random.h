@@ -5,21 +5,21 @@
 #define CLRT_RENDER_RANDOM_H
 
 /* A PCG-style integer permutation with good avalanche. */
-inline uint hash_u32(uint x) {
+CLRT_INLINE uint hash_u32(uint x) {
   uint state = x * 747796405u + 2891336453u;
   uint word = ((state >> ((state >> 28u) + 4u)) ^ state) * 277803737u;
   return (word >> 22u) ^ word;
 }
 
-inline uint hash_combine(uint a, uint b) {
+CLRT_INLINE uint hash_combine(uint a, uint b) {
   return hash_u32(a ^ (hash_u32(b) + 0x9e3779b9u + (a << 6) + (a >> 2)));
 }
 
 /* Uniform in [0, 1) from the top 24 bits: exactly representable floats. */
-inline float uniform_float(uint h) { return (float)(h >> 8) * (1.0f / 16777216.0f); }
+CLRT_INLINE float uniform_float(uint h) { return (float)(h >> 8) * (1.0f / 16777216.0f); }
 
 /* The random stream of a camera ray: (seed, pixel, sample). */
-inline uint camera_path(uint seed, uint pixel, uint sample) {
+CLRT_INLINE uint camera_path(uint seed, uint pixel, uint sample) {
   return hash_combine(hash_combine(hash_u32(seed), pixel), sample);
 }
 
@@ -27,20 +27,20 @@ inline uint camera_path(uint seed, uint pixel, uint sample) {
 #define CLRT_BRANCH_REFRACT 2u
 
 /* A secondary ray's stream: its parent's and the branch taken. */
-inline uint child_path(uint parent, uint branch) { return hash_combine(parent, branch); }
+CLRT_INLINE uint child_path(uint parent, uint branch) { return hash_combine(parent, branch); }
 
 /* The stream index of the camera jitter; light samples use indices from 0 up, so the two
  * never share numbers. */
 #define CLRT_CAMERA_JITTER 0xffffffffu
 
 /* Two jitters for stratum `index` of a stream, e.g. one camera sample or one light sample. */
-inline float2 jitter2(uint path, uint index) {
+CLRT_INLINE float2 jitter2(uint path, uint index) {
   uint h = hash_combine(path, index);
   return (float2)(uniform_float(h), uniform_float(hash_u32(h)));
 }
 
 /* Position in [0,1)^2 of sample `k` of a grid_u x grid_v stratification: one jitter per cell. */
-inline float2 stratified(uint k, uint grid_u, uint grid_v, float2 jitter) {
+CLRT_INLINE float2 stratified(uint k, uint grid_u, uint grid_v, float2 jitter) {
   return (float2)(((float)(k % grid_u) + jitter.x) / (float)grid_u,
                   ((float)(k / grid_u) + jitter.y) / (float)grid_v);
 }

@@ -6,19 +6,19 @@
 #include "random.h"
 
 /* d mirrored about n (the contract's R = -E + 2N(E.N) with E = -d). */
-inline float3 reflect_dir(float3 d, float3 n) { return d - 2.0f * dot(d, n) * n; }
+CLRT_INLINE float3 reflect_dir(float3 d, float3 n) { return d - 2.0f * dot3(d, n) * n; }
 
 /* Snell refraction of unit d through unit n (facing against d) with eta = n1 / n2. Returns
  * false on total internal reflection. */
-inline bool refract_dir(float3 d, float3 n, float eta, float3* t) {
-  const float cos_i = -dot(d, n);
+CLRT_INLINE bool refract_dir(float3 d, float3 n, float eta, float3* t) {
+  const float cos_i = -dot3(d, n);
   const float k = 1.0f - eta * eta * (1.0f - cos_i * cos_i);
   if (k < 0.0f) return false;
-  *t = normalize(eta * d + (eta * cos_i - sqrt(k)) * n);
+  *t = normalize3(eta * d + (eta * cos_i - sqrt(k)) * n);
   return true;
 }
 
-inline Ray child_ray(const Ray* parent, float3 origin, float3 dir, float share, uint branch,
+CLRT_INLINE Ray child_ray(const Ray* parent, float3 origin, float3 dir, float share, uint branch,
                      uint kind) {
   Ray r;
   r.origin = as_f4(origin);

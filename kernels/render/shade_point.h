@@ -3,7 +3,7 @@
  *   shade_point      the surface at a hit, seen from the ray;
  *   miss_colour      what a ray that hits nothing contributes;
  *   ambient_colour   the ambient term;
- *   next_light_term  the light samples, in a fixed order, that can change the image;
+ *   light_term       what one light sample adds (zero: no shadow ray);
  *   shadow_ray_to    the shadow ray that decides whether a light sample's term counts;
  *   spawn_children   the reflection and refraction rays leaving the hit. */
 #ifndef CLRT_RENDER_SHADE_POINT_H
@@ -24,79 +24,57 @@ typedef struct ShadePoint {
   uint material;
 } ShadePoint;
 
-inline ShadePoint shade_point(const Ray* ray, const Hit* hit, __global const Material* materials) {
+CLRT_INLINE ShadePoint shade_point(const Ray* ray, const Hit* hit, __global const Material* materials) {
   ShadePoint s;
   const float3 d = xyz(ray->dir);
   s.p = xyz(ray->origin) + hit->geometric_normal.w * d;
-  s.front = dot(xyz(hit->geometric_normal), d) < 0.0f;
+  s.front = dot3(xyz(hit->geometric_normal), d) < 0.0f;
   s.ng = s.front ? xyz(hit->geometric_normal) : -xyz(hit->geometric_normal);
   /* Vertex normals may disagree with the winding (NFF patches, many OBJ exports): the shading
    * normal is first turned into the geometric normal's hemisphere, then faces the ray with it. */
   const float3 ns = xyz(hit->shading_normal);
-  s.n = dot(ns, s.ng) < 0.0f ? -ns : ns;
+  s.n = dot3(ns, s.ng) < 0.0f ? -ns : ns;
   s.v = -d;
   s.material = hit->material;
   s.base = xyz(ray->weight) * local_share(&materials[hit->material]);
   return s;
 }
 
-inline float3 miss_colour(const Ray* ray, __global const RenderParams* params) {
+CLRT_INLINE float3 miss_colour(const Ray* ray, __global const RenderParams* params) {
   return xyz(ray->weight) * xyz(params->background);
 }
 
-inline float3 ambient_colour(const ShadePoint* s, __global const Material* materials,
+CLRT_INLINE float3 ambient_colour(const ShadePoint* s, __global const Material* materials,
                              __global const RenderParams* params) {
   __global const Material* m = &materials[s->material];
   return s->base * m->ka * xyz(params->ambient) * xyz(m->color);
 }
 
-/* Where next_light_term stands: light `light`, its sample `sample` next. `slot` is the last
- * visited sample's index among all the light samples of a shading point. */
-typedef struct LightCursor {
-  uint light, sample, slot;
-} LightCursor;
-
-inline LightCursor light_cursor(void) {
-  LightCursor c;
-  c.light = c.sample = c.slot = 0u;
-  return c;
-}
-
-/* Advances to the next light sample whose term is not zero (lights in table order, each
- * light's samples in order) and returns it in *sample and *term; false when none is left. A
- * zero term (N.L <= 0, outside a spot's cone, kd = ks = 0) sends no shadow ray: it could not
- * change the image. */
-inline bool next_light_term(const ShadePoint* s, __global const Material* materials,
-                            __global const Light* lights, __global const RenderParams* params,
-                            uint path, LightCursor* c, LightSample* sample, float3* term) {
-  __global const Material* m = &materials[s->material];
-  for (; c->light < params->light_count; ++c->light, c->sample = 0u) {
-    __global const Light* light = &lights[c->light];
-    while (c->sample < light->samples) {
-      const uint j = c->sample++;
-      c->slot = light->first_sample + j;
-      *sample = sample_light(light, j, s->p, path);
-      *term = s->base * direct_term(m, s->n, s->v, sample->to_light, sample->intensity);
-      if (!all(*term == (float3)(0.0f))) return true;
-    }
-  }
-  return false;
+/* The term sample j of `light` adds at s, and the sample in *sample. A zero term (N.L <= 0,
+ * outside a spot's cone, kd = ks = 0) sends no shadow ray: it could not change the image. The
+ * callers walk lights in table order and each light's samples in order, in plain counted loops
+ * (a resumable cursor over both, tried first, ran forever now and then on Intel's CPU runtime). */
+CLRT_INLINE float3 light_term(const ShadePoint* s, __global const Material* materials,
+                              __global const Light* light, uint j, uint path, LightSample* sample) {
+  *sample = sample_light(light, j, s->p, path);
+  return s->base * direct_term(&materials[s->material], s->n, s->v, sample->to_light,
+                               sample->intensity);
 }
 
 /* The point a secondary or shadow ray leaves from: p moved by epsilon along the geometric
  * normal, to the side the ray leaves through. */
-inline float3 offset_origin(float3 p, float3 ng, float3 dir, float epsilon) {
-  return p + (dot(ng, dir) >= 0.0f ? epsilon : -epsilon) * ng;
+CLRT_INLINE float3 offset_origin(float3 p, float3 ng, float3 dir, float epsilon) {
+  return p + (dot3(ng, dir) >= 0.0f ? epsilon : -epsilon) * ng;
 }
 
 /* The shadow ray that carries `term` of light sample `ls` to the ray `owner`. */
-inline ShadowRay shadow_ray_to(const ShadePoint* s, const LightSample* ls, float3 term, uint owner,
+CLRT_INLINE ShadowRay shadow_ray_to(const ShadePoint* s, const LightSample* ls, float3 term, uint owner,
                                float epsilon) {
   const float3 origin = offset_origin(s->p, s->ng, ls->to_light, epsilon);
   const bool directional = ls->distance == INFINITY;
   ShadowRay sr;
-  sr.origin = (f4)(origin, directional ? INFINITY : distance(origin, ls->position));
-  sr.dir = as_f4(directional ? ls->to_light : normalize(ls->position - origin));
+  sr.origin = (f4)(origin, directional ? INFINITY : length3(ls->position - origin));
+  sr.dir = as_f4(directional ? ls->to_light : normalize3(ls->position - origin));
   sr.contribution = as_f4(term);
   sr.owner = owner;
   sr.pad[0] = sr.pad[1] = sr.pad[2] = 0u;
@@ -108,7 +86,7 @@ inline ShadowRay shadow_ray_to(const ShadePoint* s, const LightSample* ls, float
 
 /* The reflection and refraction rays of a hit; returns which of them exist (CLRT_SPAWN_*).
  * Total internal reflection sends the kt share along the reflection ray. */
-inline uint spawn_children(const Ray* ray, const ShadePoint* s, __global const Material* materials,
+CLRT_INLINE uint spawn_children(const Ray* ray, const ShadePoint* s, __global const Material* materials,
                            __global const RenderParams* params, Ray* reflected, Ray* refracted) {
   __global const Material* m = &materials[s->material];
   const float3 d = xyz(ray->dir);

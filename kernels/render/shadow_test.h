@@ -6,7 +6,7 @@
 #include "geometry/scene_intersect.h"
 
 /* The ray's contribution when nothing lies between epsilon and the light (origin.w), else 0. */
-inline float4 shadow_visible(SCENE_PARAMS, float epsilon, const ShadowRay* s) {
+CLRT_INLINE float4 shadow_visible(SCENE_PARAMS, float epsilon, const ShadowRay* s) {
   const bool blocked = scene_any_hit(SCENE_ARGS, xyz(s->origin), xyz(s->dir), epsilon, s->origin.w);
   return blocked ? (float4)(0.0f) : s->contribution;
 }

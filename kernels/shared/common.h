@@ -6,12 +6,29 @@
 #define CLRT_SHARED_COMMON_H
 
 #ifdef __OPENCL_VERSION__
+/* No compiler may fuse a*b+c on its own: the same sum gives the same bits in every kernel and on
+ * every device (kernels/math/exact.h). */
+#pragma OPENCL FP_CONTRACT OFF
 typedef float4 f4;
 typedef uint u32;
 typedef int i32;
 #define CLRT_SHARED_BEGIN
 #define CLRT_SHARED_END
 #define CLRT_CHECK_SIZE(type, bytes)
+/* How values cross calls between device functions. Intel's CPU runtime, vectorising a
+ * work-group 16 wide, passed the lanes' float3 arguments 12 bytes apart and read them 16 apart
+ * in a function it kept out of line (docs/devices.md, tests/device/test_vector_calls.cpp). So a
+ * device function is either forced inline, and no value crosses a call at run time, or it is
+ * CLRT_CALLABLE: the compiler may keep it a call, and no 3-component vector is among its
+ * parameters or its result. tests/device/test_kernel_source.cpp holds every function to it. */
+#ifdef CLRT_NO_FORCED_INLINE
+/* Oclgrind's interpreter has no llvm.experimental.noalias.scope.decl, which LLVM's inliner
+ * emits when it inlines a function returning a structure; it does not vectorise either. */
+#define CLRT_INLINE inline
+#else
+#define CLRT_INLINE inline __attribute__((always_inline))
+#endif
+#define CLRT_CALLABLE inline
 #else
 #include <cstdint>
 #define CLRT_SHARED_BEGIN namespace clrt { namespace dev {

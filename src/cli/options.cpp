@@ -90,10 +90,10 @@ void add_animation_options(CLI::App& app, CliOptions& o) {
 
 void add_device_options(CLI::App& app, CliOptions& o) {
   app.add_option("--device", o.device,
-                 "cpu, gpu, all, P:D (platform:device index) or part of a device name")
+                 "cpu, gpu, all, P:D (platform:device index) or part of a device or platform name")
       ->capture_default_str();
   app.add_flag("--list-devices", o.list_devices, "list the OpenCL devices and exit");
-  app.add_option("--threads", o.threads, "CPU threads of PoCL's device (default: every core)")
+  app.add_option("--threads", o.threads, "CPU threads of PoCL's or Intel's CPU device (default: every core)")
       ->check(CLI::Range(1u, 4096u));
   app.add_option_function<std::string>(
          "--integrator", [&](const std::string& name) { o.integrator = *parse_integrator(name); },

@@ -192,8 +192,12 @@ void check_outputs_are_not_inputs(const ImageOutput& output, const FramePlan& fr
 
 int run_clrt(const CliOptions& cli) {
   const auto start = Clock::now();
-  // PoCL reads its thread count when the first OpenCL call loads it.
-  if (cli.threads) setenv("POCL_MAX_PTHREAD_COUNT", std::to_string(*cli.threads).c_str(), 1);
+  // The CPU drivers read their thread counts when the first OpenCL call loads them, before any
+  // device can be asked which it is: PoCL, and Intel's CPU runtime. Others ignore both.
+  if (cli.threads) {
+    setenv("POCL_MAX_PTHREAD_COUNT", std::to_string(*cli.threads).c_str(), 1);
+    setenv("DPCPP_CPU_NUM_CUS", std::to_string(*cli.threads).c_str(), 1);
+  }
   if (cli.list_devices) {
     std::cout << device_table(enumerate_devices());
     return 0;

@@ -4,6 +4,7 @@
 #include <sstream>
 #include <vector>
 
+#include "device/kernel_args.hpp"
 #include "device/program_cache.hpp"
 
 namespace clrt {
@@ -42,20 +43,40 @@ std::string program_identity(const compute::device& device, const std::string& s
          device.version() + "\n" + device.driver_version() + "\n" + options + "\n" + source;
 }
 
+// A cache entry's payload: the argument information the driver reported for the program built
+// from source (a length line, then the text), then the binary.
+std::string cache_payload(const compute::program& program) {
+  const std::string signatures = program_signatures(program);
+  const std::vector<unsigned char> binary = program.binary();
+  return std::to_string(signatures.size()) + "\n" + signatures +
+         std::string(binary.begin(), binary.end());
+}
+
 // The cached binary, built; none if there is none or the driver refuses it (then it is dropped).
 std::optional<compute::program> build_cached(const ProgramCache& cache,
                                              const compute::context& context,
                                              const compute::device& device,
                                              const std::string& options) {
-  const std::optional<std::string> binary = cache.load();
-  if (!binary) return std::nullopt;
-  try {
-    compute::program program = compute::program::create_with_binary(
-        reinterpret_cast<const unsigned char*>(binary->data()), binary->size(), context);
-    if (clBuildProgram(program.get(), 1, &device.get(), options.c_str(), nullptr, nullptr) ==
-        CL_SUCCESS)
-      return program;
-  } catch (const compute::opencl_error&) {
+  const std::optional<std::string> payload = cache.load();
+  if (!payload) return std::nullopt;
+  const std::size_t newline = payload->find('\n');
+  std::size_t signature_size = 0;
+  if (newline != std::string::npos && newline > 0 && newline <= 9 &&
+      payload->find_first_not_of("0123456789") == newline)
+    signature_size = std::stoul(payload->substr(0, newline));
+  const std::size_t binary_at = newline + 1 + signature_size;
+  if (newline != std::string::npos && binary_at < payload->size()) {
+    try {
+      compute::program program = compute::program::create_with_binary(
+          reinterpret_cast<const unsigned char*>(payload->data() + binary_at),
+          payload->size() - binary_at, context);
+      if (clBuildProgram(program.get(), 1, &device.get(), options.c_str(), nullptr, nullptr) ==
+          CL_SUCCESS) {
+        adopt_signatures(program, payload->substr(newline + 1, signature_size));
+        return program;
+      }
+    } catch (const compute::opencl_error&) {
+    }
   }
   cache.forget();
   return std::nullopt;
@@ -63,8 +84,27 @@ std::optional<compute::program> build_cached(const ProgramCache& cache,
 
 }  // namespace
 
+std::string device_program_options(const compute::device& device) {
+  std::string out;
+  // Division and sqrt correctly rounded wherever the device can: with FP_CONTRACT off and
+  // kernels/math/exact.h, every operation then has the bits IEEE 754 gives it.
+  if (device.get_info<cl_device_fp_config>(CL_DEVICE_SINGLE_FP_CONFIG) &
+      CL_FP_CORRECTLY_ROUNDED_DIVIDE_SQRT)
+    out += " -cl-fp32-correctly-rounded-divide-sqrt";
+  // PoCL's prefetch() is empty; Clang's own builtin, which only PoCL's compiler takes here,
+  // makes incoherent rays 20% faster there (kernels/geometry/bvh_stack.h).
+  const std::string platform = device.platform().name();
+  if (platform == "Portable Computing Language") out += " -DCLRT_CLANG_PREFETCH";
+  // Oclgrind is for checking the code as written: unoptimised, since its interpreter runs
+  // some of what its own optimiser makes wrongly (triangle hits on rays that miss), and without
+  // forced inlining, whose output it cannot run (kernels/shared/common.h).
+  if (platform == "Oclgrind") out += " -cl-opt-disable -DCLRT_NO_FORCED_INLINE";
+  return out;
+}
+
 compute::program DeviceContext::build(const std::string& source, const std::string& options) const {
-  const std::string all_options = std::string(kProgramOptions) + (options.empty() ? "" : " " + options);
+  const std::string all_options = std::string(kProgramOptions) + device_program_options(entry_.device) +
+                                  (options.empty() ? "" : " " + options);
   std::optional<ProgramCache> cache;
   if (const auto folder = ProgramCache::folder_from_environment())
     cache.emplace(*folder, program_identity(entry_.device, source, all_options));
@@ -78,10 +118,7 @@ compute::program DeviceContext::build(const std::string& source, const std::stri
                       compute::opencl_error::to_string(status) + "); build log:\n" +
                       program.build_log());
   }
-  if (cache) {
-    const std::vector<unsigned char> binary = program.binary();
-    cache->store(std::string(binary.begin(), binary.end()));
-  }
+  if (cache) cache->store(cache_payload(program));
   return program;
 }
 

@@ -48,4 +48,8 @@ class DeviceContext {
 // The options every clrt program is built with; fixed so that PoCL's kernel cache stays warm.
 extern const char* const kProgramOptions;
 
+// What `device` adds to them: the choices made from what it reports (correctly rounded division
+// and sqrt, PoCL's prefetch).
+std::string device_program_options(const compute::device& device);
+
 }  // namespace clrt

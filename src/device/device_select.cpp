@@ -45,7 +45,9 @@ std::vector<DeviceEntry> matching(const std::vector<DeviceEntry>& all, const std
         key == "all" || (key == "cpu" && (type & CL_DEVICE_TYPE_CPU)) ||
         (key == "gpu" && (type & CL_DEVICE_TYPE_GPU)) ||
         (indexed && e.platform_index == platform && e.device_index == device) ||
-        (!indexed && key != "cpu" && key != "gpu" && lower(e.device.name()).find(key) != std::string::npos);
+        (!indexed && key != "cpu" && key != "gpu" &&
+         (lower(e.device.name()).find(key) != std::string::npos ||
+          lower(e.device.platform().name()).find(key) != std::string::npos));
     if (match) out.push_back(e);
   }
   if ((key == "cpu" || key == "gpu") && out.size() > 1) out.resize(1);

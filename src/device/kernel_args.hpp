@@ -152,9 +152,18 @@ void bind_args(compute::kernel& kernel, const Args& args) {
 }
 
 // Every way `kernel`'s signature, as the device reports it, differs from `expected` (empty
-// when they agree). The program must have been built with -cl-kernel-arg-info; a device that
-// still reports no argument information gives one line saying so.
+// when they agree). The program must have been built with -cl-kernel-arg-info. A program made
+// from a cached binary, on a driver that keeps no argument information in binaries, is checked
+// against what the driver reported when it built the program from source (adopt_signatures);
+// with neither, one line says so.
 std::vector<std::string> signature_mismatches(const compute::kernel& kernel,
                                               const std::vector<ExpectedArg>& expected);
+
+// Every kernel's parameters as the driver reports them for `program`, as text; empty when the
+// driver reports none.
+std::string program_signatures(const compute::program& program);
+// Makes `text` (program_signatures of the program built from source) the record that binding
+// checks of `program` fall back on.
+void adopt_signatures(const compute::program& program, const std::string& text);
 
 }  // namespace clrt

@@ -2,7 +2,9 @@
 // it still runs Clang's preprocessor over the whole source on every build to find its entry
 // (about 25 ms of a 35 ms warm build here); a program created from its binary skips that (9 ms).
 // The cache is an optimisation only: anything wrong with it (no folder, a stale or damaged file,
-// a binary the driver refuses) falls back to building from source.
+// a binary the driver refuses) falls back to building from source. Each entry carries a checksum
+// of its payload, is written with fsync before it is renamed into place, and is read only when
+// it is a regular file of plausible size whose checksum matches.
 //
 // Where: $CLRT_CACHE_DIR, else $XDG_CACHE_HOME/clrt, else $HOME/.cache/clrt; CLRT_CACHE_DIR set
 // but empty turns it off. A file is named by a hash of everything the binary depends on (source,
@@ -24,9 +26,10 @@ class ProgramCache {
   // `identity`: the text that decides the binary (source, options, device description).
   ProgramCache(std::filesystem::path folder, const std::string& identity);
 
+  // The payload stored for this identity, if the entry is whole.
   std::optional<std::string> load() const;
   // Best effort and atomic: another process may store the same entry at the same time.
-  void store(const std::string& binary) const;
+  void store(const std::string& payload) const;
   void forget() const;
 
   const std::filesystem::path& file() const { return file_; }

@@ -4,11 +4,13 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <stdexcept>
 
+#include "cl_fixture.hpp"
 #include "device/device_select.hpp"
 #include "render/render_stats.hpp"
 #include "render/renderer.hpp"
@@ -28,14 +30,20 @@ std::vector<std::string> repository_scenes() {
   return out;
 }
 
-FloatImage render_file(const std::string& path, const std::function<void(RenderOptions&)>& adjust) {
+FloatImage render_file(const std::string& path, const std::function<void(RenderOptions&)>& adjust,
+                       const std::string& device_spec) {
   const Scene scene = load_scene(path);
   RenderSetup setup;
   setup.options = RenderOptions::from_scene(scene);
   if (adjust) adjust(setup.options);
-  setup.devices = select_devices("cpu");
+  setup.devices = select_devices(device_spec.empty() ? test_device_spec() : device_spec);
   RenderStats stats;
   return render(scene, setup, stats);
+}
+
+bool same_bits(const FloatImage& a, const FloatImage& b) {
+  return a.width == b.width && a.height == b.height && a.rgb.size() == b.rgb.size() &&
+         std::memcmp(a.rgb.data(), b.rgb.data(), sizeof(float) * a.rgb.size()) == 0;
 }
 
 std::array<int, 3> pixel_rgb(const Rgba8Image& image, int i, int j) {

@@ -19,9 +19,14 @@ std::string test_scene(const std::string& name);
 // Every .ray file under the repository's scenes/, sorted.
 std::vector<std::string> repository_scenes();
 
-// Loads and renders `path` on the CPU device with the scene's own settings, changed by `adjust`.
+// Loads and renders `path` on the test device (CLRT_TEST_DEVICE, else the first CPU device) or
+// the devices `device_spec` names, with the scene's own settings changed by `adjust`.
 FloatImage render_file(const std::string& path,
-                       const std::function<void(RenderOptions&)>& adjust = {});
+                       const std::function<void(RenderOptions&)>& adjust = {},
+                       const std::string& device_spec = "");
+
+// Whether two images have the same size and the same bits in every channel.
+bool same_bits(const FloatImage& a, const FloatImage& b);
 
 // Pixel (i, j) of the first frame, rgb.
 std::array<int, 3> pixel_rgb(const Rgba8Image& image, int i, int j);

@@ -4,7 +4,6 @@
 // ray tree deeper than its stack before any work.
 #include <catch2/catch.hpp>
 
-#include <cstring>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -18,11 +17,6 @@ using namespace clrt;
 using namespace clrt::test;
 
 namespace {
-
-bool same_bits(const FloatImage& a, const FloatImage& b) {
-  return a.width == b.width && a.height == b.height && a.rgb.size() == b.rgb.size() &&
-         std::memcmp(a.rgb.data(), b.rgb.data(), sizeof(float) * a.rgb.size()) == 0;
-}
 
 struct Variant {
   const char* what;

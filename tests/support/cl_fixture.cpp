@@ -12,8 +12,11 @@
 
 namespace clrt::test {
 
+// The context and the programs live until the process ends and are never destroyed: releasing
+// them from static destructors, after the driver's own statics are gone, corrupts Oclgrind's
+// heap at exit.
 DeviceContext& device() {
-  static DeviceContext context(select_devices(test_device_spec()).front());
+  static DeviceContext& context = *new DeviceContext(select_devices(test_device_spec()).front());
   return context;
 }
 
@@ -25,7 +28,7 @@ std::string test_device_spec() {
 }
 
 compute::program& test_program(const std::string& text) {
-  static std::map<std::string, compute::program> cache;
+  static std::map<std::string, compute::program>& cache = *new std::map<std::string, compute::program>;
   auto it = cache.find(text);
   if (it == cache.end())
     it = cache.emplace(text, device().build(assemble_kernel_source(text, "test.cl"))).first;
@@ -33,7 +36,7 @@ compute::program& test_program(const std::string& text) {
 }
 
 compute::program& renderer_program() {
-  static compute::program program = build_renderer_program(device());
+  static compute::program& program = *new compute::program(build_renderer_program(device()));
   return program;
 }
 

@@ -4,6 +4,7 @@
 mrays.png      Mrays/s per scene, one bar per device and variant (medians over repeats)
 kernels.png    each kernel's share of the device's busy time, per device and variant (all scenes)
 wavefront.png  Mrays/s against the wavefront size, when the experiment swept it
+local-size.png Mrays/s against the local size, when the experiment swept it
 """
 import json
 import os
@@ -71,25 +72,26 @@ def plot_kernels(summary, out):
     save(fig, out, "kernels.png")
 
 
-def plot_wavefront(summary, out):
-    sizes = {s.get("wavefront") for s in summary if s.get("wavefront")}
-    if len(sizes) < 2:
+def plot_sweep(summary, out, key, axis_label, title, name):
+    """Mrays/s against one setting, when the experiment swept it (the others held)."""
+    if len({s.get(key) for s in summary if s.get(key)}) < 2:
         return
     lines = defaultdict(list)
     for s in summary:
-        if s.get("wavefront"):
-            key = f"{scene_name(s)}, {s['device_spec']}, {s.get('integrator', '')}"
-            lines[key].append((s["wavefront"], s["mrays_per_second"]))
+        if s.get(key):
+            line = f"{scene_name(s)}, {s['device_spec']}, {s.get('integrator', '')}"
+            lines[line].append((s[key], s["mrays_per_second"]))
     fig, ax = plt.subplots(figsize=(7, 4.5))
-    for key, points in lines.items():
+    for line, points in lines.items():
         points.sort()
-        ax.plot([p[0] for p in points], [p[1] for p in points], marker="o", label=key)
+        ax.plot([p[0] for p in points], [p[1] for p in points], marker="o", label=line)
     ax.set_xscale("log", base=2)
-    ax.set_xlabel("wavefront (rays per queue)")
+    ax.set_ylim(bottom=0)
+    ax.set_xlabel(axis_label)
     ax.set_ylabel("Mrays/s")
-    ax.set_title("Wavefront size sweep")
+    ax.set_title(title)
     ax.legend(fontsize="x-small")
-    save(fig, out, "wavefront.png")
+    save(fig, out, name)
 
 
 def main():
@@ -102,7 +104,10 @@ def main():
         sys.exit("plot_experiment.py: no successful run to plot")
     plot_mrays(summary, sys.argv[2])
     plot_kernels(summary, sys.argv[2])
-    plot_wavefront(summary, sys.argv[2])
+    plot_sweep(summary, sys.argv[2], "wavefront", "wavefront (rays per queue)",
+               "Wavefront size sweep", "wavefront.png")
+    plot_sweep(summary, sys.argv[2], "local_size", "local size (work-items per work-group)",
+               "Local size sweep", "local-size.png")
 
 
 if __name__ == "__main__":

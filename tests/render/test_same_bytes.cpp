@@ -1,0 +1,58 @@
+// Every OpenCL implementation renders the same bits as PoCL: each scene of the repository, both
+// integrators, at the device's own local size and wavefront and at others. Run on PoCL it holds
+// PoCL to its own bits across those settings; CTest's test_same_bytes@intel and @oclgrind run
+// it on the other implementations (tests/support/on_implementation.sh).
+#include <catch2/catch.hpp>
+
+#include <string>
+#include <vector>
+
+#include "cl_fixture.hpp"
+#include "render_support.hpp"
+
+using namespace clrt;
+using namespace clrt::test;
+
+namespace {
+
+struct Setting {
+  const char* what;
+  std::size_t local_size;
+  std::uint32_t wavefront;
+};
+
+}  // namespace
+
+TEST_CASE("the test device renders PoCL's bits on every repository scene", "[same-bytes]") {
+  // Oclgrind interprets every instruction and checks every access: tiny images, the defaults.
+  const bool interpreter = device().device().platform().name() == "Oclgrind";
+  const int width = interpreter ? 12 : 64, height = interpreter ? 9 : 48;
+  std::vector<Setting> settings = {{"the device's defaults", 0, 0}};
+  if (!interpreter) {
+    settings.push_back({"local size 16, a 1024-ray wavefront", 16, 1024});
+    settings.push_back({"local size 128", 128, 0});
+  }
+  std::vector<std::string> scenes = repository_scenes();
+  for (const char* name : {"area.ray", "glass.ray", "test2.ray"}) scenes.push_back(test_scene(name));
+  REQUIRE(scenes.size() >= 20);
+  for (const std::string& path : scenes) {
+    for (const IntegratorKind integrator : {IntegratorKind::Wavefront, IntegratorKind::Megakernel}) {
+      const auto with = [&](const Setting& s) {
+        return [&, s](RenderOptions& o) {
+          o.width = width;
+          o.height = height;
+          o.samples = std::min(o.samples, 2);
+          o.integrator = integrator;
+          o.local_size = s.local_size;
+          o.wavefront = s.wavefront;
+        };
+      };
+      const FloatImage pocl = render_file(path, with(settings[0]), "portable computing language");
+      for (const Setting& s : settings) {
+        INFO(path << ", " << (integrator == IntegratorKind::Wavefront ? "wavefront" : "megakernel")
+                  << ", " << s.what << ", on " << device().name());
+        CHECK(same_bits(render_file(path, with(s)), pocl));
+      }
+    }
+  }
+}
