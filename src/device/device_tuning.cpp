@@ -9,7 +9,7 @@ DeviceClass classify(const compute::device& device) {
   return DeviceClass::Other;
 }
 
-// CPU (measured on PoCL, 2 cores; README "Choosing the wavefront"): 16384 rays per queue keep
+// CPU (measured on PoCL, 2 cores; docs/experiments.md): 16384 rays per queue keep
 // the queues in the caches; local size 64 is in the 64-256 band where every kernel measured
 // best, and the smallest of it keeps PoCL's work-group functions few and small. The
 // megakernel's stack lives in the caches, so a deep one costs nothing until it is used.
@@ -41,6 +41,17 @@ DeviceTuning tuning_for(DeviceClass device_class) {
       t.megakernel_depth = 16;
       break;
   }
+  return t;
+}
+
+// Intel's CPU runtime runs a work-group of 16 or more work-items as 16-wide SIMD: the
+// traversal and shading loops then diverge, and every lane waits for the longest (at local size
+// 64, 1.8 Mrays/s on the SPD teapot against 10.4 at 8; docs/experiments.md, "Two
+// implementations"). Groups of 8 keep its compiler off that path.
+DeviceTuning tuning_for(const compute::device& device) {
+  DeviceTuning t = tuning_for(classify(device));
+  if (t.device_class == DeviceClass::Cpu && device.platform().name() == "Intel(R) OpenCL")
+    t.local_size = 8;
   return t;
 }
 

@@ -27,6 +27,8 @@ struct DeviceTuning {
 
 DeviceClass classify(const compute::device& device);
 DeviceTuning tuning_for(DeviceClass device_class);
+// The class's tuning, adjusted for the implementation where measurements say so.
+DeviceTuning tuning_for(const compute::device& device);
 const char* class_name(DeviceClass device_class);
 
 }  // namespace clrt

@@ -119,7 +119,7 @@ MachineBudget measure_budget(const std::vector<DeviceEntry>& devices, const Rend
   for (const DeviceEntry& entry : devices) {
     DeviceBudget d;
     d.name = entry.device.name();
-    DeviceTuning tuning = tuning_for(classify(entry.device));
+    DeviceTuning tuning = tuning_for(entry.device);
     d.wavefront = options.wavefront ? options.wavefront : tuning.wavefront;
     d.lanes = options.lanes ? options.lanes : tuning.lanes;
     d.max_allocation = entry.device.get_info<cl_ulong>(CL_DEVICE_MAX_MEM_ALLOC_SIZE);

@@ -25,7 +25,7 @@ double seconds_since(Clock::time_point start) {
 }
 
 DeviceTuning tuning_of(const DeviceEntry& entry, const RenderOptions& options) {
-  DeviceTuning t = tuning_for(classify(entry.device));
+  DeviceTuning t = tuning_for(entry.device);
   if (options.local_size) t.local_size = options.local_size;
   if (options.wavefront) t.wavefront = options.wavefront;
   if (options.lanes) t.lanes = options.lanes;

@@ -7,7 +7,7 @@ namespace clrt {
 
 compute::program build_renderer_program(const DeviceContext& device) {
   return device.build(renderer_program_source(),
-                      tuning_for(classify(device.device())).program_options());
+                      tuning_for(device.device()).program_options());
 }
 
 }  // namespace clrt

@@ -3,6 +3,8 @@
 // tested end to end in tests/render/test_cli_program_cache.cpp.)
 #include <catch2/catch.hpp>
 
+#include <sys/stat.h>
+
 #include <cstdlib>
 #include <fstream>
 #include <iterator>
@@ -70,6 +72,37 @@ TEST_CASE("a file under the entry's name with another header is a miss", "[progr
     dir.write(cache.file().filename().string(), damaged);
     CHECK_FALSE(cache.load());
   }
+}
+
+TEST_CASE("an entry cut short, or with any byte changed, is a miss", "[program-cache]") {
+  clrt::test::ScratchDir dir;
+  const ProgramCache cache(dir.path(), "identity");
+  const std::string payload = "a payload of some length\n\x01\x02 with binary bytes";
+  cache.store(payload);
+  const std::string stored = contents(cache.file());
+  REQUIRE(cache.load() == payload);
+  for (std::size_t cut = 0; cut < stored.size(); cut += 3) {
+    INFO("cut to " << cut << " bytes");
+    dir.write(cache.file().filename().string(), stored.substr(0, cut));
+    CHECK_FALSE(cache.load());
+  }
+  for (std::size_t at = 0; at < stored.size(); ++at) {
+    std::string flipped = stored;
+    flipped[at] = static_cast<char>(flipped[at] ^ 0x10);
+    INFO("bit 4 of byte " << at << " flipped");
+    dir.write(cache.file().filename().string(), flipped);
+    CHECK_FALSE(cache.load());
+  }
+}
+
+TEST_CASE("a FIFO or a folder under the entry's name is a miss, without blocking", "[program-cache]") {
+  clrt::test::ScratchDir dir;
+  const ProgramCache cache(dir.path(), "identity");
+  REQUIRE(::mkfifo(cache.file().c_str(), 0600) == 0);
+  CHECK_FALSE(cache.load());  // a blocking open would wait here for a writer forever
+  std::filesystem::remove(cache.file());
+  std::filesystem::create_directory(cache.file());
+  CHECK_FALSE(cache.load());
 }
 
 TEST_CASE("a folder that cannot be made leaves the cache empty, quietly", "[program-cache]") {

@@ -69,7 +69,7 @@ TEST_CASE("float3 values reach every work-item's function call intact under clrt
   run(test_program(kKernels),
       Float3CallsArgs{upload(a), upload(b), static_cast<cl_uint>(kCount), out_of_line, inlined,
                       callable},
-      kCount);
+      kCount, 64);
   const int faulty = wrong_items(a, b, download(out_of_line, kCount));
   // Reported whatever the outcome: docs/devices.md lists the implementations that have it.
   std::cout << "float3 arguments of an out-of-line function on " << device().name() << ": "

@@ -20,7 +20,7 @@ DeviceContext& device() {
   return context;
 }
 
-std::size_t local_size() { return tuning_for(classify(device().device())).local_size; }
+std::size_t local_size() { return tuning_for(device().device()).local_size; }
 
 std::string test_device_spec() {
   const char* spec = std::getenv("CLRT_TEST_DEVICE");

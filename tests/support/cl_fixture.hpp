@@ -46,13 +46,14 @@ std::size_t local_size();
 // Throws std::logic_error naming every mismatch when `kernel`'s signature and `Args` disagree.
 void check_binding(const compute::kernel& kernel, const std::vector<ExpectedArg>& expected);
 
-// Launches kernel Args::kName of `program` with `args` over `count` work-items and waits. The
-// binding is checked against the kernel's signature first.
+// Launches kernel Args::kName of `program` with `args` over `count` work-items in groups of
+// `group_size` and waits. The binding is checked against the kernel's signature first.
 template <class Args>
-void run(const compute::program& program, const Args& args, std::size_t count) {
+void run(const compute::program& program, const Args& args, std::size_t count,
+         std::size_t group_size = local_size()) {
   TypedKernel<Args> kernel(program);
   check_binding(kernel.kernel(), expected_args(args));
-  kernel.launch(device().queue(), args, count, local_size());
+  kernel.launch(device().queue(), args, count, group_size);
   device().queue().finish();
 }
 

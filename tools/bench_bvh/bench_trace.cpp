@@ -88,7 +88,7 @@ Tracer::Tracer(DeviceContext& device, const GeometryData& geometry)
       program_(device.build(assemble_kernel_source(kSource, "bench_bvh.cl"))),
       closest_(program_),
       any_(program_),
-      local_size_(tuning_for(classify(device.device())).local_size) {}
+      local_size_(tuning_for(device.device()).local_size) {}
 
 Throughput Tracer::closest_hit_mrays(const RaySet& rays, int runs) {
   return measure(closest_, &BvhClosestHitsArgs::hits, rays, runs);

@@ -29,7 +29,7 @@ ClrtTracer::ClrtTracer(DeviceContext& device, const compute::program& program,
       params_(upload(device, std::vector<dev::RenderParams>{tracing_params()}, "render parameters")),
       intersect_(program),
       shadow_(program),
-      local_size_(tuning_for(classify(device.device())).local_size) {}
+      local_size_(tuning_for(device.device()).local_size) {}
 
 ClrtBatch ClrtTracer::closest_batch(const RaySet& set) {
   std::vector<dev::Ray> rays;
