@@ -29,6 +29,17 @@
 
 #define SCENE_PARAMS uint instance_count, uint plane_count, __global const Instance* instances, __global const Mesh* meshes, __global const TriangleNormals* triangle_normals, __global const uint* triangle_materials, __global const BvhBlock* bvh
 #define SCENE_ARGS instance_count, plane_count, instances, meshes, triangle_normals, triangle_materials, bvh
+/* The same tables kept in one value by a function that needs them later (a sink), and passed on
+ * from it: SceneTables t = {SCENE_ARGS}; scene_any_hit(SCENE_ARGS_OF(t), ...). */
+typedef struct SceneTables {
+  uint instance_count, plane_count;
+  __global const Instance* instances;
+  __global const Mesh* meshes;
+  __global const TriangleNormals* triangle_normals;
+  __global const uint* triangle_materials;
+  __global const BvhBlock* bvh;
+} SceneTables;
+#define SCENE_ARGS_OF(t) (t).instance_count, (t).plane_count, (t).instances, (t).meshes, (t).triangle_normals, (t).triangle_materials, (t).bvh
 
 /* Canonical shape instance `index` against the world ray; updates *best on a hit in
  * (tmin, best->t). */

@@ -15,6 +15,9 @@ CLRT_SHARED_BEGIN
 #define CLRT_RAY_SHADOW 3u
 #define CLRT_RAY_KINDS 4u
 
+/* Child-ray slots per ray of a queue: its reflection (slot 0) and its refraction (slot 1). */
+#define CLRT_CHILD_SLOTS 2u
+
 /* A camera, reflection or refraction ray. Queues are kept sorted by `sample` (camera rays are
  * generated in sample order and compaction is stable), which is what lets contributions be
  * summed per sample in a fixed order without atomics. */

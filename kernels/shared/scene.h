@@ -29,7 +29,6 @@ CLRT_CHECK_SIZE(Material, 48);
 #define CLRT_LIGHT_DIRECTIONAL 1u
 #define CLRT_LIGHT_SPOT 2u
 #define CLRT_LIGHT_AREA 3u
-#define CLRT_LIGHT_KINDS 4u
 
 /* Non-ambient lights only: ambient lights are summed into RenderParams.ambient. */
 typedef struct Light {
@@ -105,8 +104,7 @@ typedef struct RenderParams {
   u32 max_depth;
   u32 mode;           /* CLRT_MODE_* */
   float epsilon;
-  u32 seed;
-  u32 pad[2];
+  u32 pad[3];
 } RenderParams;
 CLRT_CHECK_SIZE(RenderParams, 64);
 

@@ -95,11 +95,13 @@ void add_device_options(CLI::App& app, CliOptions& o) {
   app.add_flag("--list-devices", o.list_devices, "list the OpenCL devices and exit");
   app.add_option("--threads", o.threads, "CPU threads of PoCL's or Intel's CPU device (default: every core)")
       ->check(CLI::Range(1u, 4096u));
+  std::string integrators;
+  for (const IntegratorEntry& entry : integrator_table())
+    integrators += std::string(integrators.empty() ? "" : "; ") + entry.name + ": " + entry.summary;
   app.add_option_function<std::string>(
          "--integrator", [&](const std::string& name) { o.integrator = *parse_integrator(name); },
-         "wavefront (default: one kernel per stage, queues compacted every pass) or megakernel "
-         "(one kernel walks each sample's whole ray tree; same image, for comparison)")
-      ->check(CLI::IsMember({"wavefront", "megakernel"}, CLI::ignore_case));
+         integrators + " (every integrator renders the same image)")
+      ->check(CLI::IsMember(integrator_names(), CLI::ignore_case));
   app.add_option("--wavefront", o.wavefront,
                  "rays in flight per queue: device memory grows with it "
                  "(default: 16384 on CPU devices, 1048576 on others)")

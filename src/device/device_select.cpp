@@ -56,12 +56,18 @@ std::vector<DeviceEntry> matching(const std::vector<DeviceEntry>& all, const std
 
 }  // namespace
 
+// CL_PLATFORM_NOT_FOUND_KHR of cl_khr_icd, which the headers declare only with cl_ext.h.
+constexpr cl_int kPlatformNotFound = -1001;
+
 std::vector<DeviceEntry> enumerate_devices() {
   std::vector<compute::platform> platforms;
   try {
     platforms = compute::system::platforms();
-  } catch (const compute::opencl_error&) {
-    platforms.clear();  // the ICD loader reports "no platform" as an error code
+  } catch (const compute::opencl_error& e) {
+    // The ICD loader reports "no platform" as an error code; any other code is a real failure.
+    if (e.error_code() != kPlatformNotFound)
+      throw DeviceError("cannot list the OpenCL platforms: " + e.error_string() + " (error " +
+                        std::to_string(e.error_code()) + ")");
   }
   if (platforms.empty())
     throw DeviceError(

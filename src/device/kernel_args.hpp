@@ -12,9 +12,7 @@
 #include <vector>
 
 #include "device/opencl.hpp"
-#include "shared/bvh.h"
-#include "shared/ray.h"
-#include "shared/scene.h"
+#include "shared/common.h"
 
 namespace clrt {
 
@@ -29,7 +27,9 @@ struct Global {
   operator Global<const T>() const { return Global<const T>(buffer); }
 };
 
-// The OpenCL C name of each type that crosses as a kernel argument or a buffer element.
+// The OpenCL C name of each type that crosses as a kernel argument or a buffer element. The
+// layer that owns a record type names it (geometry/device_geometry.hpp, render/stage_args.hpp),
+// so this layer knows only the scalars.
 template <class T>
 struct DeviceTypeName;
 template <class T>
@@ -47,20 +47,6 @@ CLRT_DEVICE_TYPE_NAME(cl_ulong, "ulong");
 CLRT_DEVICE_TYPE_NAME(float, "float");
 CLRT_DEVICE_TYPE_NAME(dev::f4, "float4");
 CLRT_DEVICE_TYPE_NAME(cl_uint4, "uint4");
-CLRT_DEVICE_TYPE_NAME(dev::Ray, "Ray");
-CLRT_DEVICE_TYPE_NAME(dev::Hit, "Hit");
-CLRT_DEVICE_TYPE_NAME(dev::ShadowRay, "ShadowRay");
-CLRT_DEVICE_TYPE_NAME(dev::Camera, "Camera");
-CLRT_DEVICE_TYPE_NAME(dev::Material, "Material");
-CLRT_DEVICE_TYPE_NAME(dev::Light, "Light");
-CLRT_DEVICE_TYPE_NAME(dev::Instance, "Instance");
-CLRT_DEVICE_TYPE_NAME(dev::Mesh, "Mesh");
-CLRT_DEVICE_TYPE_NAME(dev::Triangle, "Triangle");
-CLRT_DEVICE_TYPE_NAME(dev::TriangleNormals, "TriangleNormals");
-CLRT_DEVICE_TYPE_NAME(dev::RenderParams, "RenderParams");
-CLRT_DEVICE_TYPE_NAME(dev::BvhBlock, "BvhBlock");
-
-#undef CLRT_DEVICE_TYPE_NAME
 
 // What the host expects of one kernel parameter.
 struct ExpectedArg {

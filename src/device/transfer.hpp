@@ -7,7 +7,7 @@
 
 #include "device/device_context.hpp"
 #include "device/kernel_args.hpp"
-#include "geometry/device_tables.hpp"
+#include "math/page_aligned_allocator.hpp"
 
 namespace clrt {
 
@@ -21,9 +21,11 @@ Global<T> upload(DeviceContext& device, const std::vector<T, A>& table, const st
 }
 
 // A read-only buffer of `table`: on a device that works in host memory, `table` itself (it must
-// then outlive the buffer and stay unchanged), elsewhere a copy.
+// then outlive the buffer and stay unchanged; page alignment is what lets a driver use it in
+// place), elsewhere a copy.
 template <class T>
-Global<const T> share(DeviceContext& device, const DeviceTable<T>& table, const std::string& what) {
+Global<const T> share(DeviceContext& device, const std::vector<T, PageAlignedAllocator<T>>& table,
+                      const std::string& what) {
   if (table.empty() || !device.works_in_host_memory()) return upload(device, table, what);
   return Global<const T>(device.share_host_memory(table.data(), sizeof(T) * table.size(), what));
 }

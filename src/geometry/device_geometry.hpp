@@ -5,8 +5,18 @@
 #include "device/device_context.hpp"
 #include "device/kernel_args.hpp"
 #include "geometry/geometry_data.hpp"
+#include "shared/bvh.h"
+#include "shared/ray.h"
+#include "shared/scene.h"
 
 namespace clrt {
+
+CLRT_DEVICE_TYPE_NAME(dev::Instance, "Instance");
+CLRT_DEVICE_TYPE_NAME(dev::Mesh, "Mesh");
+CLRT_DEVICE_TYPE_NAME(dev::Triangle, "Triangle");
+CLRT_DEVICE_TYPE_NAME(dev::TriangleNormals, "TriangleNormals");
+CLRT_DEVICE_TYPE_NAME(dev::BvhBlock, "BvhBlock");
+CLRT_DEVICE_TYPE_NAME(dev::Hit, "Hit");  // what the tracing kernels find
 
 // The SCENE_PARAMS, in their order.
 struct SceneArgs {

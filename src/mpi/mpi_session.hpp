@@ -19,7 +19,7 @@ class Session {
 
   int rank() const { return rank_; }
   int size() const { return size_; }
-  // The rank among those on the same node (picks the node's GPU, see README "Scale-out").
+  // The rank among those on the same node (picks the node's GPU, see docs/scale-out.md).
   int local_rank() const { return local_rank_; }
   bool first() const { return rank_ == 0; }
 

@@ -4,7 +4,8 @@
 #include <cstddef>
 #include <cstdint>
 
-#include "render/profiler.hpp"
+#include "render/launcher.hpp"
+#include "render/stage_args.hpp"
 
 namespace clrt {
 
@@ -17,11 +18,11 @@ class Compactor {
   // `capacity` of them); the number flagged is left on the device in total(), where kernels
   // read it. Launches are recorded under `pass`.
   template <class Record>
-  void enqueue(Profiler& profiler, const Global<Record>& in, const Global<cl_uint>& flags,
+  void enqueue(Launcher& launcher, const Global<Record>& in, const Global<cl_uint>& flags,
                std::size_t slots, const Global<Record>& out, std::size_t capacity,
                std::uint32_t pass) {
     static_assert(sizeof(Record) % sizeof(cl_uint4) == 0, "records move as whole uint4 words");
-    enqueue_words(profiler, in.buffer, flags, slots, sizeof(Record) / sizeof(cl_uint4),
+    enqueue_words(launcher, in.buffer, flags, slots, sizeof(Record) / sizeof(cl_uint4),
                   out.buffer, capacity, pass);
   }
 
@@ -36,7 +37,7 @@ class Compactor {
   static constexpr std::uint32_t kChunk = 256;
 
  private:
-  void enqueue_words(Profiler& profiler, const compute::buffer& in, const Global<cl_uint>& flags,
+  void enqueue_words(Launcher& launcher, const compute::buffer& in, const Global<cl_uint>& flags,
                      std::size_t slots, std::size_t words, const compute::buffer& out,
                      std::size_t capacity, std::uint32_t pass);
 

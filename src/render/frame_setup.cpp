@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "scene/limits.hpp"
+
 namespace clrt {
 namespace {
 
@@ -75,13 +77,17 @@ std::vector<dev::Light> make_lights(const Scene& scene) {
   std::vector<dev::Light> out;
   dev::u32 first_sample = 0;
   for (const LightSpec& l : scene.lights) {
-    if (l.kind == LightKind::Ambient) continue;
     dev::Light d{};
     d.color = f4_of(l.color);
     d.position = f4_of(l.position);
-    d.samples = 1;
+    d.samples = static_cast<dev::u32>(shadow_samples(l));
     d.grid_u = d.grid_v = 1;
     switch (l.kind) {
+      case LightKind::Ambient:
+        continue;  // summed into RenderParams.ambient
+      case LightKind::Point:
+        d.kind = CLRT_LIGHT_POINT;
+        break;
       case LightKind::Directional:
         d.kind = CLRT_LIGHT_DIRECTIONAL;
         d.direction = f4_of(normalize(l.direction));
@@ -96,15 +102,11 @@ std::vector<dev::Light> make_lights(const Scene& scene) {
         d.kind = CLRT_LIGHT_AREA;
         d.edge_u = f4_of(l.edge_u);
         d.edge_v = f4_of(l.edge_v);
-        d.samples = static_cast<dev::u32>(l.samples);
         const Grid grid = stratification_grid(d.samples);
         d.grid_u = grid.u;
         d.grid_v = grid.v;
         break;
       }
-      default:
-        d.kind = CLRT_LIGHT_POINT;
-        break;
     }
     d.first_sample = first_sample;
     first_sample += d.samples;
@@ -117,17 +119,18 @@ dev::RenderParams make_params(const Scene& scene, const RenderOptions& options) 
   dev::RenderParams p{};
   p.background = f4_of(scene.background);
   Vec3 ambient;
-  for (const LightSpec& l : scene.lights)
-    if (l.kind == LightKind::Ambient) ambient = ambient + l.color;
-  p.ambient = f4_of(ambient);
-  for (const dev::Light& l : make_lights(scene)) {
-    ++p.light_count;
-    p.shadow_samples += l.samples;
+  for (const LightSpec& l : scene.lights) {
+    if (l.kind == LightKind::Ambient) {
+      ambient = ambient + l.color;
+    } else {
+      ++p.light_count;  // an entry of make_lights' table
+      p.shadow_samples += static_cast<dev::u32>(shadow_samples(l));
+    }
   }
+  p.ambient = f4_of(ambient);
   p.max_depth = static_cast<dev::u32>(options.max_depth);
   p.mode = options.mode == RenderMode::Cast ? CLRT_MODE_CAST : CLRT_MODE_TRACE;
   p.epsilon = kEpsilon;
-  p.seed = options.seed;
   return p;
 }
 

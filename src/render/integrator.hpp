@@ -1,23 +1,28 @@
-// An integrator renders rectangles of the image on one device. Two exist: the wavefront
-// (render/wavefront.hpp), the product, and the megakernel (render/megakernel.hpp), the design it
-// is compared with; both give the same bits (kernels/accumulate.cl says why).
+// An integrator renders rectangles of the image on one device. Each is one host file (its class
+// and its IntegratorEntry) and one device file, listed once in integrator_table(): the command
+// line, the checks before a render, the experiment runner and the renderer all read that table.
+// Two exist: the wavefront (render/wavefront.hpp), the product, and the megakernel
+// (render/megakernel.hpp), the design it is compared with; both give the same bits
+// (kernels/accumulate.cl says why).
 #pragma once
 
 #include <cstdint>
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
+#include "device/device_tuning.hpp"
 #include "render/busy_timeline.hpp"
+#include "render/device_buffer.hpp"
 #include "render/device_frame.hpp"
 #include "render/pixel_rect.hpp"
 #include "render/pixel_store.hpp"
+#include "render/render_options.hpp"
 #include "render/render_stats.hpp"
+#include "render/wave_sizes.hpp"
 
 namespace clrt {
-
-const char* integrator_name(IntegratorKind kind);
-std::optional<IntegratorKind> parse_integrator(const std::string& name);  // any case
 
 struct IntegratorConfig {
   std::uint32_t capacity = 0;      // rays per queue (wavefront), camera samples per launch (both)
@@ -40,13 +45,24 @@ class Integrator {
   virtual std::uint64_t device_bytes() const = 0;
 };
 
-// Throws UsageError when the megakernel's stack (the device's CLRT_MEGAKERNEL_DEPTH) cannot
-// hold a ray tree of `max_depth`: checked before any work.
-void check_megakernel_depth(std::uint32_t max_depth, std::uint32_t stack_depth);
+struct IntegratorEntry {
+  IntegratorKind kind;
+  const char* name;     // as --integrator takes it
+  const char* summary;  // one line for --help
+  // Throws UsageError when a render of `options` cannot run with it on a device tuned as
+  // `tuning`: called before any work.
+  void (*check)(const RenderOptions& options, const DeviceTuning& tuning);
+  // The buffers one lane of it allocates for waves of `sizes`, each as the allocation names it:
+  // the checks before a render hold these against the device's limits.
+  std::vector<DeviceBuffer> (*buffers)(const WaveSizes& sizes);
+  std::unique_ptr<Integrator> (*make)(DeviceContext& device, const compute::program& program,
+                                      const DeviceFrame& frame, const IntegratorConfig& config);
+};
 
-std::unique_ptr<Integrator> make_integrator(IntegratorKind kind, DeviceContext& device,
-                                            const compute::program& program,
-                                            const DeviceFrame& frame,
-                                            const IntegratorConfig& config);
+// Every integrator, the product first.
+const std::vector<IntegratorEntry>& integrator_table();
+const IntegratorEntry& integrator_entry(IntegratorKind kind);
+std::optional<IntegratorKind> parse_integrator(const std::string& name);  // any case
+std::vector<std::string> integrator_names();
 
 }  // namespace clrt

@@ -4,9 +4,17 @@
 #pragma once
 
 #include "render/integrator.hpp"
+#include "render/profiler.hpp"
 #include "render/wave_resolver.hpp"
 
 namespace clrt {
+
+// Its own buffers, X(member, element, length in elements of WaveSizes s, name); the resolver's
+// come with them.
+#define CLRT_MEGAKERNEL_BUFFERS(X) \
+  X(ray_counts_, cl_uint, CLRT_RAY_KINDS * s.wave_samples, "ray count")
+
+const IntegratorEntry& megakernel_integrator();
 
 class MegakernelIntegrator final : public Integrator {
  public:
@@ -20,9 +28,11 @@ class MegakernelIntegrator final : public Integrator {
 
  private:
   const DeviceFrame& frame_;
+  IntegratorConfig config_;
   std::uint32_t samples_per_pixel_, wave_pixels_;
   WaveResolver resolver_;
-  Global<cl_uint> ray_counts_;  // CLRT_RAY_KINDS per camera sample of a wave
+  CLRT_MEGAKERNEL_BUFFERS(CLRT_BUFFER_MEMBER)
+  Launcher launcher_;
   Profiler profiler_;
   TypedKernel<MegakernelArgs> megakernel_;
   std::uint64_t waves_ = 0;

@@ -10,23 +10,20 @@ void fill_zero(DeviceContext& device, const Global<cl_ulong>& buffer, std::size_
   device.queue().enqueue_fill_buffer(buffer.buffer, &zero, sizeof zero, 0, sizeof zero * count);
 }
 
-
-
 }  // namespace
 
-Profiler::Profiler(DeviceContext& device, const compute::program& program, bool enabled,
-                   std::size_t local_size, std::uint32_t passes, std::uint32_t partial_rows,
-                   BusyTimeline* timeline)
-    : device_(device),
+Profiler::Profiler(Launcher& launcher, const compute::program& program, bool enabled,
+                   std::uint32_t passes, std::uint32_t partial_rows, BusyTimeline* timeline)
+    : launcher_(launcher),
+      device_(launcher.device()),
       enabled_(enabled),
       timeline_(timeline),
-      local_size_(local_size),
       passes_(passes),
-      partial_(allocate<cl_uint>(device, enabled ? std::size_t{partial_rows} * CLRT_RAY_KINDS : 1,
+      partial_(allocate<cl_uint>(device_, enabled ? std::size_t{partial_rows} * CLRT_RAY_KINDS : 1,
                                  "ray count")),
-      staging_(allocate<cl_ulong>(device, enabled ? std::size_t{passes} * CLRT_RAY_KINDS : 1,
+      staging_(allocate<cl_ulong>(device_, enabled ? std::size_t{passes} * CLRT_RAY_KINDS : 1,
                                   "ray count")),
-      totals_(allocate<cl_ulong>(device, enabled ? std::size_t{passes} * CLRT_RAY_KINDS : 1,
+      totals_(allocate<cl_ulong>(device_, enabled ? std::size_t{passes} * CLRT_RAY_KINDS : 1,
                                  "ray count")),
       count_ray_kinds_(program),
       fold_ray_counts_(program),
@@ -41,38 +38,38 @@ Profiler::Profiler(DeviceContext& device, const compute::program& program, bool 
 void Profiler::count_queue(const Global<dev::Ray>& rays, std::uint32_t count, std::uint32_t pass) {
   if (!enabled_ || count == 0) return;
   const std::uint32_t chunks = (count + kCountChunk - 1) / kCountChunk;
-  launch(count_ray_kinds_, {rays, count, kCountChunk, partial_}, chunks, pass);
-  launch(add_ray_kinds_, {partial_, chunks, pass, staging_}, 1, pass);
+  launcher_.launch(count_ray_kinds_, {rays, count, kCountChunk, partial_}, chunks, pass);
+  launcher_.launch(add_ray_kinds_, {partial_, chunks, pass, staging_}, 1, pass);
 }
 
 void Profiler::count_rows(const Global<cl_uint>& rows, std::uint32_t row_count,
                           std::uint32_t pass) {
   if (!enabled_ || row_count == 0) return;
   const std::uint32_t chunks = (row_count + kCountChunk - 1) / kCountChunk;
-  launch(fold_ray_counts_, {rows, row_count, kCountChunk, partial_}, chunks, pass);
-  launch(add_ray_kinds_, {partial_, chunks, pass, staging_}, 1, pass);
+  launcher_.launch(fold_ray_counts_, {rows, row_count, kCountChunk, partial_}, chunks, pass);
+  launcher_.launch(add_ray_kinds_, {partial_, chunks, pass, staging_}, 1, pass);
 }
 
 void Profiler::count_shadows(const Global<cl_uint>& count, std::uint32_t pass) {
   if (!enabled_) return;
-  launch(add_shadow_rays_, {count, pass, staging_}, 1, pass);
+  launcher_.launch(add_shadow_rays_, {count, pass, staging_}, 1, pass);
 }
 
 void Profiler::commit_wave() {
   if (!enabled_) return;
   const std::uint32_t entries = passes_ * CLRT_RAY_KINDS;
-  launch(commit_ray_counts_, {entries, staging_, totals_}, entries, 0);
+  launcher_.launch(commit_ray_counts_, {entries, staging_, totals_}, entries, 0);
 }
 
 void Profiler::drop_wave(std::size_t mark) {
   if (!enabled_) return;
   device_.queue().finish();
-  timed_.erase(timed_.begin() + static_cast<std::ptrdiff_t>(mark), timed_.end());
+  launcher_.forget_since(mark);
   fill_zero(device_, staging_, std::size_t{passes_} * CLRT_RAY_KINDS);
 }
 
 void Profiler::settle() {
-  for (const Timed& t : timed_) {
+  for (const TimedLaunch& t : launcher_.take()) {
     const auto start = t.event.get_profiling_info<cl_ulong>(CL_PROFILING_COMMAND_START);
     const auto end = t.event.get_profiling_info<cl_ulong>(CL_PROFILING_COMMAND_END);
     if (timeline_) timeline_->add(start, end, t.kernel);
@@ -83,7 +80,6 @@ void Profiler::settle() {
     if (pass_seconds_.size() <= t.pass) pass_seconds_.resize(t.pass + 1);
     pass_seconds_[t.pass] += seconds;
   }
-  timed_.clear();
 }
 
 void Profiler::harvest(RenderStats& stats) {

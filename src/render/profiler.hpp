@@ -1,8 +1,7 @@
-// Profiling of one device's render: per-kernel and per-pass device times, and rays by kind.
-// Nothing here waits on the device before harvest(): launch events are kept and read then, and
-// ray counts are added up on the device (kernels/ray_counts.cl), so turning --stats on does not
-// change what it measures. Every launch of an integrator goes through launch(), which records
-// the event only when profiling is on.
+// Profiling of one lane's render: per-kernel and per-pass device times, and rays by kind.
+// Nothing here waits on the device before harvest(): the Launcher keeps launch events, read
+// here when a wave ends, and ray counts are added up on the device (kernels/ray_counts.cl), so
+// turning --stats on does not change what it measures.
 #pragma once
 
 #include <cstdint>
@@ -11,8 +10,8 @@
 #include <vector>
 
 #include "device/device_context.hpp"
-#include "device/typed_kernel.hpp"
 #include "render/busy_timeline.hpp"
+#include "render/launcher.hpp"
 #include "render/render_stats.hpp"
 #include "render/stage_args.hpp"
 
@@ -20,20 +19,11 @@ namespace clrt {
 
 class Profiler {
  public:
-  // `passes`: the most passes a wave can take (the deepest ray plus one).
-  // `timeline` (may be null) collects the kernels' execution intervals.
-  Profiler(DeviceContext& device, const compute::program& program, bool enabled,
-           std::size_t local_size, std::uint32_t passes, std::uint32_t partial_rows,
-           BusyTimeline* timeline = nullptr);
-
-  bool enabled() const { return enabled_; }
-  std::size_t local_size() const { return local_size_; }
-
-  template <class Args>
-  void launch(TypedKernel<Args>& kernel, const Args& args, std::size_t items, std::uint32_t pass) {
-    compute::event e = kernel.launch(device_.queue(), args, items, local_size_);
-    if (enabled_ && items > 0) timed_.push_back({Args::kName, pass, e});
-  }
+  // Reads the times of `launcher`'s launches (timed when `enabled`) and launches its own
+  // counting kernels through it. `passes`: the most passes a wave can take (the deepest ray
+  // plus one). `timeline` (may be null) collects the kernels' execution intervals.
+  Profiler(Launcher& launcher, const compute::program& program, bool enabled,
+           std::uint32_t passes, std::uint32_t partial_rows, BusyTimeline* timeline = nullptr);
 
   // Rays by kind of a queue of `count` rays, into the current wave's pass `pass`.
   void count_queue(const Global<dev::Ray>& rays, std::uint32_t count, std::uint32_t pass);
@@ -43,7 +33,7 @@ class Profiler {
   void count_rows(const Global<cl_uint>& rows, std::uint32_t row_count, std::uint32_t pass);
 
   // A wave ends: its counts and times join the render's (commit) or are dropped (it is retried).
-  std::size_t wave_mark() const { return timed_.size(); }
+  std::size_t wave_mark() const { return launcher_.mark(); }
   void commit_wave();
   void drop_wave(std::size_t mark);
 
@@ -58,18 +48,11 @@ class Profiler {
   static constexpr std::uint32_t kCountChunk = 256;
 
  private:
-  struct Timed {
-    const char* kernel;
-    std::uint32_t pass;
-    compute::event event;
-  };
-
+  Launcher& launcher_;
   DeviceContext& device_;
   bool enabled_;
   BusyTimeline* timeline_;
-  std::size_t local_size_;
   std::uint32_t passes_;
-  std::vector<Timed> timed_;
   std::map<std::string, KernelStats> kernels_;  // settled times
   std::vector<double> pass_seconds_;
   Global<cl_uint> partial_;

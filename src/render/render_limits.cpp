@@ -1,15 +1,14 @@
 #include "render/render_limits.hpp"
 
-#include "device/device_tuning.hpp"
-
 #include <unistd.h>
 
 #include <algorithm>
 #include <fstream>
 #include <sstream>
 
+#include "render/integrator.hpp"
+#include "render/render_tuning.hpp"
 #include "render/wave_sizes.hpp"
-#include "render/wavefront.hpp"
 #include "scene/limits.hpp"
 
 namespace clrt {
@@ -76,7 +75,7 @@ std::uint64_t check_device(const Scene& scene, const RenderOptions& o, const Dev
   const WaveSizes sizes = wave_sizes(device.wavefront, static_cast<std::uint64_t>(o.samples),
                                      shadow_samples_per_point(scene));
   std::uint64_t queues = 0;
-  for (const WaveSizes::Buffer& buffer : sizes.buffers()) {
+  for (const DeviceBuffer& buffer : integrator_entry(o.integrator).buffers(sizes)) {
     if (buffer.bytes > device.max_allocation)
       refuse(1, "the " + buffer.what + " buffer needs " + mib(buffer.bytes) + " on " + device.name +
                     ", more than its largest allocation (" + mib(device.max_allocation) +
@@ -119,9 +118,9 @@ MachineBudget measure_budget(const std::vector<DeviceEntry>& devices, const Rend
   for (const DeviceEntry& entry : devices) {
     DeviceBudget d;
     d.name = entry.device.name();
-    DeviceTuning tuning = tuning_for(entry.device);
-    d.wavefront = options.wavefront ? options.wavefront : tuning.wavefront;
-    d.lanes = options.lanes ? options.lanes : tuning.lanes;
+    const DeviceTuning tuning = render_tuning(entry.device, options);
+    d.wavefront = tuning.wavefront;
+    d.lanes = tuning.lanes;
     d.max_allocation = entry.device.get_info<cl_ulong>(CL_DEVICE_MAX_MEM_ALLOC_SIZE);
     d.global_memory = entry.device.get_info<cl_ulong>(CL_DEVICE_GLOBAL_MEM_SIZE);
     d.uses_host_memory = entry.device.get_info<cl_bool>(CL_DEVICE_HOST_UNIFIED_MEMORY) == CL_TRUE;

@@ -1,5 +1,5 @@
 // Everything a render will need, checked against what clrt allows and what the machine has,
-// before any work (BVH build, kernel build, render). See README, "Reliability".
+// before any work (BVH build, kernel build, render). See docs/reliability.md.
 #pragma once
 
 #include <cstdint>
@@ -51,7 +51,7 @@ void check_render_limits(const Scene& scene, const RenderOptions& options,
                          const MachineBudget& budget);
 
 // Estimated bytes the scene's geometry tables take on a device (BVH nodes and leaf packets,
-// instances, normals): measured 165 to 220 bytes per triangle or instance (README, BVH
+// instances, normals): measured 165 to 220 bytes per triangle or instance (docs/performance.md, BVH
 // scaling); 256 are assumed.
 std::uint64_t estimated_geometry_bytes(const Scene& scene);
 

@@ -5,6 +5,7 @@
 #include <exception>
 #include <memory>
 #include <mutex>
+#include <string>
 #include <thread>
 
 #include "device/device_tuning.hpp"
@@ -12,6 +13,7 @@
 #include "render/frame_setup.hpp"
 #include "render/integrator.hpp"
 #include "render/progress.hpp"
+#include "render/render_tuning.hpp"
 #include "render/renderer_program.hpp"
 #include "render/usage_error.hpp"
 
@@ -22,14 +24,6 @@ using Clock = std::chrono::steady_clock;
 
 double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
-}
-
-DeviceTuning tuning_of(const DeviceEntry& entry, const RenderOptions& options) {
-  DeviceTuning t = tuning_for(entry.device);
-  if (options.local_size) t.local_size = options.local_size;
-  if (options.wavefront) t.wavefront = options.wavefront;
-  if (options.lanes) t.lanes = options.lanes;
-  return t;
 }
 
 DeviceReport report_of(const DeviceEntry& entry, const DeviceTuning& tuning) {
@@ -52,9 +46,12 @@ struct Lane {
   std::unique_ptr<Integrator> integrator;
 };
 
-// One device: the frame every lane reads, and the lanes.
+// One device: the frame every lane reads, and the lanes. The program is held for as long as its
+// kernels run: the specification says kernels keep it alive, but Intel's CPU runtime rendered
+// black images when only the kernels did (docs/devices.md).
 struct DeviceWorker {
   std::unique_ptr<DeviceContext> context;
+  compute::program program;
   std::unique_ptr<DeviceFrame> frame;
   std::vector<Lane> lanes;
   std::unique_ptr<BusyTimeline> timeline;
@@ -71,7 +68,7 @@ class RowDealer {
   bool next(std::uint32_t wave_pixels, PixelRect& band) {
     const std::uint32_t rows = std::max<std::uint32_t>(1, wave_pixels / region_.width);
     std::lock_guard<std::mutex> lock(mutex_);
-    if (next_row_ >= region_.height) return false;
+    if (stopped_ || next_row_ >= region_.height) return false;
     band = region_;
     band.y = region_.y + next_row_;
     band.height = std::min(rows, region_.height - next_row_);
@@ -79,11 +76,42 @@ class RowDealer {
     return true;
   }
 
+  // After a lane fails, the others finish their band and take no more.
+  void stop() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    stopped_ = true;
+  }
+
  private:
   PixelRect region_;
   std::uint32_t next_row_ = 0;
+  bool stopped_ = false;
   std::mutex mutex_;
 };
+
+// Every lane's failure, not only the first: one alone (or the same one on every lane) is
+// rethrown as it is, different ones become one DeviceError listing each.
+void rethrow_lane_errors(const std::vector<std::exception_ptr>& errors) {
+  std::exception_ptr first;
+  std::vector<std::string> messages;
+  for (const std::exception_ptr& e : errors) {
+    if (!e) continue;
+    if (!first) first = e;
+    try {
+      std::rethrow_exception(e);
+    } catch (const std::exception& ex) {
+      if (std::find(messages.begin(), messages.end(), ex.what()) == messages.end())
+        messages.emplace_back(ex.what());
+    } catch (...) {
+      messages.emplace_back("an unknown failure");
+    }
+  }
+  if (!first) return;
+  if (messages.size() == 1) std::rethrow_exception(first);
+  std::string all = "the devices failed in " + std::to_string(messages.size()) + " ways:";
+  for (const std::string& m : messages) all += "\n  " + m;
+  throw DeviceError(all);
+}
 
 }  // namespace
 
@@ -100,10 +128,9 @@ void check_render_setup(const RenderSetup& setup) {
       region.y + std::uint64_t{region.height} > height)
     throw UsageError("the region " + describe(region) + " is not a non-empty part of the " +
                      std::to_string(width) + "x" + std::to_string(height) + " image");
-  if (setup.options.integrator != IntegratorKind::Megakernel) return;
+  const IntegratorEntry& integrator = integrator_entry(setup.options.integrator);
   for (const DeviceEntry& entry : setup.devices)
-    check_megakernel_depth(static_cast<std::uint32_t>(setup.options.max_depth),
-                           tuning_of(entry, setup.options).megakernel_depth);
+    integrator.check(setup.options, render_tuning(entry.device, setup.options));
 }
 
 struct Renderer::Devices {
@@ -140,15 +167,14 @@ Renderer::Renderer(const Scene& scene, GeometryData geometry, const RenderSetup&
   const auto start = Clock::now();
   for (std::size_t i = 0; i < setup.devices.size(); ++i) {
     const DeviceEntry& entry = setup.devices[i];
-    const DeviceTuning tuning = tuning_of(entry, options_);
+    const DeviceTuning tuning = render_tuning(entry.device, options_);
     DeviceWorker w;
-    compute::program program;
     if (i < prepared.size()) {
       w.context = std::move(prepared[i].context);
-      program = prepared[i].program;
+      w.program = prepared[i].program;
     } else {
       w.context = std::make_unique<DeviceContext>(entry);
-      program = build_renderer_program(*w.context);
+      w.program = build_renderer_program(*w.context);
     }
     w.frame = std::make_unique<DeviceFrame>(*w.context, frame, geometry_);
     w.timeline = std::make_unique<BusyTimeline>();
@@ -161,15 +187,15 @@ Renderer::Renderer(const Scene& scene, GeometryData geometry, const RenderSetup&
     for (std::uint32_t k = 0; k < tuning.lanes; ++k) {
       Lane lane;
       lane.context = std::make_unique<DeviceContext>(w.context->lane());
-      lane.integrator =
-          make_integrator(options_.integrator, *lane.context, program, *w.frame, config);
+      lane.integrator = integrator_entry(options_.integrator)
+                            .make(*lane.context, w.program, *w.frame, config);
       w.lanes.push_back(std::move(lane));
     }
     w.report = report_of(entry, tuning);
     devices_->workers.push_back(std::move(w));
   }
   setup_stats_.build_seconds = seconds_since(start);
-  setup_stats_.integrator = integrator_name(options_.integrator);
+  setup_stats_.integrator = integrator_entry(options_.integrator).name;
   setup_stats_.samples_per_pixel = static_cast<std::uint64_t>(options_.samples);
 }
 
@@ -211,6 +237,7 @@ AnyImage Renderer::render(const PixelRect& region, bool eight_bit, Progress* pro
       }
     } catch (...) {
       errors[i] = std::current_exception();
+      dealer.stop();
     }
   };
   if (workers.size() == 1) {
@@ -220,8 +247,7 @@ AnyImage Renderer::render(const PixelRect& region, bool eight_bit, Progress* pro
     for (std::size_t i = 0; i < workers.size(); ++i) threads.emplace_back(work, i);
     for (auto& t : threads) t.join();
   }
-  for (const auto& e : errors)
-    if (e) std::rethrow_exception(e);
+  rethrow_lane_errors(errors);
   render_seconds_ += seconds_since(start);
   return image;
 }

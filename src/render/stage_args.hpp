@@ -6,8 +6,17 @@
 
 #include "device/kernel_args.hpp"
 #include "geometry/device_geometry.hpp"
+#include "shared/ray.h"
+#include "shared/scene.h"
 
 namespace clrt {
+
+CLRT_DEVICE_TYPE_NAME(dev::Ray, "Ray");
+CLRT_DEVICE_TYPE_NAME(dev::ShadowRay, "ShadowRay");
+CLRT_DEVICE_TYPE_NAME(dev::Camera, "Camera");
+CLRT_DEVICE_TYPE_NAME(dev::Material, "Material");
+CLRT_DEVICE_TYPE_NAME(dev::Light, "Light");
+CLRT_DEVICE_TYPE_NAME(dev::RenderParams, "RenderParams");
 
 // The pixels of one wave (kernels/render/camera.h): local pixels [first_pixel, ...) of a
 // rectangle of the image whose top-left pixel is (region_x, region_y), rows region_width wide.

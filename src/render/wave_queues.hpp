@@ -3,42 +3,53 @@
 #pragma once
 
 #include <cstdint>
+#include <vector>
 
 #include "device/device_context.hpp"
-#include "device/kernel_args.hpp"
+#include "render/device_buffer.hpp"
+#include "render/stage_args.hpp"
 #include "render/wave_sizes.hpp"
 
 namespace clrt {
 
+// The queues, each once, as X(member, element, length in elements of WaveSizes s, name):
+//   rays, next_rays   this pass's queue, the next one
+//   hits, colour      hits[i] and colour[i] of rays[i]
+//   spawn_*           CLRT_CHILD_SLOTS per ray (reflection, refraction), compacted into next_rays
+//   shadow_*          shadow samples per ray of a shade chunk, compacted into shadow_queue
+//   visible           visible[j] of shadow_queue[j]
+#define CLRT_WAVE_QUEUE_BUFFERS(X)                                                 \
+  X(rays, dev::Ray, s.capacity, "ray queue")                                      \
+  X(next_rays, dev::Ray, s.capacity, "next ray queue")                            \
+  X(hits, dev::Hit, s.capacity, "hit")                                            \
+  X(colour, dev::f4, s.capacity, "ray colour")                                    \
+  X(spawn_slots, dev::Ray, CLRT_CHILD_SLOTS * s.capacity, "spawned ray slot")     \
+  X(spawn_flags, cl_uint, CLRT_CHILD_SLOTS * s.capacity, "spawned ray flag")      \
+  X(shadow_slots, dev::ShadowRay, s.shadow_buffer_slots(), "shadow ray slot")     \
+  X(shadow_flags, cl_uint, s.shadow_buffer_slots(), "shadow ray flag")            \
+  X(shadow_queue, dev::ShadowRay, s.shadow_buffer_slots(), "shadow ray queue")    \
+  X(visible, dev::f4, s.shadow_buffer_slots(), "shadow visibility")
+
 class WaveQueues {
  public:
-  // Sized as the checks before a render assumed (render/wave_sizes.hpp).
-  WaveQueues(DeviceContext& device, const WaveSizes& sizes, std::uint32_t shadow_samples);
+  WaveQueues(DeviceContext& device, const WaveSizes& sizes);
+  // What the constructor allocates for `sizes`.
+  static std::vector<DeviceBuffer> buffers(const WaveSizes& sizes);
 
   std::uint32_t capacity() const { return capacity_; }
   // Rays shaded per shade launch: their shadow slots fill the shadow buffers.
   std::uint32_t shade_chunk() const { return shade_chunk_; }
-  std::size_t shadow_slots_per_chunk() const { return std::size_t{shade_chunk_} * shadow_samples_; }
+  std::size_t shadow_slots_per_chunk() const { return shadow_slots_; }
   std::uint64_t bytes() const { return bytes_; }
 
   // The next pass's rays become the current ones.
   void advance() { std::swap(rays, next_rays); }
 
-  Global<dev::Ray> rays, next_rays;        // this pass's queue, the next one
-  Global<dev::Hit> hits;                   // hits[i] of rays[i]
-  Global<dev::f4> colour;                  // colour[i] of rays[i]
-  Global<dev::Ray> spawn_slots;            // 2 per ray: reflection, refraction
-  Global<cl_uint> spawn_flags;
-  Global<dev::ShadowRay> shadow_slots;     // shadow_samples per ray of a shade chunk
-  Global<cl_uint> shadow_flags;
-  Global<dev::ShadowRay> shadow_queue;     // the compacted shadow rays
-  Global<dev::f4> visible;                 // visible[j] of shadow_queue[j]
+  CLRT_WAVE_QUEUE_BUFFERS(CLRT_BUFFER_MEMBER)
 
  private:
-  template <class T>
-  Global<T> make(DeviceContext& device, std::size_t count, const char* what);
-
-  std::uint32_t capacity_, shadow_samples_, shade_chunk_;
+  std::uint32_t capacity_, shade_chunk_;
+  std::size_t shadow_slots_;
   std::uint64_t bytes_ = 0;
 };
 

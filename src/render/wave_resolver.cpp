@@ -4,15 +4,16 @@
 
 namespace clrt {
 
+std::vector<DeviceBuffer> WaveResolver::buffers(std::uint64_t samples, std::uint64_t pixels) {
+  return {CLRT_WAVE_RESOLVER_BUFFERS(CLRT_BUFFER_DESCRIBE)};
+}
+
 WaveResolver::WaveResolver(DeviceContext& device, const compute::program& program,
-                           std::uint32_t max_samples, std::uint32_t max_pixels)
-    : device_(device),
-      sample_colour_(allocate<dev::f4>(device, max_samples, "sample colour")),
-      pixels_(allocate<dev::f4>(device, max_pixels, "pixel")),
-      max_samples_(max_samples),
-      max_pixels_(max_pixels),
-      resolve_(program),
-      host_pixels_(max_pixels) {}
+                           std::uint32_t samples, std::uint32_t pixels)
+    : device_(device), resolve_(program), host_pixels_(pixels) {
+  CLRT_WAVE_RESOLVER_BUFFERS(CLRT_BUFFER_ALLOCATE)
+  for (const DeviceBuffer& b : buffers(samples, pixels)) bytes_ += b.bytes;
+}
 
 void WaveResolver::clear(std::uint32_t samples) {
   const dev::f4 zero{0, 0, 0, 0};
@@ -20,17 +21,13 @@ void WaveResolver::clear(std::uint32_t samples) {
                                       sizeof zero * samples);
 }
 
-void WaveResolver::resolve(Profiler& profiler, std::uint32_t samples_per_pixel,
+void WaveResolver::resolve(Launcher& launcher, std::uint32_t samples_per_pixel,
                            std::uint32_t pixel_count, PixelStore& store, std::uint64_t first) {
-  profiler.launch(resolve_, {sample_colour_, samples_per_pixel, pixel_count, pixels_},
+  launcher.launch(resolve_, {sample_colour_, samples_per_pixel, pixel_count, pixels_},
                   pixel_count, 0);
   device_.queue().enqueue_read_buffer(pixels_.buffer, 0, sizeof(dev::f4) * pixel_count,
                                       host_pixels_.data());
   store.store(first, pixel_count, host_pixels_.data());
-}
-
-std::uint64_t WaveResolver::bytes() const {
-  return sizeof(dev::f4) * (std::uint64_t{max_samples_} + max_pixels_);
 }
 
 }  // namespace clrt

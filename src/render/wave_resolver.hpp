@@ -4,30 +4,39 @@
 
 #include <vector>
 
+#include "render/device_buffer.hpp"
 #include "render/pixel_store.hpp"
-#include "render/profiler.hpp"
+#include "render/launcher.hpp"
+#include "render/stage_args.hpp"
 
 namespace clrt {
 
+// X(member, element, length, name) for waves of `samples` camera samples and `pixels` pixels.
+#define CLRT_WAVE_RESOLVER_BUFFERS(X)                   \
+  X(sample_colour_, dev::f4, samples, "sample colour") \
+  X(pixels_, dev::f4, pixels, "pixel")
+
 class WaveResolver {
  public:
-  WaveResolver(DeviceContext& device, const compute::program& program, std::uint32_t max_samples,
-               std::uint32_t max_pixels);
+  WaveResolver(DeviceContext& device, const compute::program& program, std::uint32_t samples,
+               std::uint32_t pixels);
+  // What the constructor allocates.
+  static std::vector<DeviceBuffer> buffers(std::uint64_t samples, std::uint64_t pixels);
 
   // Colour of camera sample i of the wave; the wavefront adds to it pass by pass.
   const Global<dev::f4>& sample_colour() const { return sample_colour_; }
   void clear(std::uint32_t samples);
 
   // Resolves the wave's pixels and stores them as pixels [first, first + pixel_count).
-  void resolve(Profiler& profiler, std::uint32_t samples_per_pixel, std::uint32_t pixel_count,
+  void resolve(Launcher& launcher, std::uint32_t samples_per_pixel, std::uint32_t pixel_count,
                PixelStore& store, std::uint64_t first);
 
-  std::uint64_t bytes() const;
+  std::uint64_t bytes() const { return bytes_; }
 
  private:
   DeviceContext& device_;
-  Global<dev::f4> sample_colour_, pixels_;
-  std::uint32_t max_samples_, max_pixels_;
+  CLRT_WAVE_RESOLVER_BUFFERS(CLRT_BUFFER_MEMBER)
+  std::uint64_t bytes_ = 0;
   TypedKernel<ResolveArgs> resolve_;
   std::vector<dev::f4> host_pixels_;
 };

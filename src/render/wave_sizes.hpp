@@ -1,10 +1,9 @@
-// How large a device's queues are for a render: the numbers WavefrontRenderer allocates by, and
+// How large a wave is on a device for a render: the numbers the integrators allocate by, and
 // that the checks before a render (render_limits.hpp) hold against the device's limits.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
-#include <string>
-#include <vector>
 
 namespace clrt {
 
@@ -13,13 +12,10 @@ struct WaveSizes {
   std::uint64_t shade_chunk = 0;  // rays shaded per launch, so that their shadow slots fit
   std::uint64_t shadow_slots = 0; // shade_chunk * shadow samples per shading point
   std::uint64_t wave_pixels = 0;  // pixels per wave before any overflow halves it
+  std::uint64_t wave_samples = 0; // camera samples of a whole wave: wave_pixels * samples
 
-  struct Buffer {
-    std::string what;  // as DeviceContext::allocate names it in errors
-    std::uint64_t bytes;
-  };
-  // The per-device buffers whose size grows with the queues (not the scene tables).
-  std::vector<Buffer> buffers() const;
+  // An OpenCL buffer cannot be empty, so a scene without shadow rays still gets one slot.
+  std::uint64_t shadow_buffer_slots() const { return std::max<std::uint64_t>(1, shadow_slots); }
 };
 
 // In 64 bits, so that no product wraps before the limits are checked.

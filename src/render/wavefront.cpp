@@ -14,7 +14,26 @@ std::uint32_t pass_limit(const DeviceFrame& frame) {
   return frame.host.params.mode == CLRT_MODE_TRACE ? frame.host.params.max_depth + 1 : 1;
 }
 
+std::vector<DeviceBuffer> wavefront_buffers(const WaveSizes& s) {
+  std::vector<DeviceBuffer> list = WaveQueues::buffers(s);
+  for (DeviceBuffer& b : WaveResolver::buffers(s.capacity, s.wave_pixels)) list.push_back(std::move(b));
+  return list;
+}
+
 }  // namespace
+
+const IntegratorEntry& wavefront_integrator() {
+  static const IntegratorEntry entry{
+      IntegratorKind::Wavefront, "wavefront",
+      "one kernel per stage, queues compacted every pass (default)",
+      [](const RenderOptions&, const DeviceTuning&) {},  // any depth: an overflow halves the wave
+      wavefront_buffers,
+      [](DeviceContext& device, const compute::program& program, const DeviceFrame& frame,
+         const IntegratorConfig& config) -> std::unique_ptr<Integrator> {
+        return std::make_unique<WavefrontIntegrator>(device, program, frame, config);
+      }};
+  return entry;
+}
 
 WavefrontIntegrator::WavefrontIntegrator(DeviceContext& device, const compute::program& program,
                                          const DeviceFrame& frame, const IntegratorConfig& config)
@@ -22,12 +41,14 @@ WavefrontIntegrator::WavefrontIntegrator(DeviceContext& device, const compute::p
       frame_(frame),
       samples_per_pixel_(frame.host.camera.samples),
       wave_pixels_(static_cast<std::uint32_t>(sizes_of(config, frame).wave_pixels)),
-      queues_(device, sizes_of(config, frame), frame.host.params.shadow_samples),
+      queues_(device, sizes_of(config, frame)),
       resolver_(device, program, queues_.capacity(), wave_pixels_),
-      profiler_(device, program, config.profile, config.local_size, pass_limit(frame),
+      launcher_(device, config.local_size, config.profile),
+      profiler_(launcher_, program, config.profile, pass_limit(frame),
                 queues_.capacity() / Profiler::kCountChunk + 1, config.timeline),
       compactor_(device, program,
-                 std::max(2 * std::size_t{queues_.capacity()}, queues_.shadow_slots_per_chunk())),
+                 std::max(CLRT_CHILD_SLOTS * std::size_t{queues_.capacity()},
+                          queues_.shadow_slots_per_chunk())),
       generate_(program),
       intersect_(program),
       shade_(program),
@@ -64,7 +85,7 @@ bool WavefrontIntegrator::render_wave(const PixelRect& rect, std::uint32_t first
   const std::uint32_t samples = pixel_count * samples_per_pixel_;
   resolver_.clear(samples);
   const WaveArgs wave{rect.x, rect.y, rect.width, first, samples};
-  profiler_.launch(generate_, {frame_.camera, wave, queues_.rays}, samples, 0);
+  launcher_.launch(generate_, {frame_.camera, wave, queues_.rays}, samples, 0);
 
   std::vector<PassStats> passes;
   std::uint32_t count = samples;
@@ -72,9 +93,9 @@ bool WavefrontIntegrator::render_wave(const PixelRect& rect, std::uint32_t first
     passes.push_back({count, 0, count, 0});
     run_pass(pass, count);
     if (tracing())
-      compactor_.enqueue(profiler_, queues_.spawn_slots, queues_.spawn_flags,
-                         2 * std::size_t{count}, queues_.next_rays, queues_.capacity(), pass);
-    profiler_.launch(accumulate_, {queues_.rays, queues_.colour, count, resolver_.sample_colour()},
+      compactor_.enqueue(launcher_, queues_.spawn_slots, queues_.spawn_flags,
+                         CLRT_CHILD_SLOTS * std::size_t{count}, queues_.next_rays, queues_.capacity(), pass);
+    launcher_.launch(accumulate_, {queues_.rays, queues_.colour, count, resolver_.sample_colour()},
                      count, pass);
     // The one value that crosses to the host in a pass: whether another pass is needed.
     const std::uint32_t next = tracing() ? compactor_.read_total() : 0;
@@ -92,14 +113,14 @@ bool WavefrontIntegrator::render_wave(const PixelRect& rect, std::uint32_t first
     counted_.passes[p].max_queue = std::max(counted_.passes[p].max_queue, passes[p].max_queue);
   }
   ++counted_.waves;
-  resolver_.resolve(profiler_, samples_per_pixel_, pixel_count, store, stored_at);
+  resolver_.resolve(launcher_, samples_per_pixel_, pixel_count, store, stored_at);
   profiler_.settle();
   return true;
 }
 
 void WavefrontIntegrator::run_pass(std::uint32_t pass, std::uint32_t count) {
   profiler_.count_queue(queues_.rays, count, pass);
-  profiler_.launch(intersect_,
+  launcher_.launch(intersect_,
                    {frame_.geometry.args(), frame_.params, queues_.rays, count, queues_.hits},
                    count, pass);
   for (std::uint32_t first = 0; first < count; first += queues_.shade_chunk())
@@ -108,7 +129,7 @@ void WavefrontIntegrator::run_pass(std::uint32_t pass, std::uint32_t count) {
 
 void WavefrontIntegrator::shade_chunk(std::uint32_t pass, std::uint32_t first,
                                       std::uint32_t count) {
-  profiler_.launch(shade_,
+  launcher_.launch(shade_,
                    {frame_.params, frame_.materials, frame_.lights, queues_.rays, queues_.hits,
                     first, count, queues_.colour, queues_.shadow_slots, queues_.shadow_flags,
                     queues_.spawn_slots, queues_.spawn_flags},
@@ -117,14 +138,14 @@ void WavefrontIntegrator::shade_chunk(std::uint32_t pass, std::uint32_t first,
   if (!tracing() || slots == 0) return;
   // The shadow queue's length stays on the device: shadow and gather_shadows are launched over
   // all the slots and read it there, so the host never waits in the middle of a pass.
-  compactor_.enqueue(profiler_, queues_.shadow_slots, queues_.shadow_flags, slots,
+  compactor_.enqueue(launcher_, queues_.shadow_slots, queues_.shadow_flags, slots,
                      queues_.shadow_queue, slots, pass);
   profiler_.count_shadows(compactor_.total(), pass);
-  profiler_.launch(shadow_,
+  launcher_.launch(shadow_,
                    {frame_.geometry.args(), frame_.params, queues_.shadow_queue,
                     compactor_.total(), queues_.visible},
                    slots, pass);
-  profiler_.launch(gather_,
+  launcher_.launch(gather_,
                    {queues_.shadow_queue, queues_.visible, compactor_.total(), queues_.colour},
                    slots, pass);
 }

@@ -7,11 +7,14 @@
 #include <vector>
 
 #include "render/compactor.hpp"
+#include "render/profiler.hpp"
 #include "render/integrator.hpp"
 #include "render/wave_queues.hpp"
 #include "render/wave_resolver.hpp"
 
 namespace clrt {
+
+const IntegratorEntry& wavefront_integrator();
 
 class WavefrontIntegrator final : public Integrator {
  public:
@@ -37,6 +40,7 @@ class WavefrontIntegrator final : public Integrator {
   std::uint32_t wave_pixels_;  // halved after an overflow
   WaveQueues queues_;
   WaveResolver resolver_;
+  Launcher launcher_;
   Profiler profiler_;
   Compactor compactor_;
   TypedKernel<GenerateArgs> generate_;

@@ -1,6 +1,7 @@
 #include "scene/limits.hpp"
 
 #include <cstdio>
+#include <stdexcept>
 
 #include "scene/scene.hpp"
 
@@ -10,11 +11,14 @@ std::int64_t shadow_samples(const LightSpec& light) {
   switch (light.kind) {
     case LightKind::Ambient:
       return 0;
+    case LightKind::Point:
+    case LightKind::Directional:
+    case LightKind::Spot:
+      return 1;
     case LightKind::Area:
       return light.samples;
-    default:
-      return 1;
   }
+  throw std::logic_error("a light kind without shadow samples");
 }
 
 std::string short_number(double value) {

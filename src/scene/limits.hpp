@@ -1,6 +1,6 @@
 // What clrt accepts in a scene, for every scene format's loader (.ray, NFF, OBJ meshes), checked
-// while loading and so before any work. The reason for each number is beside it; README,
-// "Reliability", has the table.
+// while loading and so before any work. The reason for each number is beside it;
+// docs/reliability.md has the table.
 #pragma once
 
 #include <cstdint>

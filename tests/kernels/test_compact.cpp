@@ -70,8 +70,8 @@ struct Record {
 template <class R>
 std::uint32_t compact_as(const Global<cl_uint>& in, const Global<cl_uint>& flags,
                          std::size_t slots, const Global<cl_uint>& out, std::size_t capacity) {
-  static Profiler profiler(test::device(), test::renderer_program(), false, test::local_size(), 1, 1);
-  compactor().enqueue(profiler, Global<R>(in.buffer), flags, slots, Global<R>(out.buffer),
+  static Launcher launcher(test::device(), test::local_size(), false);
+  compactor().enqueue(launcher, Global<R>(in.buffer), flags, slots, Global<R>(out.buffer),
                       capacity, 0);
   return compactor().read_total();
 }

@@ -66,7 +66,7 @@ TEST_CASE("every region of every repository scene has the full render's bits", "
       std::vector<IntegratorKind> integrators = {IntegratorKind::Wavefront};
       if (region.width == 9) integrators.push_back(IntegratorKind::Megakernel);
       for (IntegratorKind integrator : integrators) {
-        INFO(path << ", region " << describe(region) << ", " << integrator_name(integrator));
+        INFO(path << ", region " << describe(region) << ", " << integrator_entry(integrator).name);
         const FloatImage part = render_file(path, [&](RenderOptions& o) {
           settings(o);
           o.region = region;

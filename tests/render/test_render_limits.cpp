@@ -11,7 +11,9 @@
 
 #include "geometry/geometry_data.hpp"
 #include "render/frame_setup.hpp"
+#include "render/integrator.hpp"
 #include "render/render_limits.hpp"
+#include "render/wave_queues.hpp"
 #include "render/wave_sizes.hpp"
 #include "render_support.hpp"
 #include "scratch_dir.hpp"
@@ -99,6 +101,21 @@ TEST_CASE("a queue larger than the device's largest allocation exits 1 naming it
   CHECK_THAT(message, Catch::Contains("lower --wavefront (now 16384)"));
 }
 
+TEST_CASE("each integrator is checked against the buffers it allocates", "[limits]") {
+  const Scene scene = one_sphere();
+  RenderOptions o = options_of(scene);
+  o.integrator = IntegratorKind::Megakernel;
+  MachineBudget budget = roomy_machine();
+  // The wavefront's spawned ray slots (2 MiB) exist only in the wavefront's queues.
+  budget.devices[0].max_allocation = 2 * 16384 * 64 - 1;
+  CHECK(verdict(scene, o, budget).first == 0);
+  // The megakernel's own: a count per ray kind per camera sample, 256 KiB.
+  budget.devices[0].max_allocation = 16384 * 16 - 1;
+  const auto [code, message] = verdict(scene, o, budget);
+  CHECK(code == 1);
+  CHECK_THAT(message, Catch::Contains("the ray count buffer needs 0.2 MiB on test device"));
+}
+
 TEST_CASE("memory needed beyond the device's or the host's exits 1", "[limits]") {
   Scene scene = one_sphere();
   RenderOptions o = options_of(scene);
@@ -128,30 +145,39 @@ TEST_CASE("queue sizes are computed in 64 bits", "[limits]") {
   CHECK(s.shadow_slots == 65536);
   CHECK(s.wave_pixels == 4096);
   const WaveSizes big = wave_sizes(1u << 26, 1, std::uint64_t{1} << 20);
-  CHECK(big.buffers().front().bytes == (std::uint64_t{1} << 26) * 64);  // 4 GiB, no wrap
+  CHECK(WaveQueues::buffers(big).front().bytes == (std::uint64_t{1} << 26) * 64);  // 4 GiB, no wrap
 }
 
-TEST_CASE("the checked queue sizes are the ones the renderer allocates", "[limits][cli]") {
+TEST_CASE("the checked buffer sizes are the ones the renderer allocates", "[limits][cli]") {
   const std::string scene_path = test::test_scene("area.ray");
   const Scene scene = load_scene(scene_path);
   const clrt::test::ScratchDir dir;
-  for (const auto& [options, samples, wavefront, lanes] :
-       {std::tuple<std::string, std::uint64_t, std::uint64_t, std::uint64_t>{" --lanes 1", 4, 16384, 1},  // the scene asks for 4 samples
-        {" --spp 4 --wavefront 1024 --lanes 3", 4, 1024, 3}}) {
-    INFO(options);
-    const test::CommandResult r = test::run_clrt(
-        test::quoted(scene_path) + " -q --resolution 32x16 --stats=json -o " + dir.file("out.png") + options);
+  struct Case {
+    std::string options;
+    std::uint64_t wavefront, lanes;
+    IntegratorKind integrator;
+  };
+  // The scene asks for 4 samples.
+  for (const Case& c : {Case{" --lanes 1", 16384, 1, IntegratorKind::Wavefront},
+                        Case{" --spp 4 --wavefront 1024 --lanes 3", 1024, 3, IntegratorKind::Wavefront},
+                        Case{" --integrator megakernel --wavefront 2048 --lanes 2", 2048, 2,
+                             IntegratorKind::Megakernel}}) {
+    INFO(c.options);
+    const test::CommandResult r = test::run_clrt(test::quoted(scene_path) +
+                                                 " -q --resolution 32x16 --stats=json -o " +
+                                                 dir.file("out.png") + c.options);
     REQUIRE(r.exit_code == 0);
     const std::uint64_t reported = nlohmann::json::parse(r.output)["bytes"]["device"];
     RenderOptions o = RenderOptions::from_scene(scene);
-    o.samples = static_cast<int>(samples);
+    o.samples = 4;
     const FrameData frame = make_frame(scene, o);
     std::uint64_t expected = build_geometry(scene).device_bytes() + sizeof(dev::Camera) +
                              sizeof(dev::RenderParams) + sizeof(dev::Material) * frame.materials.size() +
                              sizeof(dev::Light) * frame.lights.size();
-    // Every lane has queues of its own.
-    for (const WaveSizes::Buffer& b : wave_sizes(wavefront, samples, frame.params.shadow_samples).buffers())
-      expected += lanes * b.bytes;
+    // Every lane has buffers of its own.
+    const WaveSizes sizes = wave_sizes(c.wavefront, 4, frame.params.shadow_samples);
+    for (const DeviceBuffer& b : integrator_entry(c.integrator).buffers(sizes))
+      expected += c.lanes * b.bytes;
     CHECK(reported == expected);
   }
 }

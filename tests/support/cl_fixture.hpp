@@ -9,6 +9,7 @@
 #include "device/device_context.hpp"
 #include "device/typed_kernel.hpp"
 #include "device/transfer.hpp"
+#include "render/stage_args.hpp"  // the OpenCL C names of the records kernels take
 
 namespace clrt::test {
 

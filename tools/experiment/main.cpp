@@ -15,6 +15,7 @@
 
 #include "cli/tool_command_line.hpp"
 #include "device/opencl.hpp"
+#include "render/integrator.hpp"
 #include "experiment_plan.hpp"
 #include "process_run.hpp"
 #include "report.hpp"
@@ -117,7 +118,8 @@ int main(int argc, char** argv) {
   app.add_option("--device", device_specs,
                  "devices to compare, as clrt --device takes them; `all` is every device "
                  "(repeatable; default cpu)");
-  app.add_option("--integrator", integrators, "comma-separated: wavefront, megakernel")
+  app.add_option("--integrator", integrators,
+                 "comma-separated: " + CLI::detail::join(clrt::integrator_names(), ", "))
       ->capture_default_str();
   app.add_option("--wavefront", wavefronts, "comma-separated queue sizes (default: the device's)");
   app.add_option("--local-size", local_sizes, "comma-separated work-group sizes (default: the device's)");
@@ -145,8 +147,9 @@ int main(int argc, char** argv) {
     for (const std::string& scene : plan.scenes)
       if (!fs::is_regular_file(scene)) throw CLI::ValidationError("no scene file " + scene);
     for (const std::string& name : split_list(integrators))
-      if (name != "wavefront" && name != "megakernel")
-        throw CLI::ValidationError("--integrator takes wavefront and megakernel, not '" + name + "'");
+      if (!clrt::parse_integrator(name))
+        throw CLI::ValidationError("--integrator takes " + CLI::detail::join(clrt::integrator_names(), ", ") +
+                                   ", not '" + name + "'");
     plan.variants = expand_variants(split_list(integrators), split_list(wavefronts),
                                     split_list(local_sizes), extras);
   } catch (const CLI::Error& e) {

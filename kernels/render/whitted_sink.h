@@ -1,0 +1,79 @@
+/* Where a Whitted step's shadow and child rays go (render/whitted_step.h), one type for both
+ * integrators because every kernel file is part of one program:
+ *   queue sink (wavefront)  writes them to the ray's slots, flagged for compaction; the shadow
+ *                           rays' contributions are added later by accumulate.cl;
+ *   stack sink (megakernel) tests a shadow ray at once, adding what it lets through, and pushes
+ *                           a child on the work-item's private stack.
+ * Each kernel makes one kind with a constant tag, so after inlining the other kind's code is
+ * gone. */
+#ifndef CLRT_RENDER_WHITTED_SINK_H
+#define CLRT_RENDER_WHITTED_SINK_H
+
+#include "common.h"
+#include "shade_point.h"
+#include "shadow_test.h"
+
+#define CLRT_SINK_QUEUE 0u
+#define CLRT_SINK_STACK 1u
+
+typedef struct WhittedSink {
+  uint kind; /* CLRT_SINK_* */
+  /* queue sink: this ray's shadow-sample slots and its CLRT_CHILD_SLOTS child slots */
+  __global ShadowRay* shadows;
+  __global uint* shadow_flags;
+  __global Ray* children;
+  __global uint* child_flags;
+  /* stack sink */
+  SceneTables scene;
+  float epsilon;
+  Ray* stack;
+  uint* top;
+  uint* counts; /* rays by kind, CLRT_RAY_KINDS */
+} WhittedSink;
+
+CLRT_INLINE WhittedSink queue_sink(__global ShadowRay* shadows, __global uint* shadow_flags,
+                                   __global Ray* children, __global uint* child_flags) {
+  WhittedSink s = {0}; /* the other kind's fields too: nothing is copied uninitialised */
+  s.kind = CLRT_SINK_QUEUE;
+  s.shadows = shadows;
+  s.shadow_flags = shadow_flags;
+  s.children = children;
+  s.child_flags = child_flags;
+  return s;
+}
+
+CLRT_INLINE WhittedSink stack_sink(SceneTables scene, float epsilon, Ray* stack, uint* top,
+                                   uint* counts) {
+  WhittedSink s = {0};
+  s.kind = CLRT_SINK_STACK;
+  s.scene = scene;
+  s.epsilon = epsilon;
+  s.stack = stack;
+  s.top = top;
+  s.counts = counts;
+  return s;
+}
+
+/* Light sample `slot` (Light.first_sample + j) of the ray needs `shadow` tested. */
+CLRT_INLINE void sink_shadow(WhittedSink* sink, uint slot, const ShadowRay* shadow, float3* colour) {
+  if (sink->kind == CLRT_SINK_QUEUE) {
+    sink->shadows[slot] = *shadow;
+    sink->shadow_flags[slot] = 1u;
+  } else {
+    ++sink->counts[CLRT_RAY_SHADOW];
+    *colour += xyz(shadow_visible(SCENE_ARGS_OF(sink->scene), sink->epsilon, shadow));
+  }
+}
+
+/* `which` is CLRT_SPAWN_REFLECTION or CLRT_SPAWN_REFRACTION. */
+CLRT_INLINE void sink_child(WhittedSink* sink, uint which, const Ray* child) {
+  if (sink->kind == CLRT_SINK_QUEUE) {
+    const uint slot = which == CLRT_SPAWN_REFLECTION ? 0u : 1u;
+    sink->children[slot] = *child;
+    sink->child_flags[slot] = 1u;
+  } else {
+    sink->stack[(*sink->top)++] = *child;
+  }
+}
+
+#endif

@@ -1,0 +1,13 @@
+#include "render/render_tuning.hpp"
+
+namespace clrt {
+
+DeviceTuning render_tuning(const compute::device& device, const RenderOptions& options) {
+  DeviceTuning t = tuning_for(device);
+  if (options.local_size) t.local_size = options.local_size;
+  if (options.wavefront) t.wavefront = options.wavefront;
+  if (options.lanes) t.lanes = options.lanes;
+  return t;
+}
+
+}  // namespace clrt
