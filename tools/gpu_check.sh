@@ -5,7 +5,7 @@
 #      reproducer and the same-bytes renders, as CTest runs them on Intel's runtime and Oclgrind;
 #   3. renders every scene of scenes/ (and ../shared/scenes/spd-ray/ when present) on the GPU
 #      and on PoCL and compares the images: identical bytes, or clrt-img diff's PSNR;
-#   4. measures primary-ray throughput through the intersect kernel alone (clrt-bench-bvh);
+#   4. measures primary-ray throughput through the intersect kernel alone (clrt-bench bvh);
 #   5. runs clrt-experiment on both devices, both integrators.
 # Everything lands in gpu-check/ (summary.md first). The GPU's vendor ICD must be installed
 # (e.g. Debian's nvidia-opencl-icd); CLRT_GPU picks the device (default `gpu`).
@@ -71,9 +71,9 @@ for scene in "${scenes[@]}"; do
 done
 
 step "Primary rays through the intersect kernel alone on $gpu"
-./build/tools/bench_bvh/clrt-bench-bvh --device "$gpu" --rays 4000000 \
+./build/tools/bench/scene/clrt-bench bvh --device "$gpu" --rays 4000000 \
   scenes/reflect.ray scenes/mesh.ray scenes/large/spheres-100k.ray 2>&1 | tee -a "$summary" ||
-  fail "clrt-bench-bvh"
+  fail "clrt-bench bvh"
 
 step "clrt-experiment on $gpu and $cpu"
 # The runner exits 1 when an image differs from its scene's first, which devices with different

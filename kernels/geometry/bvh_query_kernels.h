@@ -1,5 +1,5 @@
 /* Kernels that run scene_closest_hit and scene_any_hit over a plain array of rays, for the
- * tests (tests/geometry) and the benchmark (tools/bench_bvh); the renderer has its own stages.
+ * tests (tests/geometry) and the benchmark (tools/bench/scene); the renderer has its own stages.
  * Ray i is rays[2i] = origin with w = tmin, rays[2i + 1] = direction with w = tmax. The
  * SCENE_PARAMS come first (DeviceGeometry::bind), then rays, count and the results. */
 #ifndef CLRT_GEOMETRY_BVH_QUERY_KERNELS_H

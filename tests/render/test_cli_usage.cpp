@@ -77,7 +77,7 @@ TEST_CASE("a thread count changes nothing but the speed", "[cli][usage]") {
 TEST_CASE("every tool names its version and exits 2 on a usage error", "[cli][usage]") {
   for (const std::string& tool : {std::string(CLRT_EXE), std::string(CLRT_IMG_EXE),
                                   std::string(CLRT_EXPERIMENT_EXE), std::string(CLRT_MAKE_SCENES_EXE),
-                                  std::string(CLRT_BENCH_BVH_EXE)}) {
+                                  std::string(CLRT_BENCH_EXE)}) {
     INFO(tool);
     const CommandResult version = run_program(tool, "--version");
     CHECK(version.exit_code == 0);

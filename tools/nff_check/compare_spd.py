@@ -13,12 +13,13 @@ Exit status: 0 when every pair renders to the same bytes, 1 otherwise, 2 on a us
 
 import argparse
 import pathlib
-import subprocess
 import sys
 import tempfile
-import time
 
-REPO = pathlib.Path(__file__).resolve().parents[2]
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[1] / "bench"))
+import clrt_run  # noqa: E402
+
+REPO = clrt_run.REPO
 
 
 def read_ppm(path):
@@ -39,14 +40,9 @@ def read_ppm(path):
 
 
 def render(clrt, scene, out, resolution):
-    command = [str(clrt), str(scene), "-o", str(out), "-q"]
-    if resolution:
-        command += ["--resolution", resolution]
-    started = time.monotonic()
-    result = subprocess.run(command, capture_output=True, text=True)
-    if result.returncode != 0:
-        raise RuntimeError(f"{' '.join(command)} failed ({result.returncode}):\n{result.stderr}")
-    return time.monotonic() - started
+    """The command's wall seconds."""
+    arguments = [scene, "-o", out, "-q", *(["--resolution", resolution] if resolution else [])]
+    return clrt_run.run_clrt(arguments, clrt).wall
 
 
 def compare(a, b):
@@ -64,7 +60,7 @@ def compare(a, b):
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--clrt", default=REPO / "build" / "clrt", type=pathlib.Path)
+    parser.add_argument("--clrt", default=clrt_run.CLRT, type=pathlib.Path)
     parser.add_argument("--nff", default=REPO.parent / "shared" / "scenes" / "spd", type=pathlib.Path)
     parser.add_argument("--ray", default=REPO.parent / "shared" / "scenes" / "spd-ray",
                         type=pathlib.Path)
@@ -76,8 +72,8 @@ def main():
         parser.error(f"no .nff file in {args.nff}")
 
     failures = 0
-    print(f"| scene | size | differing pixels | largest difference | NFF s | .ray s |")
-    print(f"|---|---|---:|---:|---:|---:|")
+    print("| scene | size | differing pixels | largest difference | NFF s | .ray s |")
+    print("|---|---|---:|---:|---:|---:|")
     with tempfile.TemporaryDirectory(prefix="clrt-nff-check-") as scratch:
         for nff in scenes:
             twin = args.ray / (nff.stem + ".ray")

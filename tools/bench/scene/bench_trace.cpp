@@ -13,7 +13,7 @@
 #include "geometry/bvh_builder.hpp"
 #include "shared/ray.h"
 
-namespace clrt::benchbvh {
+namespace clrt::bench {
 namespace {
 
 const char* const kSource = "#include \"geometry/bvh_query_kernels.h\"\n";
@@ -122,4 +122,4 @@ Throughput Tracer::measure(TypedKernel<Args>& kernel, Global<Result> Args::*resu
   return best;
 }
 
-}  // namespace clrt::benchbvh
+}  // namespace clrt::bench

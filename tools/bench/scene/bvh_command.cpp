@@ -1,21 +1,17 @@
-// clrt-bench-bvh: builds the two-level BVH of procedural or .ray scenes and measures
+// clrt-bench bvh: builds the two-level BVH of procedural or .ray scenes and measures
 // scene_closest_hit and scene_any_hit on the device with camera rays and random rays. Prints a
 // Markdown table: build time, BVH size, Mrays/s.
-#include <CLI/CLI.hpp>
-
 #include <cstdio>
-#include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "bench_scenes.hpp"
 #include "bench_trace.hpp"
-#include "cli/tool_command_line.hpp"
+#include "commands.hpp"
 #include "device/device_select.hpp"
 
-using namespace clrt;
-using namespace clrt::benchbvh;
-
+namespace clrt::bench {
 namespace {
 
 struct Case {
@@ -54,39 +50,43 @@ void run_case(DeviceContext& device, const Case& c, int ray_count, int runs) {
   std::fflush(stdout);
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
-  CLI::App app{"clrt-bench-bvh: BVH build time, size and ray throughput", "clrt-bench-bvh"};
-  identify_tool(app);
+struct Options {
   std::vector<std::string> files;
   int ray_count = 1 << 20;
   int runs = 3;
   std::string device_spec = "cpu";
   bool with_suite = false;
   std::string only;
-  app.add_option("scenes", files, ".ray files to measure (their own cameras are used)");
-  app.add_flag("--suite", with_suite, "procedural meshes of 1k-1M triangles and 10-100k instances (default without scenes)");
-  app.add_option("--rays", ray_count, "rays per measurement")->capture_default_str();
-  app.add_option("--runs", runs, "timed launches per measurement; the best counts")->capture_default_str();
-  app.add_option("--only", only, "run only the cases whose name contains this");
-  app.add_option("--device", device_spec, "OpenCL device (cpu, gpu, P:D or a name)")->capture_default_str();
-  if (const auto status = parse_tool_arguments(app, argc, argv)) return *status;
+};
 
+int measure(const Options& o) {
   std::vector<Case> cases;
-  if (with_suite || files.empty()) cases = suite();
-  for (const std::string& f : files) cases.push_back({f, [f] { return load_scene(f); }, true});
-  try {
-    DeviceContext device(select_devices(device_spec).front());
-    std::printf("%d rays per measurement on %s; Mrays/s elapsed (per CPU-second), best of %d\n\n",
-                ray_count, device.name().c_str(), runs);
-    std::printf("| scene | instances | triangles | build ms | nodes | BVH MiB | all MiB | closest camera | closest random | any camera | any random |\n");
-    std::printf("|---|---|---|---|---|---|---|---|---|---|---|\n");
-    for (const Case& c : cases)
-      if (c.name.find(only) != std::string::npos) run_case(device, c, ray_count, runs);
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "clrt-bench-bvh: %s\n", e.what());
-    return 1;
-  }
+  if (o.with_suite || o.files.empty()) cases = suite();
+  for (const std::string& f : o.files) cases.push_back({f, [f] { return load_scene(f); }, true});
+  DeviceContext device(select_devices(o.device_spec).front());
+  std::printf("%d rays per measurement on %s; Mrays/s elapsed (per CPU-second), best of %d\n\n", o.ray_count,
+              device.name().c_str(), o.runs);
+  std::printf("| scene | instances | triangles | build ms | nodes | BVH MiB | all MiB | closest camera | closest random | any camera | any random |\n");
+  std::printf("|---|---|---|---|---|---|---|---|---|---|---|\n");
+  for (const Case& c : cases)
+    if (c.name.find(o.only) != std::string::npos) run_case(device, c, o.ray_count, o.runs);
   return 0;
 }
+
+}  // namespace
+
+void add_bvh(CLI::App& app, Command& run) {
+  // Shared, because CLI11 keeps references to the fields until the command runs.
+  const auto o = std::make_shared<Options>();
+  CLI::App* bvh = app.add_subcommand("bvh", "BVH build time, size and ray throughput");
+  bvh->add_option("scenes", o->files, ".ray files to measure (their own cameras are used)");
+  bvh->add_flag("--suite", o->with_suite,
+                "procedural meshes of 1k-1M triangles and 10-100k instances (default without scenes)");
+  bvh->add_option("--rays", o->ray_count, "rays per measurement")->capture_default_str();
+  bvh->add_option("--runs", o->runs, "timed launches per measurement; the best counts")->capture_default_str();
+  bvh->add_option("--only", o->only, "run only the cases whose name contains this");
+  bvh->add_option("--device", o->device_spec, "OpenCL device (cpu, gpu, P:D or a name)")->capture_default_str();
+  bvh->callback([o, &run] { run = [o] { return measure(*o); }; });
+}
+
+}  // namespace clrt::bench

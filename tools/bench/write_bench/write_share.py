@@ -9,44 +9,31 @@ kinds interleave. Share = median write seconds / median plain command seconds. T
 target is a PNG share of at most 5% at 1920x1080.
 
 Usage (from the repository root, after the build):
-    /usr/bin/python3 tools/write_bench/write_share.py [SCENES...] [--formats png,ppm,fsf,pfm,exr]
+    /usr/bin/python3 tools/bench/write_bench/write_share.py [SCENES...] [--formats png,ppm,fsf,pfm,exr]
         [--resolution 1920x1080] [--runs 3] [--clrt build/clrt] [--target 0.05]
 Default scenes: scenes/*.ray. Exit status: 0 when every PNG share is within the target, 1 when
 one is not or a render fails, 2 on a usage error.
 """
 
 import argparse
-import json
 import pathlib
 import statistics
-import subprocess
 import sys
 import tempfile
-import time
 
-REPO = pathlib.Path(__file__).resolve().parents[2]
-
-
-def run_clrt(command):
-    started = time.perf_counter()
-    result = subprocess.run(command, capture_output=True, text=True)
-    wall = time.perf_counter() - started
-    if result.returncode != 0:
-        raise RuntimeError(f"{' '.join(command)} exited with {result.returncode}:\n"
-                           f"{result.stderr[-2000:]}")
-    return wall, result.stdout
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[1]))
+import clrt_run  # noqa: E402
 
 
 def measure(args, scene, image_format, work):
     out = work / f"{scene.stem}.{image_format}"
-    base = [str(args.clrt), str(scene), "-o", str(out), "--resolution", args.resolution, "-q"]
+    command = [scene, "-o", out, "--resolution", args.resolution, "-q"]
     write, clrt_total, wall = [], [], []
     for _ in range(args.runs):
-        _, text = run_clrt(base + ["--stats=json"])
-        seconds = json.loads(text)["seconds"]
+        seconds = clrt_run.run_clrt(command, args.clrt, stats=True).stats["seconds"]
         write.append(seconds["write"])
         clrt_total.append(seconds["total"])
-        wall.append(run_clrt(base)[0])
+        wall.append(clrt_run.run_clrt(command, args.clrt).wall)
     return {"scene": scene.name, "format": image_format, "write": statistics.median(write),
             "stats_total": statistics.median(clrt_total), "command": statistics.median(wall),
             "bytes": out.stat().st_size}
@@ -55,13 +42,13 @@ def measure(args, scene, image_format, work):
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("scenes", nargs="*", type=pathlib.Path)
-    parser.add_argument("--clrt", default=REPO / "build" / "clrt", type=pathlib.Path)
+    parser.add_argument("--clrt", default=clrt_run.CLRT, type=pathlib.Path)
     parser.add_argument("--formats", default="png,ppm,fsf,pfm,exr")
     parser.add_argument("--resolution", default="1920x1080")
     parser.add_argument("--runs", type=int, default=3)
     parser.add_argument("--target", type=float, default=0.05, help="largest PNG share")
     args = parser.parse_args()
-    scenes = args.scenes or sorted((REPO / "scenes").glob("*.ray"))
+    scenes = args.scenes or sorted((clrt_run.REPO / "scenes").glob("*.ray"))
     formats = [f for f in args.formats.split(",") if f]
     missing = [str(s) for s in scenes if not s.is_file()]
     if missing:
@@ -80,13 +67,13 @@ def main():
     rows = []
     with tempfile.TemporaryDirectory(prefix="clrt-write-share-") as work:
         # One render first, so that no row pays for filling PoCL's kernel cache.
-        run_clrt([str(args.clrt), str(scenes[0]), "-o", f"{work}/warm.png", "-q",
-                  "--resolution", "64x36"])
+        clrt_run.run_clrt([scenes[0], "-o", f"{work}/warm.png", "-q", "--resolution", "64x36"],
+                          args.clrt)
         for scene in scenes:
             for image_format in formats:
                 try:
                     row = measure(args, scene, image_format, pathlib.Path(work))
-                except RuntimeError as failure:
+                except clrt_run.RunFailed as failure:
                     print(f"error: {failure}", file=sys.stderr)
                     return 1
                 rows.append(row)

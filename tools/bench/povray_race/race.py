@@ -9,7 +9,7 @@ clrt, POV-Ray, clrt, ...) so that load from other work on the machine falls on b
 is measured and why is in README.md beside this script.
 
 Usage (from the repository root, after the build; POV-Ray from Debian: apt-get install povray):
-    /usr/bin/python3 tools/povray_race/race.py [--runs 3] [--resolution 1024] [--threads 2]
+    /usr/bin/python3 tools/bench/povray_race/race.py [--runs 3] [--resolution 1024] [--threads 2]
         [--only NAME] [--clrt-input ray|nff] [--keep DIR] [--json FILE]
 Exit status: 0 when every scene meets the target (clrt's command at most a third of POV-Ray's
 parse + bounding + trace time), 1 when one misses it or a render fails, 2 on a usage error.
@@ -25,11 +25,13 @@ import statistics
 import subprocess
 import sys
 import tempfile
-import time
 
-REPO = pathlib.Path(__file__).resolve().parents[2]
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[1]))
+import clrt_run  # noqa: E402
+from clrt_run import RunFailed  # noqa: E402
+
 HERE = pathlib.Path(__file__).resolve().parent
-SHARED_SCENES = REPO.parent / "shared" / "scenes"
+SHARED_SCENES = clrt_run.REPO.parent / "shared" / "scenes"
 SCENES = ["balls-4", "gears-4", "mount-6", "rings-7", "teapot-12", "tetra-6", "tree-11"]
 TARGET = 1.0 / 3.0
 PICTURE_THRESHOLD = 8  # steps of 1/255: differences below this are shading detail, not geometry
@@ -50,30 +52,6 @@ POVRAY_COUNTS = {
 }
 
 
-class RunFailed(RuntimeError):
-    pass
-
-
-def run_process(command, env=None):
-    """(wall seconds from start to exit, peak resident MiB, CPU seconds, output) of one process.
-
-    Output goes to a file rather than a pipe so that nothing has to drain it while the process
-    runs; wait4 gives the child's own peak memory and CPU time."""
-    with tempfile.TemporaryFile() as output:
-        started = time.perf_counter()
-        process = subprocess.Popen(command, stdin=subprocess.DEVNULL, stdout=output,
-                                   stderr=subprocess.STDOUT, env=env)
-        _, status, usage = os.wait4(process.pid, 0)
-        wall = time.perf_counter() - started
-        process.returncode = os.waitstatus_to_exitcode(status)
-        output.seek(0)
-        text = output.read().decode(errors="replace")
-    if process.returncode != 0:
-        raise RunFailed(f"{' '.join(map(str, command))} exited with {process.returncode}:\n"
-                        f"{text[-2000:]}")
-    return wall, usage.ru_maxrss / 1024.0, usage.ru_utime + usage.ru_stime, text
-
-
 def povray_command(povray, scene, out, size, threads):
     # -A: no antialiasing (none of the seven asks for it); -D: no display window; +V: the
     # statistics and times this script reads; +FN: PNG, as clrt writes.
@@ -81,22 +59,14 @@ def povray_command(povray, scene, out, size, threads):
             "-D", "+V", "+FN", f"+HI{POVRAY_HEADER}"]
 
 
-def clrt_command(clrt, scene, out, size, stats=False):
-    command = [str(clrt), str(scene), "-o", str(out), "--resolution", f"{size}x{size}",
-               "--spp", "1", "--max-depth", str(CLRT_MAX_DEPTH), "-q"]
-    return command + (["--stats=json"] if stats else [])
+def clrt_arguments(scene, out, size):
+    return [scene, "-o", out, "--resolution", f"{size}x{size}", "--spp", "1", "--max-depth",
+            str(CLRT_MAX_DEPTH), "-q"]
 
 
-def clrt_environment(threads):
-    """PoCL's CPU device with `threads` worker threads: PoCL 3 (Debian 12) reads
-    POCL_MAX_PTHREAD_COUNT, PoCL 4 and later POCL_CPU_MAX_CU_COUNT."""
-    env = dict(os.environ)
-    env["POCL_CPU_MAX_CU_COUNT"] = str(threads)
-    env["POCL_MAX_PTHREAD_COUNT"] = str(threads)
-    return env
-
-
-def parse_povray(text):
+def parse_povray(run):
+    """POV-Ray's times and ray counts, which it prints (+V) on standard error."""
+    text = run.stderr + run.stdout
     times = {name.lower(): float(seconds) for name, seconds in POVRAY_TIME.findall(text)}
     missing = {"parse", "bounding", "trace"} - times.keys()
     if missing:
@@ -109,8 +79,7 @@ def parse_povray(text):
 
 def clrt_stats(clrt, scene, out, size, env):
     """clrt's own split of one extra run: seconds per stage and rays by kind."""
-    _, _, _, text = run_process(clrt_command(clrt, scene, out, size, stats=True), env)
-    stats = json.loads(text[text.index("{"):])
+    stats = clrt_run.run_clrt(clrt_arguments(scene, out, size), clrt, stats=True, env=env).stats
     return stats["seconds"], stats["rays"]
 
 
@@ -138,29 +107,27 @@ def race_scene(args, name, work):
         if not path.is_file():
             raise RunFailed(f"{path}: no such scene")
     pov_out, clrt_out = work / f"{name}-povray.png", work / f"{name}-clrt.png"
-    env = clrt_environment(args.threads)
+    env = clrt_run.pocl_threads(args.threads)
     # Warm-up at a small size: the scene files into the page cache, clrt's kernels into PoCL's
     # cache (the program never depends on the scene, so a user's second render finds it).
-    run_process(povray_command(args.povray, pov_scene, pov_out, 64, args.threads))
-    run_process(clrt_command(args.clrt, clrt_scene, clrt_out, 64), env)
+    clrt_run.run(povray_command(args.povray, pov_scene, pov_out, 64, args.threads))
+    clrt_run.run_clrt(clrt_arguments(clrt_scene, clrt_out, 64), args.clrt, env=env)
 
     samples = {"pov_wall": [], "pov_cpu": [], "pov_mib": [], "parse": [], "bounding": [],
                "trace": [], "clrt_wall": [], "clrt_cpu": [], "clrt_mib": []}
     counts = None
     for _ in range(args.runs):
-        wall, mib, cpu, text = run_process(
+        pov = clrt_run.run(
             povray_command(args.povray, pov_scene, pov_out, args.resolution, args.threads))
-        times, counts = parse_povray(text)
+        times, counts = parse_povray(pov)
         for key in ("parse", "bounding", "trace"):
             samples[key].append(times[key])
-        samples["pov_wall"].append(wall)
-        samples["pov_mib"].append(mib)
-        samples["pov_cpu"].append(cpu)
-        wall, mib, cpu, _ = run_process(clrt_command(args.clrt, clrt_scene, clrt_out,
-                                                     args.resolution), env)
-        samples["clrt_wall"].append(wall)
-        samples["clrt_mib"].append(mib)
-        samples["clrt_cpu"].append(cpu)
+        clrt = clrt_run.run_clrt(clrt_arguments(clrt_scene, clrt_out, args.resolution),
+                                 args.clrt, env=env)
+        for renderer, run in (("pov", pov), ("clrt", clrt)):
+            samples[f"{renderer}_wall"].append(run.wall)
+            samples[f"{renderer}_mib"].append(run.peak_mib)
+            samples[f"{renderer}_cpu"].append(run.cpu)
     split, rays = clrt_stats(args.clrt, clrt_scene, work / f"{name}-stats.png", args.resolution,
                              env)
     psnr, differing = compare_images(args.clrt_img, pov_out, clrt_out)
@@ -212,9 +179,9 @@ def print_tables(results, args):
 
 def parse_arguments():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--clrt", default=REPO / "build" / "clrt", type=pathlib.Path)
-    parser.add_argument("--clrt-img", default=REPO / "build" / "tools" / "img" / "clrt-img",
-                        type=pathlib.Path, help="compares the two pictures")
+    parser.add_argument("--clrt", default=clrt_run.CLRT, type=pathlib.Path)
+    parser.add_argument("--clrt-img", default=clrt_run.CLRT_IMG, type=pathlib.Path,
+                        help="compares the two pictures")
     parser.add_argument("--povray", default="povray", help="POV-Ray 3.7 executable")
     parser.add_argument("--pov-dir", default=SHARED_SCENES / "spd-pov", type=pathlib.Path)
     parser.add_argument("--clrt-dir", type=pathlib.Path,

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <random>
 
-namespace clrt::benchbvh {
+namespace clrt::bench {
 namespace {
 
 // A displaced UV sphere: rings x segments quads, two triangles each.
@@ -73,4 +73,4 @@ Scene mesh_instances_scene(int count) {
   return scene;
 }
 
-}  // namespace clrt::benchbvh
+}  // namespace clrt::bench

@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Scale-out benchmark of clrt-mpi on one machine (README, "Scale-out").
 
-    /usr/bin/python3 tools/mpi_bench/mpi_bench.py [SCENE] [--build build] [--runs 3]
+    /usr/bin/python3 tools/bench/mpi_bench/mpi_bench.py [SCENE] [--build build] [--runs 3]
 
 1. Parallel efficiency: one clrt process with PoCL on every core, against one clrt-mpi rank per
    core with one PoCL thread each, same frame (3840x2160 by default): efficiency = T(process)
@@ -14,34 +14,29 @@ Runs alternate between configurations (best of --runs), as on a shared machine o
 taken side by side are worth anything.
 """
 import argparse
-import json
 import os
-import subprocess
+import pathlib
 import sys
-import time
+
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[1]))
+import clrt_run  # noqa: E402
 
 ROOT_FLAGS = {"OMPI_ALLOW_RUN_AS_ROOT": "1", "OMPI_ALLOW_RUN_AS_ROOT_CONFIRM": "1"}
 
 
 def timed(command, env=None):
-    start = time.perf_counter()
-    result = subprocess.run(command, capture_output=True, text=True,
-                            env={**os.environ, **(env or {})})
-    seconds = time.perf_counter() - start
-    if result.returncode != 0:
-        sys.exit(f"failed ({result.returncode}): {' '.join(command)}\n{result.stderr}")
-    return seconds, result.stdout
-
-
-def stats_of(output):
-    start = output.find("{")
-    return json.loads(output[start:]) if start >= 0 else None
+    """(wall seconds, --stats=json) of one command, which ends the script if it fails."""
+    try:
+        result = clrt_run.run(command, env)
+        return result.wall, result.stats
+    except clrt_run.RunFailed as failure:
+        sys.exit(f"error: {failure}")
 
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("scene", nargs="?", default="scenes/reflect.ray")
-    parser.add_argument("--build", default="build")
+    parser.add_argument("--build", default=clrt_run.BUILD)
     parser.add_argument("--resolution", default="3840x2160")
     parser.add_argument("--runs", type=int, default=3)
     parser.add_argument("--ranks", type=int, default=os.cpu_count() or 2)
@@ -56,14 +51,13 @@ def main():
     tiles = args.tiles.split(",")
     stats = {}
     for _ in range(args.runs):
-        seconds, out = timed([clrt, *frame, "--stats=json"])
+        seconds, stats["single"] = timed([clrt, *frame, "--stats=json"])
         single.append(seconds)
-        stats["single"] = stats_of(out)
         for tile in tiles:
-            seconds, out = timed([*mpirun, clrt_mpi, *frame, "--tile", tile, "--stats=json"],
-                                 ROOT_FLAGS)
+            seconds, stats[tile] = timed(
+                [*mpirun, clrt_mpi, *frame, "--tile", tile, "--stats=json"],
+                {**os.environ, **ROOT_FLAGS})
             ranked.setdefault(tile, []).append(seconds)
-            stats[tile] = stats_of(out)
 
     best_single = min(single)
     s = stats["single"]["seconds"]

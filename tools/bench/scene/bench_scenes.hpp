@@ -1,11 +1,11 @@
-// Procedural scenes for the BVH benchmark: single meshes of any size and fields of instances.
+// Procedural scenes for the BVH benchmark (clrt-bench bvh): single meshes of any size and fields of instances.
 #pragma once
 
 #include <string>
 
 #include "scene/scene.hpp"
 
-namespace clrt::benchbvh {
+namespace clrt::bench {
 
 // A lumpy ball mesh of about `triangles` triangles (no vertex normals), placed once.
 Scene mesh_scene(int triangles);
@@ -17,4 +17,4 @@ Scene shapes_scene(int count);
 // `count` instances of one 1,000-triangle mesh under random transforms.
 Scene mesh_instances_scene(int count);
 
-}  // namespace clrt::benchbvh
+}  // namespace clrt::bench

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
-"""Plots clrt-bench-bvh --suite output: Mrays/s against scene size, log scale.
+"""Plots clrt-bench bvh --suite output: Mrays/s against scene size, log scale.
 
-Usage: clrt-bench-bvh --suite > suite.md; python3 plot_scaling.py suite.md scaling.png
+Usage: clrt-bench bvh --suite > suite.md; python3 plot_scaling.py suite.md scaling.png
 Needs matplotlib (Debian: python3-matplotlib); a documentation tool, not part of the build.
 """
 import re

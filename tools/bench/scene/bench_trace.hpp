@@ -1,4 +1,4 @@
-// Rays for the BVH benchmark and their throughput through scene_closest_hit / scene_any_hit.
+// Rays for the BVH benchmark (clrt-bench bvh) and their throughput through scene_closest_hit / scene_any_hit.
 #pragma once
 
 #include <vector>
@@ -9,7 +9,7 @@
 #include "geometry/bvh_query_args.hpp"
 #include "geometry/geometry_data.hpp"
 
-namespace clrt::benchbvh {
+namespace clrt::bench {
 
 // Per ray: origin with w = tmin, then direction with w = tmax.
 using RaySet = std::vector<dev::f4>;
@@ -53,4 +53,4 @@ class Tracer {
   std::size_t local_size_;
 };
 
-}  // namespace clrt::benchbvh
+}  // namespace clrt::bench

@@ -2,14 +2,14 @@
 # Re-runs the measurement of README.md: the SPD scenes, then the large scenes of
 # clrt-make-scenes (written first if missing). Extra arguments go to clrt-embree-compare,
 # e.g. --robust or --runs 9. Run from the repository's root.
-#   tools/embree_compare/measure.sh BUILD_DIR [OPTIONS...]
+#   tools/bench/embree_compare/measure.sh BUILD_DIR [OPTIONS...]
 set -eu
 build=$1
 shift
 spd=${SPD_DIR:-/work/shared/scenes/spd-ray}
 large=${LARGE_DIR:-build/scenes-large}
 [ -f "$large/inst-100k.ray" ] || "$build/tools/make_scenes/clrt-make-scenes" "$large" >/dev/null
-exec "$build/tools/embree_compare/clrt-embree-compare" \
+exec "$build/tools/bench/embree_compare/clrt-embree-compare" \
   "$spd/teapot-12.ray" "$spd/gears-4.ray" "$spd/balls-4.ray" "$spd/tetra-6.ray" \
   "$spd/mount-6.ray" "$spd/sombrero-3.ray" "$spd/shells-5.ray" "$spd/nurbtst-1.ray" \
   "$spd/rings-7.ray" "$spd/tree-11.ray" "$spd/lattice-12.ray" "$spd/jacks-1.ray" \
