@@ -1,8 +1,8 @@
 /* megakernel: the integrator to compare the wavefront with (Laine, Karras and Aila,
  * "Megakernels Considered Harmful", HPG 2013). One work-item per camera sample of a wave walks
- * the sample's whole Whitted ray tree depth first with a private stack, running the wavefront's
- * own stages (render/camera.h, scene_closest_hit, the Whitted step of render/whitted_step.h
- * with a sink that tests shadow rays at once and pushes children), and sums the contributions
+ * the sample's whole ray tree (a path, in path mode) depth first with a private stack, running
+ * the wavefront's own stages (render/camera.h, scene_closest_hit, the transport step of
+ * render/transport_step.h with a sink that tests shadow rays at once and pushes children), and sums the contributions
  * in the order accumulate.cl writes down: per tree level, left to right (a depth-first walk that takes the
  * reflection before the refraction meets each level's rays in that order), then level by
  * level. It therefore produces the wavefront's bits.
@@ -19,7 +19,7 @@
 #error "CLRT_MEGAKERNEL_DEPTH must fit the 64-bit mask of levels"
 #endif
 
-#include "render/whitted_step.h"
+#include "render/transport_step.h"
 
 __kernel void megakernel(SCENE_PARAMS, __global const RenderParams* params,
                          __global const Camera* camera, __global const Material* materials,
@@ -44,7 +44,7 @@ __kernel void megakernel(SCENE_PARAMS, __global const RenderParams* params,
     ++counts[ray.kind];
     Hit hit;
     scene_closest_hit(SCENE_ARGS, xyz(ray.origin), xyz(ray.dir), params->epsilon, INFINITY, &hit);
-    const float3 c = whitted_step(&ray, &hit, materials, lights, params, i, &sink);
+    const float3 c = transport_step(&ray, &hit, materials, lights, params, i, &sink);
     const ulong bit = 1ul << ray.depth;
     level[ray.depth] = (levels_seen & bit) ? level[ray.depth] + c : c;
     levels_seen |= bit;

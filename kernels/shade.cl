@@ -1,13 +1,13 @@
-/* shade: the Whitted step (render/whitted_step.h) at every hit of a chunk of the queue, its
- * shadow and child rays written to slots for compaction.
+/* shade: the transport step (render/transport_step.h: Whitted or path) at every hit of a chunk
+ * of the queue, its shadow and child rays written to slots for compaction.
  * In: rays and hits [first, first + count).
  * Out, for ray i of the queue:
  *   colour[i]      its own colour so far (the step's result; shadow rays add theirs later);
- *   shadow slots   (trace mode) slot (i - first) * shadow_samples + s for light sample s, flag
+ *   shadow slots   (trace and path modes) slot (i - first) * shadow_samples + s for light sample s, flag
  *                  set when the sample can contribute; compacted, then tested by shadow.cl;
- *   spawn slots    (trace mode, depth < max depth) 2i reflection, 2i + 1 refraction, flag set
- *                  when spawned. Compacted into the next pass's queue. */
-#include "render/whitted_step.h"
+ *   spawn slots    (trace and path modes, depth < max depth) 2i reflection (a path's next
+ *                  ray), 2i + 1 refraction, flag set when spawned. Compacted into the next pass's queue. */
+#include "render/transport_step.h"
 
 __kernel void shade(__global const RenderParams* params, __global const Material* materials,
                     __global const Light* lights, __global const Ray* rays,
@@ -20,11 +20,11 @@ __kernel void shade(__global const RenderParams* params, __global const Material
   const size_t slots = params->shadow_samples;
   WhittedSink sink = queue_sink(shadow_slots + local_index * slots, shadow_flags + local_index * slots,
                                 spawn_slots + CLRT_CHILD_SLOTS * i, spawn_flags + CLRT_CHILD_SLOTS * i);
-  if (params->mode == CLRT_MODE_TRACE) {
+  if (params->mode != CLRT_MODE_CAST) {
     for (size_t s = 0; s < slots; ++s) sink.shadow_flags[s] = 0u;
     for (uint s = 0; s < CLRT_CHILD_SLOTS; ++s) sink.child_flags[s] = 0u;
   }
   const Ray ray = rays[i];
   const Hit hit = hits[i];
-  colour[i] = as_f4(whitted_step(&ray, &hit, materials, lights, params, i, &sink));
+  colour[i] = as_f4(transport_step(&ray, &hit, materials, lights, params, i, &sink));
 }

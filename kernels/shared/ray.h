@@ -22,9 +22,11 @@ CLRT_SHARED_BEGIN
  * generated in sample order and compaction is stable), which is what lets contributions be
  * summed per sample in a fixed order without atomics. */
 typedef struct Ray {
-  f4 origin;  /* xyz, already offset from the surface it leaves; w unused */
+  f4 origin;  /* xyz, already offset from the surface it leaves; w: in path mode, see
+               * render/path_step.h, else 0 */
   f4 dir;     /* xyz unit direction; w unused */
-  f4 weight;  /* rgb share of the sample's colour this ray carries; w unused */
+  f4 weight;  /* rgb share of the sample's colour this ray carries; w: in path mode the density
+               * its direction was drawn with (render/path_step.h), else 0 */
   u32 sample; /* camera sample index within the current wave */
   u32 depth;  /* 0 for camera rays */
   u32 path;   /* hash of the branch choices since the camera ray: seeds this ray's random numbers */

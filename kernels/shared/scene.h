@@ -94,6 +94,7 @@ CLRT_CHECK_SIZE(TriangleNormals, 48);
 
 #define CLRT_MODE_TRACE 0u
 #define CLRT_MODE_CAST 1u
+#define CLRT_MODE_PATH 2u
 
 /* Per-render constants every stage reads. */
 typedef struct RenderParams {

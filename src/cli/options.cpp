@@ -1,6 +1,7 @@
 #include "cli/options.hpp"
 
 #include <filesystem>
+#include <map>
 #include <regex>
 #include <sstream>
 #include <tuple>
@@ -67,13 +68,13 @@ void add_shading_options(CLI::App& app, CliOptions& o) {
   app.add_option("--max-depth", o.max_depth,
                  "deepest reflection/refraction bounce (overrides `maxdepth`)")
       ->check(CLI::Range(std::int64_t{0}, limits::kMaxDepth));
+  static const std::map<std::string, RenderMode> modes{
+      {"trace", RenderMode::Trace}, {"cast", RenderMode::Cast}, {"path", RenderMode::Path}};
   app.add_option_function<std::string>(
-         "--mode",
-         [&](const std::string& mode) {
-           o.mode = CLI::detail::to_lower(mode) == "cast" ? RenderMode::Cast : RenderMode::Trace;
-         },
-         "trace (shadows, reflection, refraction) or cast (local shading only)")
-      ->check(CLI::IsMember({"trace", "cast"}, CLI::ignore_case));
+         "--mode", [&](const std::string& mode) { o.mode = modes.at(CLI::detail::to_lower(mode)); },
+         "trace (Whitted: shadows, reflection, refraction), cast (local shading only) or path "
+         "(Monte Carlo path tracing: indirect light, docs/path-tracing.md)")
+      ->check(CLI::IsMember(modes, CLI::ignore_case));
   app.add_option("--seed", o.seed, "seed of the random numbers (jitter, area lights)")
       ->capture_default_str();
 }

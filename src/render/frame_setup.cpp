@@ -129,7 +129,11 @@ dev::RenderParams make_params(const Scene& scene, const RenderOptions& options) 
   }
   p.ambient = f4_of(ambient);
   p.max_depth = static_cast<dev::u32>(options.max_depth);
-  p.mode = options.mode == RenderMode::Cast ? CLRT_MODE_CAST : CLRT_MODE_TRACE;
+  switch (options.mode) {
+    case RenderMode::Trace: p.mode = CLRT_MODE_TRACE; break;
+    case RenderMode::Cast: p.mode = CLRT_MODE_CAST; break;
+    case RenderMode::Path: p.mode = CLRT_MODE_PATH; break;
+  }
   p.epsilon = kEpsilon;
   return p;
 }

@@ -11,7 +11,9 @@
 
 namespace clrt {
 
-enum class RenderMode { Trace, Cast };
+// Whitted ray tracing (trace), local shading only (cast), Monte Carlo path tracing (path,
+// docs/path-tracing.md).
+enum class RenderMode { Trace, Cast, Path };
 
 // The wavefront is the product; the megakernel is the design it is measured against.
 enum class IntegratorKind { Wavefront, Megakernel };

@@ -11,7 +11,7 @@ WaveSizes sizes_of(const IntegratorConfig& config, const DeviceFrame& frame) {
 }
 
 std::uint32_t pass_limit(const DeviceFrame& frame) {
-  return frame.host.params.mode == CLRT_MODE_TRACE ? frame.host.params.max_depth + 1 : 1;
+  return frame.host.params.mode == CLRT_MODE_CAST ? 1 : frame.host.params.max_depth + 1;
 }
 
 std::vector<DeviceBuffer> wavefront_buffers(const WaveSizes& s) {

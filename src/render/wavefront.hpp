@@ -32,7 +32,8 @@ class WavefrontIntegrator final : public Integrator {
                    PixelStore& store, std::uint64_t stored_at);
   void run_pass(std::uint32_t pass, std::uint32_t count);
   void shade_chunk(std::uint32_t pass, std::uint32_t first, std::uint32_t count);
-  bool tracing() const { return frame_.host.params.mode == CLRT_MODE_TRACE; }
+  // Whether rays spawn rays (trace and path modes).
+  bool tracing() const { return frame_.host.params.mode != CLRT_MODE_CAST; }
 
   DeviceContext& device_;
   const DeviceFrame& frame_;

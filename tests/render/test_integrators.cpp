@@ -1,6 +1,6 @@
 // The megakernel and the wavefront give the same bits on every scene in the repository's
 // scenes/ (kernels/accumulate.cl writes down the order both follow), with several samples, in
-// cast mode, and with a wavefront small enough that waves are split. The megakernel refuses a
+// cast and path modes, and with a wavefront small enough that waves are split. The megakernel refuses a
 // ray tree deeper than its stack before any work.
 #include <catch2/catch.hpp>
 
@@ -32,6 +32,18 @@ const std::vector<Variant> kVariants = {
      }},
     {"cast mode", [](RenderOptions& o) { o.mode = RenderMode::Cast; }},
     {"a 1024-ray wavefront", [](RenderOptions& o) { o.wavefront = 1024; }},
+    {"path mode, 4 samples per pixel",
+     [](RenderOptions& o) {
+       o.mode = RenderMode::Path;
+       o.samples = 4;
+     }},
+    {"path mode, a 1024-ray wavefront, seed 9",
+     [](RenderOptions& o) {
+       o.mode = RenderMode::Path;
+       o.samples = 2;
+       o.wavefront = 1024;
+       o.seed = 9;
+     }},
 };
 
 }  // namespace

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "cl_fixture.hpp"
+#include "render/integrator.hpp"
 #include "render_support.hpp"
 
 using namespace clrt;
@@ -53,6 +54,28 @@ TEST_CASE("the test device renders PoCL's bits on every repository scene", "[sam
                   << ", " << s.what << ", on " << device().name());
         CHECK(same_bits(render_file(path, with(s)), pocl));
       }
+    }
+  }
+}
+
+TEST_CASE("the test device renders PoCL's bits in path mode", "[same-bytes][path]") {
+  const bool interpreter = device().device().platform().name() == "Oclgrind";
+  const int side = interpreter ? 8 : 32;
+  for (const std::string& path : {test_scene("path-lobes.ray"), test_scene("area.ray")}) {
+    for (const IntegratorKind integrator : {IntegratorKind::Wavefront, IntegratorKind::Megakernel}) {
+      const auto with = [&](std::uint32_t wavefront) {
+        return [&, wavefront](RenderOptions& o) {
+          o.width = o.height = side;
+          o.mode = RenderMode::Path;
+          o.samples = 2;
+          o.integrator = integrator;
+          o.wavefront = wavefront;
+        };
+      };
+      const FloatImage pocl = render_file(path, with(0), "portable computing language");
+      INFO(path << ", " << integrator_entry(integrator).name << ", on " << device().name());
+      CHECK(same_bits(render_file(path, with(0)), pocl));
+      if (!interpreter) CHECK(same_bits(render_file(path, with(1024)), pocl));
     }
   }
 }
