@@ -1,0 +1,283 @@
+// Path mode's sampling (kernels/render/path_step.h, continue_path) on the device against the
+// densities it claims, as Mitsuba 3's chi2 tests do: directions binned over the sphere against
+// the density integrated over each bin on the host in double, pooled where fewer than 5 are
+// expected, and a chi-square test; the dielectric's choice between reflection and refraction
+// against the Fresnel equations; and each sample's weight against f cos / pdf.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "cl_fixture.hpp"
+
+using namespace clrt;
+using namespace clrt::test;
+
+namespace {
+
+const char* const kKernels = R"CL(
+#include "render/path_step.h"
+
+/* Sample i continues a path arriving along -wo at a surface with normal n (front side). */
+__kernel void sample_lobes(__global const Material* material, float4 normal, float4 wo, uint count,
+                           __global float4* directions, __global float4* weights) {
+  const uint i = get_global_id(0);
+  if (i >= count) return;
+  ShadePoint sp;
+  sp.p = (float3)(0.0f);
+  sp.ng = sp.n = normal.xyz;
+  sp.v = wo.xyz;
+  sp.base = (float3)(1.0f);
+  sp.front = true;
+  sp.material = 0u;
+  Ray ray;
+  ray.origin = (float4)(0.0f, 0.0f, 0.0f, 1.0f);
+  ray.dir = (float4)(-wo.xyz, 0.0f);
+  ray.weight = (float4)(1.0f, 1.0f, 1.0f, 0.0f);
+  ray.sample = i;
+  ray.depth = 1u;
+  ray.path = hash_u32(i * 2654435761u + 12345u);
+  ray.kind = CLRT_RAY_REFLECTION;
+  const PathLobes lobes = path_lobes(material);
+  float3 dir, weight;
+  float pdf, scale;
+  uint kind;
+  const bool goes_on = continue_path(&ray, &sp, &lobes, material, &dir, &weight, &pdf, &kind, &scale);
+  directions[i] = (float4)(dir, goes_on ? (float)kind : -1.0f);
+  weights[i] = (float4)(weight, pdf);
+}
+)CL";
+
+struct SampleLobesArgs {
+  static constexpr const char* kName = "sample_lobes";
+  Global<const dev::Material> material;
+  dev::f4 normal, wo;
+  cl_uint count = 0;
+  Global<dev::f4> directions, weights;
+  CLRT_KERNEL_ARGS(material, normal, wo, count, directions, weights)
+};
+
+struct V3 {
+  double x, y, z;
+};
+V3 operator*(double s, V3 v) { return {s * v.x, s * v.y, s * v.z}; }
+V3 operator+(V3 a, V3 b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
+double dot(V3 a, V3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+V3 unit(V3 v) { return (1.0 / std::sqrt(dot(v, v))) * v; }
+V3 of(const dev::f4& v) { return {v.x, v.y, v.z}; }
+
+constexpr double kPi = 3.14159265358979323846;
+
+dev::Material material(float kd, float ks, float n, float kr, float kt, float ior = 1.5f) {
+  dev::Material m{};
+  m.color = {1, 1, 1, 0};
+  m.kd = kd;
+  m.ks = ks;
+  m.shininess = n;
+  m.kr = kr;
+  m.kt = kt;
+  m.ior = ior;
+  return m;
+}
+
+// The density with which the smooth lobes draw wi, as docs/path-tracing.md states it, over the
+// whole sphere (the Phong lobe's part below the surface included: those samples end the path).
+struct SmoothDensity {
+  double p_diffuse, p_glossy, exponent;
+  V3 n, mirror;
+  double operator()(V3 wi) const {
+    const double cos_i = dot(n, wi), cos_a = dot(mirror, wi);
+    return p_diffuse * std::max(0.0, cos_i) / kPi +
+           p_glossy * (exponent + 1) / (2 * kPi) * std::pow(std::max(0.0, cos_a), exponent);
+  }
+};
+
+struct Frame {
+  V3 n, t, b;
+};
+
+Frame frame_of(V3 n) {
+  const V3 a = std::fabs(n.x) < 0.9 ? V3{1, 0, 0} : V3{0, 1, 0};
+  const V3 t = unit(a + (-dot(a, n)) * n);
+  const V3 b{n.y * t.z - n.z * t.y, n.z * t.x - n.x * t.z, n.x * t.y - n.y * t.x};
+  return {n, t, b};
+}
+
+constexpr int kZBins = 16, kPhiBins = 32;
+
+int bin_of(const Frame& f, V3 w) {
+  const double z = std::clamp(dot(f.n, w), -1.0, 1.0);
+  const double phi = std::atan2(dot(f.b, w), dot(f.t, w));
+  const int zi = std::min(kZBins - 1, static_cast<int>((z + 1) / 2 * kZBins));
+  const int pi = std::min(kPhiBins - 1, static_cast<int>((phi + kPi) / (2 * kPi) * kPhiBins));
+  return zi * kPhiBins + pi;
+}
+
+// Probability of each bin: the density integrated in z and phi (d omega = dz dphi) by the
+// midpoint rule on 24 x 24 points per bin.
+std::vector<double> bin_probabilities(const Frame& f, const SmoothDensity& density) {
+  std::vector<double> p(kZBins * kPhiBins, 0.0);
+  constexpr int kSub = 24;
+  const double dz = 2.0 / kZBins / kSub, dphi = 2 * kPi / kPhiBins / kSub;
+  for (int zi = 0; zi < kZBins * kSub; ++zi) {
+    const double z = -1 + (zi + 0.5) * dz, r = std::sqrt(std::max(0.0, 1 - z * z));
+    for (int pi = 0; pi < kPhiBins * kSub; ++pi) {
+      const double phi = -kPi + (pi + 0.5) * dphi;
+      const V3 w = z * f.n + (r * std::cos(phi)) * f.t + (r * std::sin(phi)) * f.b;
+      p[(zi / kSub) * kPhiBins + pi / kSub] += density(w) * dz * dphi;
+    }
+  }
+  return p;
+}
+
+// The chance of a chi-square statistic at least `chi2` with `dof` degrees of freedom, by the
+// Wilson-Hilferty approximation (ample for the hundreds of degrees of freedom here).
+double chi2_p_value(double chi2, double dof) {
+  const double z = (std::cbrt(chi2 / dof) - (1 - 2 / (9 * dof))) / std::sqrt(2 / (9 * dof));
+  return 0.5 * std::erfc(z / std::sqrt(2.0));
+}
+
+// Observed against expected counts, bins expecting fewer than 5 pooled into one.
+void chi2_test(const std::vector<double>& observed, const std::vector<double>& expected) {
+  double chi2 = 0, pooled_observed = 0, pooled_expected = 0;
+  int bins = 0;
+  for (std::size_t i = 0; i < observed.size(); ++i) {
+    if (expected[i] < 5) {
+      pooled_observed += observed[i];
+      pooled_expected += expected[i];
+      continue;
+    }
+    chi2 += (observed[i] - expected[i]) * (observed[i] - expected[i]) / expected[i];
+    ++bins;
+  }
+  if (pooled_expected >= 5) {
+    chi2 += (pooled_observed - pooled_expected) * (pooled_observed - pooled_expected) / pooled_expected;
+    ++bins;
+  } else {
+    CHECK(pooled_observed <= 5 + 5 * pooled_expected);  // nothing where nothing is expected
+  }
+  INFO("chi2 " << chi2 << " over " << bins - 1 << " degrees of freedom");
+  const double p = chi2_p_value(chi2, bins - 1);
+  INFO("p-value " << p);
+  CHECK(p > 1e-3);
+}
+
+struct Samples {
+  std::vector<dev::f4> directions, weights;
+};
+
+Samples sample(const dev::Material& m, V3 n, V3 wo, std::size_t count) {
+  const Global<dev::f4> directions = allocate<dev::f4>(count), weights = allocate<dev::f4>(count);
+  const dev::f4 normal{static_cast<float>(n.x), static_cast<float>(n.y), static_cast<float>(n.z), 0};
+  const dev::f4 view{static_cast<float>(wo.x), static_cast<float>(wo.y), static_cast<float>(wo.z), 0};
+  run(test_program(kKernels),
+      SampleLobesArgs{upload(std::vector<dev::Material>{m}), normal, view, static_cast<cl_uint>(count),
+                      directions, weights},
+      count);
+  return {download(directions, count), download(weights, count)};
+}
+
+std::size_t sample_count() {
+  // Oclgrind interprets every instruction: fewer samples (the test stays as strict).
+  return device().device().platform().name() == "Oclgrind" ? 3000 : 400000;
+}
+
+}  // namespace
+
+TEST_CASE("path mode draws smooth-lobe directions with the density it claims", "[kernels][path]") {
+  const V3 n = unit(V3{0.3, 1.0, -0.2});
+  struct Case {
+    const char* what;
+    dev::Material m;
+    V3 wo;
+  };
+  for (const Case& c : {Case{"Lambertian", material(1, 0, 1, 0, 0), unit(V3{0.2, 1, 0.5})},
+                        Case{"Phong, exponent 1", material(0, 1, 1, 0, 0), unit(V3{0.6, 0.7, 0.1})},
+                        Case{"Phong, exponent 30", material(0, 1, 30, 0, 0), unit(V3{-0.5, 0.8, 0.3})},
+                        Case{"Phong, exponent 300", material(0, 1, 300, 0, 0), unit(V3{0.1, 0.9, -0.6})},
+                        Case{"Lambertian and Phong", material(0.6, 0.4, 12, 0, 0), unit(V3{0.7, 0.4, 0.2})}}) {
+    INFO(c.what);
+    const double kd = c.m.kd, ks = c.m.ks;
+    const V3 wo = unit(c.wo);
+    const SmoothDensity density{kd / (kd + ks), ks / (kd + ks), c.m.shininess, n,
+                                2 * dot(n, wo) * n + (-1.0) * wo};
+    const Frame f = frame_of(n);
+    const std::size_t count = sample_count();
+    const Samples s = sample(c.m, n, wo, count);
+    std::vector<double> observed(kZBins * kPhiBins, 0.0);
+    double worst_weight = 0, worst_pdf = 0;
+    std::size_t ended_above = 0;
+    for (std::size_t i = 0; i < count; ++i) {
+      const V3 wi = unit(of(s.directions[i]));
+      observed[bin_of(f, wi)] += 1;
+      if (s.directions[i].w < 0) {
+        if (dot(n, wi) > 1e-6) ++ended_above;  // only a direction below the surface ends the path
+        continue;
+      }
+      // The weight is f cos / pdf for both lobes together, whichever drew the direction.
+      const double cos_i = dot(n, wi);
+      const double f = kd / kPi + ks * (c.m.shininess + 2) / (2 * kPi) *
+                                      std::pow(std::max(0.0, dot(2 * cos_i * n + (-1.0) * wi, wo)),
+                                               c.m.shininess);
+      const double expected = f * cos_i / density(wi);
+      // Relative, but absolute near the horizon, where float cosines lose their digits.
+      worst_weight = std::max(worst_weight, std::fabs(s.weights[i].x - expected) / (expected + 1e-2));
+      worst_pdf = std::max(worst_pdf, std::fabs(s.weights[i].w - density(wi)) / (density(wi) + 1e-2));
+    }
+    CHECK(ended_above == 0);
+    CHECK(worst_weight < 1e-3);
+    CHECK(worst_pdf < 1e-3);
+    std::vector<double> expected = bin_probabilities(f, density);
+    for (double& e : expected) e *= static_cast<double>(count);
+    chi2_test(observed, expected);
+  }
+}
+
+TEST_CASE("path mode's dielectric reflects with the Fresnel equations' probability", "[kernels][path]") {
+  const V3 n{0, 1, 0};
+  for (const bool outside : {true, false}) {
+    for (const double degrees : {0.0, 30.0, 60.0, 80.0, 89.0}) {
+      INFO((outside ? "entering" : "leaving") << " glass at " << degrees << " degrees");
+      const double theta = degrees * kPi / 180;
+      const V3 wo{std::sin(theta), std::cos(theta), 0};
+      // Leaving: the same geometry seen from inside, where the index ratio is the inverse.
+      const double eta = outside ? 1 / 1.5 : 1.5;
+      const dev::Material m = material(0, 0, 1, 0, 1, outside ? 1.5f : 1.0f / 1.5f);
+      const double cos_i = std::cos(theta), sin2_t = eta * eta * (1 - cos_i * cos_i);
+      double reflectance = 1;
+      if (sin2_t < 1) {
+        const double cos_t = std::sqrt(1 - sin2_t);
+        const double rs = (eta * cos_i - cos_t) / (eta * cos_i + cos_t);
+        const double rp = (cos_i - eta * cos_t) / (cos_i + eta * cos_t);
+        reflectance = 0.5 * (rs * rs + rp * rp);
+      }
+      const std::size_t count = sample_count();
+      const Samples s = sample(m, n, wo, count);
+      double reflected = 0;
+      std::size_t wrong = 0;
+      for (std::size_t i = 0; i < count; ++i) {
+        const V3 wi = of(s.directions[i]);
+        if (s.directions[i].w == static_cast<float>(CLRT_RAY_REFLECTION)) {
+          reflected += 1;
+          wrong += std::fabs(dot(wi, V3{-wo.x, wo.y, 0}) - 1) > 1e-5 || s.weights[i].x != 1.0f;
+        } else {
+          // Snell's law, and radiance scaled by (n_i / n_t)^2.
+          wrong += std::fabs(std::fabs(wi.x) - eta * std::sin(theta)) > 1e-5 ||
+                   std::fabs(s.weights[i].x - eta * eta) > 1e-5 * eta * eta;
+        }
+      }
+      CHECK(wrong == 0);
+      const double total = static_cast<double>(count);
+      if (reflectance == 1) {
+        CHECK(reflected == total);
+      } else {
+        // A binomial count: within 3.3 standard deviations (p > 0.001, two-sided).
+        const double z = (reflected - reflectance * total) /
+                         std::sqrt(total * reflectance * (1 - reflectance));
+        INFO("reflected " << reflected << " of " << total << ", Fresnel " << reflectance << ", z " << z);
+        CHECK(std::fabs(z) < 3.3);
+      }
+    }
+  }
+}
