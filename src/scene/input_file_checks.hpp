@@ -15,6 +15,12 @@ class InputFileError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// A file whose size or modification time changed while it was read (someone wrote it meanwhile).
+class FileChangedError : public InputFileError {
+ public:
+  FileChangedError() : InputFileError("changed while being read") {}
+};
+
 // Throws InputFileError unless `info` describes a regular file (not a folder, a device such as
 // /dev/zero, or a pipe) of at most `max_bytes`.
 void check_input_status(const struct stat& info, std::uint64_t max_bytes);

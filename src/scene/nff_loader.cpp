@@ -47,9 +47,14 @@ Scene load_nff_scene(const std::string& path, const FileSource& files) {
   // SPD traces ray trees 5 deep counting the eye ray as the first; clrt counts it as depth 0.
   scene.max_depth = 4;
   scene.materials.push_back(MaterialSpec{});
-  const std::vector<Line> entities =
-      group_nff_entities(split_into_lines(read_scene_file(files, path), path), path);
-  for (const Line& entity : entities) apply(state, entity);
+  const std::string text = read_scene_file(files, path);
+  state.loader.text_bytes = text.size();
+  const std::vector<Line> entities = group_nff_entities(split_into_lines(text, path), path);
+  for (std::size_t i = 0; i < entities.size(); ++i) {
+    apply(state, entities[i]);
+    if ((i + 1) % kMemoryCheckCommands == 0)
+      check_loader_memory(state.loader, CommandArgs(path, entities[i]).command_location());
+  }
   finish_view(state, end_of(entities, path));
   finish_lights(state);
   check_camera(state.loader);

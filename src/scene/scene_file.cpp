@@ -7,6 +7,8 @@ namespace clrt {
 std::string read_scene_file(const FileSource& files, const std::string& path) {
   try {
     return std::string(files.open(path, limits::kMaxSceneFileBytes)->text());
+  } catch (const FileChangedError& e) {
+    throw SceneError({path, 1, 1}, e.what());
   } catch (const InputFileError& e) {
     throw SceneError({path, 1, 1}, std::string("cannot read the scene file (") + e.what() + ")");
   }
