@@ -151,7 +151,7 @@ MeshData load_obj_mesh(const std::string& path, const FileSource& files, const M
   } catch (const InputFileError& e) {
     throw MeshError(path, std::string("cannot be read (") + e.what() + ")");
   }
-  const std::vector<std::string_view> slices = split_into_slices(file->text());
+  const std::vector<std::string_view> slices = split_into_slices(without_byte_order_mark(file->text()));
   std::vector<ObjChunk> chunks(slices.size());
   ObjMemoryMeter meter;
   meter.available = memory.bytes;

@@ -143,6 +143,7 @@ class LineReader {
 
   // A non-zero decimal integer; any index past INT32_MAX is beyond every table a file can hold.
   std::int64_t index(const char* corner_start, const char* what) {
+    const char* written = p_;
     const bool negative = p_ < end_ && *p_ == '-';
     if (negative) ++p_;
     const char* digits = p_;
@@ -150,9 +151,10 @@ class LineReader {
     for (; p_ < end_ && *p_ >= '0' && *p_ <= '9'; ++p_) {
       value = value * 10 + (*p_ - '0');
       if (value > INT32_MAX)
-        fail(column_of(corner_start), std::string(what) + " index " + quoted({digits, static_cast<std::size_t>(word_end(p_) - digits)}) + " is out of range");
+        fail(column_of(corner_start), std::string(what) + " index " + quoted({written, static_cast<std::size_t>(word_end(p_) - written)}) + " is out of range");
     }
-    if (p_ == digits) bad_corner(corner_start);
+    // Digits followed by anything but '/' or the corner's end ("0x1", "1e3") are no index.
+    if (p_ == digits || (p_ < end_ && *p_ != '/' && !is_blank(*p_))) bad_corner(corner_start);
     if (value == 0) fail(column_of(corner_start), std::string(what) + " index 0 is not allowed (indices start at 1)");
     return negative ? -value : value;
   }

@@ -99,7 +99,11 @@ TEST_CASE("OBJ: a malformed line is an error at its line and column, never a sil
       {"f 1 2 3/0", ":5:7: texture coordinate index 0 is not allowed"},
       {"f 1 2 3//0", ":5:7: normal index 0 is not allowed"},
       {"f 1 2 99999999999", ":5:7: vertex index '99999999999' is out of range"},
-      {"f 1 2 -99999999999", ":5:7: vertex index '99999999999' is out of range"},
+      {"f 1 2 -99999999999", ":5:7: vertex index '-99999999999' is out of range"},
+      {"f 1 2 -2147483648", ":5:7: vertex index '-2147483648' is out of range"},
+      {"f 1 2 0x1", ":5:7: bad face corner '0x1'"},
+      {"f 1 2 3/0x1", ":5:7: bad face corner '3/0x1'"},
+      {"f 1 2 3//0x1", ":5:7: bad face corner '3//0x1'"},
       {"f", ":5:2: a face needs at least 3 corners, found 0"},
       {"vt", ":5:3: a texture coordinate is u [v [w]]: found no number"},
       {"vt 0 0 0 0", ":5:10: too many numbers for a texture coordinate"},
@@ -111,6 +115,12 @@ TEST_CASE("OBJ: a malformed line is an error at its line and column, never a sil
   };
   for (const Bad& c : cases)
     DYNAMIC_SECTION(c.line) { CHECK_THAT(obj_error(verts + c.line + "\nf 1 2 3\n"), Catch::Contains(c.message)); }
+}
+
+TEST_CASE("OBJ: a UTF-8 byte order mark at the file's start is skipped", "[scene][obj]") {
+  const MeshData m = load_obj_text("\xEF\xBB\xBFv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+  CHECK(m.positions.size() == 3);
+  CHECK(obj_error("\xEF\xBB\xBFv 0 0 x\n") == ":1:7: 'x' is not a number");
 }
 
 TEST_CASE("OBJ: a long word is quoted in part only", "[scene][obj][errors]") {
