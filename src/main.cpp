@@ -1,6 +1,7 @@
 // clrt: render a .ray or .nff scene with the wavefront OpenCL renderer.
 // Exit codes: 0 success, 1 runtime failure (device, kernel build, output), 2 usage or scene error.
 #include <iostream>
+#include <new>
 
 #include "cli/heap_policy.hpp"
 #include "cli/options.hpp"
@@ -23,6 +24,9 @@ int main(int argc, char** argv) {
   } catch (const clrt::RenderLimitError& e) {
     std::cerr << "clrt: error: " << e.what() << "\n";
     return e.exit_code();
+  } catch (const std::bad_alloc&) {
+    std::cerr << "clrt: error: out of memory\n";
+    return 1;
   } catch (const std::exception& e) {
     std::cerr << "clrt: error: " << e.what() << "\n";
     return 1;

@@ -16,6 +16,7 @@
 #include "device/device_select.hpp"
 #include "geometry/geometry_data.hpp"
 #include "image/fsf_animation.hpp"
+#include "cli/out_of_memory.hpp"
 #include "render/frame_setup.hpp"
 #include "render/orbit.hpp"
 #include "render/output_guard.hpp"
@@ -212,7 +213,7 @@ int run_clrt(const CliOptions& cli) {
   // The scene loads on a thread of its own while this one starts OpenCL and builds the kernels
   // (LLVM, inside PoCL, keeps per-thread state: it stays on the main thread).
   std::future<Scene> loading = std::async(std::launch::async, [&cli, &stats, start] {
-    Scene loaded = load_scene(cli.scene);
+    Scene loaded = naming_out_of_memory("loading " + cli.scene, [&] { return load_scene(cli.scene); });
     stats.load_seconds = seconds_since(start);
     return loaded;
   });
@@ -220,8 +221,10 @@ int run_clrt(const CliOptions& cli) {
   std::exception_ptr device_error;
   try {
     const auto prepare_start = Clock::now();
-    devices.entries = select_devices(cli.device);
-    devices.prepared = prepare_devices(devices.entries);
+    naming_out_of_memory("starting the devices", [&] {
+      devices.entries = select_devices(cli.device);
+      devices.prepared = prepare_devices(devices.entries);
+    });
     devices.seconds = seconds_since(prepare_start);
   } catch (...) {
     device_error = std::current_exception();
@@ -237,7 +240,9 @@ int run_clrt(const CliOptions& cli) {
   }
   if (device_error) std::rethrow_exception(device_error);
   check_outputs_are_not_inputs(output, frames, scene);
-  return render_frames(cli, scene, frames, output, stats, progress, devices, start);
+  return naming_out_of_memory("building the scene's geometry or rendering", [&] {
+    return render_frames(cli, scene, frames, output, stats, progress, devices, start);
+  });
 }
 
 }  // namespace clrt

@@ -1,15 +1,14 @@
 #include "render/render_limits.hpp"
 
-#include <unistd.h>
 
 #include <algorithm>
-#include <fstream>
-#include <sstream>
 
 #include "render/integrator.hpp"
 #include "render/render_tuning.hpp"
 #include "render/wave_sizes.hpp"
 #include "scene/limits.hpp"
+#include "scene/memory_limit.hpp"
+#include "scene/scene_memory.hpp"
 
 namespace clrt {
 namespace {
@@ -17,14 +16,6 @@ namespace {
 // Host bytes per pixel: the linear float image (12), its 8-bit copy (4) and the encoded file
 // (up to 12 for PFM).
 constexpr std::uint64_t kHostBytesPerPixel = 28;
-constexpr std::uint64_t kGeometryBytesPerPrimitive = 256;
-
-std::string mib(std::uint64_t bytes) {
-  std::ostringstream out;
-  out.precision(1);
-  out << std::fixed << static_cast<double>(bytes) / (1024.0 * 1024.0) << " MiB";
-  return out.str();
-}
 
 [[noreturn]] void refuse(int exit_code, const std::string& message) {
   throw RenderLimitError(exit_code, message);
@@ -77,8 +68,8 @@ std::uint64_t check_device(const Scene& scene, const RenderOptions& o, const Dev
   std::uint64_t queues = 0;
   for (const DeviceBuffer& buffer : integrator_entry(o.integrator).buffers(sizes)) {
     if (buffer.bytes > device.max_allocation)
-      refuse(1, "the " + buffer.what + " buffer needs " + mib(buffer.bytes) + " on " + device.name +
-                    ", more than its largest allocation (" + mib(device.max_allocation) +
+      refuse(1, "the " + buffer.what + " buffer needs " + mebibytes(buffer.bytes) + " on " + device.name +
+                    ", more than its largest allocation (" + mebibytes(device.max_allocation) +
                     "): lower --wavefront (now " + std::to_string(device.wavefront) + ")" +
                     (sizes.shade_chunk == 1 ? " or the lights' samples" : ""));
     queues += buffer.bytes;
@@ -86,35 +77,17 @@ std::uint64_t check_device(const Scene& scene, const RenderOptions& o, const Dev
   // Every lane has queues of its own.
   const std::uint64_t total = geometry_bytes + queues * device.lanes;
   if (total > device.global_memory)
-    refuse(1, "the render needs about " + mib(total) + " of memory on " + device.name +
-                  " (scene " + mib(geometry_bytes) + ", queues " + mib(total - geometry_bytes) +
-                  "), more than its " + mib(device.global_memory) + ": lower --wavefront");
+    refuse(1, "the render needs about " + mebibytes(total) + " of memory on " + device.name +
+                  " (scene " + mebibytes(geometry_bytes) + ", queues " + mebibytes(total - geometry_bytes) +
+                  "), more than its " + mebibytes(device.global_memory) + ": lower --wavefront");
   return total;
-}
-
-std::uint64_t available_host_memory() {
-  std::ifstream meminfo("/proc/meminfo");
-  std::string key;
-  std::uint64_t kib = 0;
-  std::string unit;
-  while (meminfo >> key >> kib >> unit)
-    if (key == "MemAvailable:") return kib * 1024;
-  const long pages = ::sysconf(_SC_AVPHYS_PAGES), page = ::sysconf(_SC_PAGESIZE);
-  return pages > 0 && page > 0 ? static_cast<std::uint64_t>(pages) * static_cast<std::uint64_t>(page)
-                               : UINT64_MAX;
 }
 
 }  // namespace
 
-std::uint64_t estimated_geometry_bytes(const Scene& scene) {
-  std::uint64_t primitives = scene.instances.size() + scene.triangles.size() + 1;
-  for (const MeshData& mesh : scene.meshes) primitives += mesh.corners.size() / 3;
-  return primitives * kGeometryBytesPerPrimitive;
-}
-
 MachineBudget measure_budget(const std::vector<DeviceEntry>& devices, const RenderOptions& options) {
   MachineBudget budget;
-  budget.host_available = available_host_memory();
+  budget.host_available = memory_limit().bytes;
   for (const DeviceEntry& entry : devices) {
     DeviceBudget d;
     d.name = entry.device.name();
@@ -142,8 +115,8 @@ void check_render_limits(const Scene& scene, const RenderOptions& options,
     if (device.uses_host_memory) host += on_device;
   }
   if (host > budget.host_available)
-    refuse(1, "the render needs about " + mib(host) + " of host memory (image " + mib(image) +
-                  ", scene " + mib(geometry) + "), more than the " + mib(budget.host_available) +
+    refuse(1, "the render needs about " + mebibytes(host) + " of host memory (image " + mebibytes(image) +
+                  ", scene " + mebibytes(geometry) + "), more than the " + mebibytes(budget.host_available) +
                   " available");
 }
 

@@ -35,7 +35,7 @@ struct DeviceBudget {
 };
 
 struct MachineBudget {
-  std::uint64_t host_available = 0;  // bytes of memory the host can still give (MemAvailable)
+  std::uint64_t host_available = 0;  // bytes of memory this process can still take (memory_limit)
   std::vector<DeviceBudget> devices;
 };
 
@@ -49,10 +49,5 @@ MachineBudget measure_budget(const std::vector<DeviceEntry>& devices, const Rend
 // device or host memory exceeds what there is.
 void check_render_limits(const Scene& scene, const RenderOptions& options,
                          const MachineBudget& budget);
-
-// Estimated bytes the scene's geometry tables take on a device (BVH nodes and leaf packets,
-// instances, normals): measured 165 to 220 bytes per triangle or instance (docs/performance.md, BVH
-// scaling); 256 are assumed.
-std::uint64_t estimated_geometry_bytes(const Scene& scene);
 
 }  // namespace clrt

@@ -1,7 +1,7 @@
 #include "scene/file_source.hpp"
 
 #include "scene/input_file_checks.hpp"
-#include "scene/mapped_file.hpp"
+#include "scene/file_in_memory.hpp"
 
 namespace clrt {
 namespace {
@@ -9,7 +9,7 @@ namespace {
 class DiskFiles final : public FileSource {
  public:
   std::unique_ptr<FileBytes> open(const std::string& path, std::uint64_t max_bytes) const override {
-    return std::make_unique<MappedFile>(path, max_bytes);
+    return std::make_unique<FileInMemory>(path, max_bytes);
   }
 };
 

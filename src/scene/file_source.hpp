@@ -1,6 +1,6 @@
 // Where the loaders get the files a scene names (the scene file, its OBJ meshes): from the disk,
-// mapped and never copied; or from memory, e.g. on an MPI rank that received rank 0's files, so
-// that nodes need no shared file system. The disk source can also keep a copy of everything it
+// read whole and checked unchanged; or from memory, e.g. on an MPI rank that received rank 0's
+// files, so that nodes need no shared file system. The disk source can also keep a copy of everything it
 // served, which is what rank 0 sends.
 #pragma once
 
@@ -25,7 +25,7 @@ class FileSource {
   virtual ~FileSource() = default;
   // The file at `path` (as the loader resolved it). Throws InputFileError with the reason (no
   // path) for a file that cannot be read, is not a regular file (a folder, /dev/zero, a pipe)
-  // or is larger than `max_bytes`.
+  // or is larger than `max_bytes`; FileChangedError for one that changed while it was read.
   virtual std::unique_ptr<FileBytes> open(const std::string& path, std::uint64_t max_bytes) const = 0;
 };
 

@@ -11,4 +11,9 @@ void check_input_status(const struct stat& info, std::uint64_t max_bytes) {
                          " MiB");
 }
 
+std::string_view without_byte_order_mark(std::string_view text) {
+  constexpr std::string_view kMark = "\xEF\xBB\xBF";
+  return text.substr(0, kMark.size()) == kMark ? text.substr(kMark.size()) : text;
+}
+
 }  // namespace clrt

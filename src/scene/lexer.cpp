@@ -1,6 +1,7 @@
 #include "scene/lexer.hpp"
 
 #include <cstddef>
+#include <utility>
 
 #include "scene/limits.hpp"
 #include "scene/source_location.hpp"
@@ -49,8 +50,8 @@ std::vector<Word> split_words(const std::string& line, int line_number, const st
 
 }  // namespace
 
-std::vector<Line> split_into_lines(const std::string& text, const std::string& file) {
-  std::vector<Line> lines;
+void for_each_line(const std::string& text, const std::string& file,
+                   const std::function<void(Line&)>& take) {
   int number = 0;
   std::size_t start = 0;
   while (start < text.size()) {
@@ -63,10 +64,15 @@ std::vector<Line> split_into_lines(const std::string& text, const std::string& f
                            " bytes long, more than the limit of " +
                            std::to_string(limits::kMaxLineBytes) + "; it starts '" +
                            text.substr(start, limits::kExcerptBytes) + "...'");
-    std::vector<Word> words = split_words(text.substr(start, end - start), number, file);
-    if (!words.empty()) lines.push_back({number, std::move(words)});
+    Line line{number, split_words(text.substr(start, end - start), number, file)};
+    if (!line.words.empty()) take(line);
     start = end + 1;
   }
+}
+
+std::vector<Line> split_into_lines(const std::string& text, const std::string& file) {
+  std::vector<Line> lines;
+  for_each_line(text, file, [&](Line& line) { lines.push_back(std::move(line)); });
   return lines;
 }
 

@@ -1,6 +1,7 @@
 // Splits scene text (.ray or NFF) into lines of words, remembering where each word was written.
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -24,5 +25,10 @@ struct Line {
 // next `"` and may hold spaces and `#` (used for mesh paths). Throws SceneError, located in
 // `file`, on an unterminated quote or a line longer than limits::kMaxLineBytes.
 std::vector<Line> split_into_lines(const std::string& text, const std::string& file);
+
+// The same lines one at a time, each passed to `take` and dropped after it: a loader that needs
+// no line twice holds one line's words, not the file's.
+void for_each_line(const std::string& text, const std::string& file,
+                   const std::function<void(Line&)>& take);
 
 }  // namespace clrt

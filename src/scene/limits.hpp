@@ -30,6 +30,12 @@ constexpr std::size_t kExcerptBytes = 40;
 constexpr double kMaxNumber = 1e12;
 constexpr double kMaxCoordinate = 1e12;
 
+// Corners of a concave polygon (NFF p and pp, an OBJ face). Ear clipping takes time that grows
+// with the square of the corner count (4096 corners: a few milliseconds; 100k: 20-40 s), so a
+// larger polygon is refused unless it is convex, which a fan cuts in time linear in its corners
+// whatever their count.
+constexpr std::size_t kMaxConcavePolygonCorners = 4096;
+
 // Image sides and pixel count. The device numbers pixels and samples in 32 bits, and the host
 // holds about 28 bytes per pixel (linear floats, 8-bit copy, encoded file): 2^28 pixels
 // (16384 x 16384) is 7 GiB.

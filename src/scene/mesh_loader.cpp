@@ -11,6 +11,7 @@
 #include "scene/obj_chunk.hpp"
 #include "scene/obj_index_check.hpp"
 #include "scene/obj_polygons.hpp"
+#include "scene/polygon_triangulation.hpp"
 
 namespace clrt {
 namespace {
@@ -116,6 +117,22 @@ void gather(std::vector<ObjChunk>& chunks, const SliceStarts& starts, bool with_
   });
 }
 
+// The mesh's tables once gathered.
+std::uint64_t mesh_bytes(const SliceStarts& starts, bool with_normals) {
+  const std::uint64_t per_corner = with_normals ? 2 * sizeof(std::uint32_t) : sizeof(std::uint32_t);
+  return (starts.total_elements.positions + (with_normals ? starts.total_elements.normals : 0)) * sizeof(Vec3) +
+         starts.total_corners * per_corner;
+}
+
+void check_gather_memory(const std::string& path, const std::vector<ObjChunk>& chunks, std::uint64_t mesh,
+                         const MemoryLimit& memory) {
+  std::uint64_t needed = mesh;
+  for (const ObjChunk& c : chunks) needed += c.bytes();
+  if (needed > memory.bytes)
+    throw MeshError(path, "the mesh needs " + mebibytes(needed) + " to gather its tables, " +
+                              mebibytes(memory.bytes) + " available (" + memory.source + ")");
+}
+
 }  // namespace
 
 MeshError::MeshError(const std::string& path, const std::string& message)
@@ -125,16 +142,22 @@ MeshError::MeshError(const SourceLocation& where, const std::string& message)
     : std::runtime_error(where.file + ":" + std::to_string(where.line) + ":" + std::to_string(where.column) +
                          ": " + message) {}
 
-MeshData load_obj_mesh(const std::string& path, const FileSource& files) {
+MeshData load_obj_mesh(const std::string& path, const FileSource& files, const MemoryLimit& memory) {
   std::unique_ptr<FileBytes> file;
   try {
     file = files.open(path, limits::kMaxMeshFileBytes);
+  } catch (const FileChangedError& e) {
+    throw MeshError(path, e.what());
   } catch (const InputFileError& e) {
     throw MeshError(path, std::string("cannot be read (") + e.what() + ")");
   }
-  const std::vector<std::string_view> slices = split_into_slices(file->text());
+  const std::vector<std::string_view> slices = split_into_slices(without_byte_order_mark(file->text()));
   std::vector<ObjChunk> chunks(slices.size());
-  parallel_for(slices.size(), 1, [&](std::size_t i) { chunks[i] = parse_obj_chunk(slices[i]); });
+  ObjMemoryMeter meter;
+  meter.available = memory.bytes;
+  meter.source = memory.source;
+  meter.used = file->text().size();
+  parallel_for(slices.size(), 1, [&](std::size_t i) { chunks[i] = parse_obj_chunk(slices[i], meter); });
   if (std::any_of(chunks.begin(), chunks.end(), [](const ObjChunk& c) { return c.problem.has_value(); }))
     fail_at_first_problem(path, chunks);
 
@@ -150,14 +173,25 @@ MeshData load_obj_mesh(const std::string& path, const FileSource& files) {
   // and the mesh's side by side (the peak of loading a large mesh).
   file.reset();
 
-  MeshData mesh;
-  mesh.path = path;
   const bool with_normals =
       std::all_of(chunks.begin(), chunks.end(), [](const ObjChunk& c) { return c.every_corner_has_normal; });
+  check_gather_memory(path, chunks, mesh_bytes(starts, with_normals), memory);
+  MeshData mesh;
+  mesh.path = path;
   gather(chunks, starts, with_normals, mesh);
+  // Per slice, its first polygon refused.
+  std::vector<const ObjPolygon*> refused(chunks.size(), nullptr);
   parallel_for(chunks.size(), 1, [&](std::size_t i) {
-    for (const ObjPolygon& p : chunks[i].polygons) triangulate_polygon(mesh, starts.corners[i] + p.first_corner, p.corners);
+    for (const ObjPolygon& p : chunks[i].polygons)
+      if (!triangulate_polygon(mesh, starts.corners[i] + p.first_corner, p.corners)) {
+        refused[i] = &p;
+        return;
+      }
   });
+  for (std::size_t i = 0; i < chunks.size(); ++i)
+    if (refused[i])
+      throw MeshError(location(path, starts.lines[i], {refused[i]->line, 1}),
+                      ConcavePolygonTooLarge(refused[i]->corners).what());
   return mesh;
 }
 

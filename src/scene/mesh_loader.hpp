@@ -6,6 +6,7 @@
 #include <string>
 
 #include "scene/file_source.hpp"
+#include "scene/memory_limit.hpp"
 #include "scene/scene.hpp"
 #include "scene/source_location.hpp"
 
@@ -26,6 +27,10 @@ class MeshError : public std::runtime_error {
 // range, or a mesh with no triangles. A large file is parsed in slices on every core; the result
 // and the error reported do not depend on how many.
 // The file comes from `files` (the disk unless the scene's files came from elsewhere).
-MeshData load_obj_mesh(const std::string& path, const FileSource& files = disk_files());
+// Loading stops with a MeshError, before the memory is spent, at the line where the file and the
+// tables parsed so far pass `memory`, or before the tables are gathered into the mesh when the
+// slices' tables and the mesh's side by side would (this error's line depends on the slices).
+MeshData load_obj_mesh(const std::string& path, const FileSource& files = disk_files(),
+                       const MemoryLimit& memory = {});
 
 }  // namespace clrt

@@ -3,15 +3,32 @@
 // start with something other than a number.
 #pragma once
 
+#include <functional>
+#include <optional>
 #include <string>
-#include <vector>
 
 #include "scene/lexer.hpp"
 
 namespace clrt {
 
-// Each returned Line is one entity: its name, then every word of its own line and of the lines
-// after it that start with a number. A first line that starts with a number is a SceneError.
-std::vector<Line> group_nff_entities(std::vector<Line> lines, const std::string& file);
+// Takes the lines one at a time and hands on each entity, as one Line (its name, then every word
+// of its own line and of the lines after it that start with a number), once the next entity's
+// line or the file's end shows that it is complete: a loader holds one entity's words, not the
+// file's.
+class NffEntityGrouper {
+ public:
+  NffEntityGrouper(std::string file, std::function<void(const Line&)> apply)
+      : file_(std::move(file)), apply_(std::move(apply)) {}
+
+  // Throws SceneError for a first line that starts with a number.
+  void take(Line& line);
+  // Hands on the last entity.
+  void finish();
+
+ private:
+  std::string file_;
+  std::function<void(const Line&)> apply_;
+  std::optional<Line> entity_;
+};
 
 }  // namespace clrt

@@ -20,21 +20,13 @@ const NffTable& nff_table() {
   return table;
 }
 
-void apply(NffState& state, const Line& entity) {
-  const CommandArgs args(state.loader.scene.path, entity);
+void apply(NffState& state, const CommandArgs& args) {
   advance_view(state, args);
   const auto handler = nff_table().find(args.name());
   if (handler == nff_table().end() || args.command_word().quoted)
     throw SceneError(args.command_location(), "unknown entity '" + args.command_word().text +
                                                   "' (NFF has v, b, l, f, c, s, p and pp)");
   handler->second(state, args);
-}
-
-// Just past the file's last word, where "the file ends too soon" errors point.
-SourceLocation end_of(const std::vector<Line>& entities, const std::string& path) {
-  if (entities.empty()) return {path, 1, 1};
-  const Word& last = entities.back().words.back();
-  return {path, last.line, last.end_column};
 }
 
 }  // namespace
@@ -47,10 +39,22 @@ Scene load_nff_scene(const std::string& path, const FileSource& files) {
   // SPD traces ray trees 5 deep counting the eye ray as the first; clrt counts it as depth 0.
   scene.max_depth = 4;
   scene.materials.push_back(MaterialSpec{});
-  const std::vector<Line> entities =
-      group_nff_entities(split_into_lines(read_scene_file(files, path), path), path);
-  for (const Line& entity : entities) apply(state, entity);
-  finish_view(state, end_of(entities, path));
+  const std::string text = read_scene_file(files, path);
+  state.loader.text_bytes = text.size();
+  std::size_t count = 0;
+  NffEntityGrouper entities(path, [&](const Line& entity) {
+    const CommandArgs args(path, entity);
+    apply(state, args);
+    if (++count % kMemoryCheckCommands == 0) check_loader_memory(state.loader, args.command_location());
+  });
+  // Just past the file's last word, where "the file ends too soon" errors point.
+  SourceLocation end{path, 1, 1};
+  for_each_line(text, path, [&](Line& line) {
+    end = {path, line.words.back().line, line.words.back().end_column};
+    entities.take(line);
+  });
+  entities.finish();
+  finish_view(state, end);
   finish_lights(state);
   check_camera(state.loader);
   check_coordinates(state.loader);

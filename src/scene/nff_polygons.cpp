@@ -7,7 +7,8 @@
 namespace clrt {
 namespace {
 
-// Ear clipping takes time quadratic in the vertex count: a larger polygon is refused.
+// The lexer holds every word of an entity: a larger polygon is refused before its vertices are
+// read (a concave one above limits::kMaxConcavePolygonCorners once they are).
 constexpr int kMaxPolygonVertices = 1 << 20;
 
 // The vertex count, checked against the numbers that follow it (`per_vertex` for each vertex).
@@ -22,12 +23,20 @@ std::size_t vertex_count(const CommandArgs& a, std::size_t per_vertex, const std
   return n;
 }
 
+std::vector<TriangleCorners> cut(const CommandArgs& a, const std::vector<Vec3>& vertices) {
+  try {
+    return triangulate_polygon(vertices);
+  } catch (const ConcavePolygonTooLarge& e) {
+    throw a.error_at(0, e.what());
+  }
+}
+
 // p n, then x y z for each vertex: loose triangles in world space, as `triangle` gives.
 void polygon(NffState& s, const CommandArgs& a) {
   const std::size_t n = vertex_count(a, 3, "x y z");
   std::vector<Vec3> vertices;
   for (std::size_t i = 0; i < n; ++i) vertices.push_back(a.vec3(1 + 3 * i));
-  for (const TriangleCorners& t : triangulate_polygon(vertices))
+  for (const TriangleCorners& t : cut(a, vertices))
     s.loader.scene.triangles.push_back(
         {vertices[t[0]], vertices[t[1]], vertices[t[2]], s.loader.material});
 }
@@ -55,7 +64,7 @@ void patch(NffState& s, const CommandArgs& a) {
     vertices.push_back(a.vec3(1 + 6 * i));
     normals.push_back(a.nonzero_vec3(4 + 6 * i, "a vertex normal"));
   }
-  const std::vector<TriangleCorners> triangles = triangulate_polygon(vertices);
+  const std::vector<TriangleCorners> triangles = cut(a, vertices);
   if (triangles.empty()) return;
   MeshData& mesh = patch_mesh(s, a);
   const auto first = static_cast<std::uint32_t>(mesh.positions.size());

@@ -5,6 +5,8 @@
 #include <cstring>
 #include <system_error>
 
+#include "scene/memory_limit.hpp"
+
 namespace clrt {
 namespace {
 
@@ -141,6 +143,7 @@ class LineReader {
 
   // A non-zero decimal integer; any index past INT32_MAX is beyond every table a file can hold.
   std::int64_t index(const char* corner_start, const char* what) {
+    const char* written = p_;
     const bool negative = p_ < end_ && *p_ == '-';
     if (negative) ++p_;
     const char* digits = p_;
@@ -148,9 +151,10 @@ class LineReader {
     for (; p_ < end_ && *p_ >= '0' && *p_ <= '9'; ++p_) {
       value = value * 10 + (*p_ - '0');
       if (value > INT32_MAX)
-        fail(column_of(corner_start), std::string(what) + " index " + quoted({digits, static_cast<std::size_t>(word_end(p_) - digits)}) + " is out of range");
+        fail(column_of(corner_start), std::string(what) + " index " + quoted({written, static_cast<std::size_t>(word_end(p_) - written)}) + " is out of range");
     }
-    if (p_ == digits) bad_corner(corner_start);
+    // Digits followed by anything but '/' or the corner's end ("0x1", "1e3") are no index.
+    if (p_ == digits || (p_ < end_ && *p_ != '/' && !is_blank(*p_))) bad_corner(corner_start);
     if (value == 0) fail(column_of(corner_start), std::string(what) + " index 0 is not allowed (indices start at 1)");
     return negative ? -value : value;
   }
@@ -212,7 +216,7 @@ bool face(LineReader& r, Sink& sink) {
   }
   if (count < 3)
     r.fail(r.column_past_last(), "a face needs at least 3 corners, found " + std::to_string(count));
-  if (count > 3) sink.polygon(static_cast<std::size_t>(count));
+  if (count > 3) sink.polygon(static_cast<std::size_t>(count), r.line());
   return true;
 }
 
@@ -229,6 +233,10 @@ bool parse_line(const char* begin, const char* end, std::size_t line, Sink& sink
   return true;
 }
 
+// Lines between two reports of a slice's memory: rare enough to cost nothing, often enough that a
+// slice grows by at most a few MiB past the limit.
+constexpr std::size_t kLinesPerMemoryReport = 4096;
+
 // Parses `text` line by line into `sink`; returns the number of line ends it passed.
 template <class Sink>
 std::size_t parse_lines(std::string_view text, Sink& sink) {
@@ -236,6 +244,7 @@ std::size_t parse_lines(std::string_view text, Sink& sink) {
   const char* const end = p + text.size();
   std::size_t line = 0;
   while (p < end) {
+    if (line % kLinesPerMemoryReport == 0) sink.report_memory(line);
     const auto* newline = static_cast<const char*>(std::memchr(p, '\n', static_cast<std::size_t>(end - p)));
     const char* eol = newline ? newline : end;
     if (!parse_line(p, eol, line, sink) || !newline) break;
@@ -248,7 +257,17 @@ std::size_t parse_lines(std::string_view text, Sink& sink) {
 // Fills an ObjChunk.
 class Collector {
  public:
-  explicit Collector(ObjChunk& out) : out_(out) {}
+  Collector(ObjChunk& out, ObjMemoryMeter& meter) : out_(out), meter_(meter) {}
+
+  void report_memory(std::size_t line) {
+    const std::uint64_t now = out_.bytes();
+    const std::uint64_t used = meter_.used += now - reported_;
+    reported_ = now;
+    if (used > meter_.available)
+      throw Malformed{{line, 1}, "loading stopped here: the mesh needs more than " + mebibytes(used) +
+                                     ", " + mebibytes(meter_.available) + " available (" +
+                                     meter_.source + ")"};
+  }
 
   void position(const Vec3& p) { out_.positions.push_back(p); }
   void normal(const Vec3& n) { out_.normals.push_back(n); }
@@ -266,8 +285,8 @@ class Collector {
     return true;
   }
 
-  void polygon(std::size_t corners) {
-    out_.polygons.push_back({out_.corners.index.size() - 3 * (corners - 2), corners});
+  void polygon(std::size_t corners, std::size_t line) {
+    out_.polygons.push_back({out_.corners.index.size() - 3 * (corners - 2), corners, line});
   }
 
  private:
@@ -281,6 +300,8 @@ class Collector {
   }
 
   ObjChunk& out_;
+  ObjMemoryMeter& meter_;
+  std::uint64_t reported_ = 0;
 };
 
 // Stops at one triangle corner and keeps its source.
@@ -302,7 +323,8 @@ class CornerFinder {
     return false;
   }
 
-  void polygon(std::size_t) {}
+  void polygon(std::size_t, std::size_t) {}
+  void report_memory(std::size_t) {}
 
   const ObjCornerSource& found() const { return found_; }
 
@@ -313,9 +335,16 @@ class CornerFinder {
 
 }  // namespace
 
-ObjChunk parse_obj_chunk(std::string_view text) {
+std::uint64_t ObjChunk::bytes() const {
+  return (positions.capacity() + normals.capacity()) * sizeof(Vec3) +
+         (corners.index.capacity() + corner_normals.index.capacity()) * sizeof(std::int32_t) +
+         (corners.relative.capacity() + corner_normals.relative.capacity()) * sizeof(std::uint32_t) +
+         polygons.capacity() * sizeof(ObjPolygon);
+}
+
+ObjChunk parse_obj_chunk(std::string_view text, ObjMemoryMeter& meter) {
   ObjChunk chunk;
-  Collector collector(chunk);
+  Collector collector(chunk, meter);
   try {
     chunk.lines = parse_lines(text, collector);
   } catch (const Malformed& m) {

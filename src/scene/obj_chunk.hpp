@@ -2,6 +2,7 @@
 // parsed side by side: its vertices, normals and triangle corners, or its first malformed line.
 #pragma once
 
+#include <atomic>
 #include <cstddef>
 #include <cstdint>
 #include <optional>
@@ -41,6 +42,7 @@ struct ObjCornerRefs {
 struct ObjPolygon {
   std::size_t first_corner;
   std::size_t corners;
+  std::size_t line;  // in the slice, from 0
 };
 
 struct ObjChunk {
@@ -52,11 +54,22 @@ struct ObjChunk {
   bool every_corner_has_normal = true;
   std::size_t lines = 0;              // line ends in the slice
   std::optional<ObjProblem> problem;  // the first malformed line: parsing stopped there
+
+  std::uint64_t bytes() const;  // what its tables hold, reserved room included
+};
+
+// The memory the slices of one file may take together, shared by the threads that parse them.
+struct ObjMemoryMeter {
+  std::uint64_t available = UINT64_MAX;
+  std::string source;  // which limit `available` is, for the message
+  std::atomic<std::uint64_t> used{0};
 };
 
 // Parses `text`, whole lines of an OBJ file. Lines other than v, vn, vt and f (o, g, s, usemtl,
-// mtllib, ...) and anything from a word starting with '#' to the line's end are ignored.
-ObjChunk parse_obj_chunk(std::string_view text);
+// mtllib, ...) and anything from a word starting with '#' to the line's end are ignored. Every
+// few thousand lines the chunk's growth is added to `meter`; parsing stops with a problem at the
+// line where the meter passes what is available (in this slice or another).
+ObjChunk parse_obj_chunk(std::string_view text, ObjMemoryMeter& meter);
 
 // Triangle corner `corner` of the slice `text` as the file spells it: where its word is, its
 // position and normal index as written (normal 0: none), and how many positions and normals the

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <vector>
 
+#include "scene/limits.hpp"
+
 namespace clrt {
 namespace {
 
@@ -66,6 +68,13 @@ bool is_ear(const Plane2& q, const std::vector<std::size_t>& left, std::size_t k
   return true;
 }
 
+bool is_convex(const Plane2& q) {
+  const std::size_t n = q.u.size();
+  for (std::size_t i = 0; i < n; ++i)
+    if (turn(q, (i + n - 1) % n, i, (i + 1) % n) <= 0) return false;
+  return true;
+}
+
 std::vector<Triangle> clip_ears(const std::vector<Vec3>& p) {
   const Plane2 q = project(p);
   std::vector<std::size_t> left(p.size());
@@ -103,15 +112,18 @@ void write_triangles(std::vector<T>& table, std::size_t first, const std::vector
 
 }  // namespace
 
-void triangulate_polygon(MeshData& mesh, std::size_t first_corner, std::size_t corners) {
+bool triangulate_polygon(MeshData& mesh, std::size_t first_corner, std::size_t corners) {
   const std::vector<std::uint32_t> position = fan_corners(mesh.corners, first_corner, corners);
   std::vector<Vec3> points;
   for (std::uint32_t i : position) points.push_back(mesh.positions[i]);
+  // The mesh holds the fan already, which covers a convex polygon exactly.
+  if (corners > limits::kMaxConcavePolygonCorners) return is_convex(project(points));
   const std::vector<Triangle> triangles = corners == 4 ? cut_quad(points) : clip_ears(points);
   if (!mesh.corner_normals.empty())
     write_triangles(mesh.corner_normals, first_corner, fan_corners(mesh.corner_normals, first_corner, corners),
                     triangles);
   write_triangles(mesh.corners, first_corner, position, triangles);
+  return true;
 }
 
 }  // namespace clrt

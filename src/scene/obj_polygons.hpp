@@ -15,7 +15,9 @@ namespace clrt {
 //   (in single precision), as tinyobjloader, which clrt used before, cut it;
 // - a larger polygon by ear clipping in the plane of its (Newell) normal, so that a concave
 //   polygon is covered exactly; where no ear is left (a polygon that crosses itself, or lies on a
-//   line) the fan's next triangle is kept.
-void triangulate_polygon(MeshData& mesh, std::size_t first_corner, std::size_t corners);
+//   line) the fan's next triangle is kept;
+// - a polygon of more than limits::kMaxConcavePolygonCorners corners is left as its fan when it
+//   is convex, and refused (false, the mesh unchanged) when it is not.
+bool triangulate_polygon(MeshData& mesh, std::size_t first_corner, std::size_t corners);
 
 }  // namespace clrt

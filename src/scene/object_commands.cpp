@@ -56,6 +56,12 @@ void triangle(LoaderState& s, const CommandArgs& a) {
   s.scene.triangles.push_back(t);
 }
 
+// What the scene so far leaves of the process's memory for a mesh.
+MemoryLimit memory_left(const LoaderState& s) {
+  const std::uint64_t used = loader_bytes(s);
+  return {s.memory.bytes > used ? s.memory.bytes - used : 0, s.memory.source};
+}
+
 // The same resolved path is read once; every `mesh` naming it shares that MeshData.
 int mesh_index(LoaderState& s, const CommandArgs& a) {
   const std::string path =
@@ -63,7 +69,7 @@ int mesh_index(LoaderState& s, const CommandArgs& a) {
   const auto known = s.mesh_by_path.find(path);
   if (known != s.mesh_by_path.end()) return known->second;
   try {
-    s.scene.meshes.push_back(load_obj_mesh(path, *s.files));
+    s.scene.meshes.push_back(load_obj_mesh(path, *s.files, memory_left(s)));
   } catch (const MeshError& e) {
     throw SceneError(a.command_location(), std::string("bad mesh file ") + e.what());
   }

@@ -2,6 +2,9 @@
 
 #include <iterator>
 #include <list>
+#include <string>
+
+#include "scene/limits.hpp"
 
 namespace clrt {
 namespace {
@@ -97,12 +100,20 @@ std::vector<TriangleCorners> clip_ears(const std::vector<Vec3>& v, const Vec3& n
 
 }  // namespace
 
+ConcavePolygonTooLarge::ConcavePolygonTooLarge(std::size_t corners)
+    : std::runtime_error("a concave polygon of " + std::to_string(corners) +
+                         " corners: clrt cuts concave polygons of at most " +
+                         std::to_string(limits::kMaxConcavePolygonCorners) +
+                         " corners (convex ones of any size)") {}
+
 std::vector<TriangleCorners> triangulate_polygon(const std::vector<Vec3>& vertices) {
   const Vec3 normal = polygon_normal(vertices);
   std::vector<TriangleCorners> all;
   if (is_convex(vertices, normal)) {
     for (std::size_t i = 1; i + 1 < vertices.size(); ++i) all.push_back({0, i, i + 1});
   } else {
+    if (vertices.size() > limits::kMaxConcavePolygonCorners)
+      throw ConcavePolygonTooLarge(vertices.size());
     all = clip_ears(vertices, normal);
   }
   std::vector<TriangleCorners> kept;

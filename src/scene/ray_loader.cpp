@@ -10,12 +10,11 @@
 namespace clrt {
 namespace {
 
-void apply(LoaderState& state, const Line& line) {
-  const CommandArgs args(state.scene.path, line);
+void apply(LoaderState& state, const CommandArgs& args) {
   const auto command = command_table().find(args.name());
-  if (command == command_table().end() || line.words.front().quoted)
+  if (command == command_table().end() || args.command_word().quoted)
     throw SceneError(args.command_location(),
-                     "unknown command '" + excerpt(line.words.front().text) + "'");
+                     "unknown command '" + excerpt(args.command_word().text) + "'");
   command->second(state, args);
 }
 
@@ -27,7 +26,15 @@ Scene load_ray_scene(const std::string& path, const FileSource& files) {
   state.scene.path = path;
   state.scene_folder = std::filesystem::path(path).parent_path().string();
   state.scene.materials.push_back(MaterialSpec{});
-  for (const Line& line : split_into_lines(read_scene_file(files, path), path)) apply(state, line);
+  const std::string text = read_scene_file(files, path);
+  state.text_bytes = text.size();
+  std::size_t commands = 0;
+  for_each_line(text, path, [&](Line& line) {
+    const CommandArgs args(path, line);
+    apply(state, args);
+    if (++commands % kMemoryCheckCommands == 0 || args.name() == "mesh")
+      check_loader_memory(state, args.command_location());
+  });
   check_camera(state);
   check_coordinates(state);
   return std::move(state.scene);

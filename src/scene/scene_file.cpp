@@ -6,7 +6,9 @@ namespace clrt {
 
 std::string read_scene_file(const FileSource& files, const std::string& path) {
   try {
-    return std::string(files.open(path, limits::kMaxSceneFileBytes)->text());
+    return std::string(without_byte_order_mark(files.open(path, limits::kMaxSceneFileBytes)->text()));
+  } catch (const FileChangedError& e) {
+    throw SceneError({path, 1, 1}, e.what());
   } catch (const InputFileError& e) {
     throw SceneError({path, 1, 1}, std::string("cannot read the scene file (") + e.what() + ")");
   }

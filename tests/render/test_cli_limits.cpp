@@ -100,3 +100,21 @@ TEST_CASE("an output that is an input is refused before any work", "[cli][limits
   CHECK(file_bytes(dir.file("s.png")) == scene);
   CHECK(file_bytes(dir.file("m.ppm")).rfind("v 0 0 0", 0) == 0);
 }
+
+TEST_CASE("a scene larger than the memory clrt may take stops loading early, at its line, exit 2",
+          "[cli][limits][memory]") {
+  // 3M spheres: 51 MB of text that would need about 3.4 GiB loaded; the address space is capped
+  // at 2 GiB, so loading must stop about half way, with the figures, not on a failed allocation.
+  ScratchDir dir;
+  std::string text = "resolution 8 8\n";
+  for (int i = 0; i < 3000000; ++i) text += "sphere " + std::to_string(i % 1000) + " 0 0 0.5\n";
+  const std::string path = dir.write("big.ray", text);
+  const std::string clrt = std::string("\"") + CLRT_EXE + "\" -q -o \"" + dir.file("out.png") + "\" \"" + path + "\"";
+  const CommandResult r = run_program("sh", "-c " + quoted("ulimit -v 2097152 && exec " + clrt));
+  INFO(r.output);
+  CHECK(r.exit_code == 2);
+  CHECK_THAT(r.output, Catch::Contains(path + ":") &&
+                           Catch::Contains(":1: error: loading stopped here: the scene needs ") &&
+                           Catch::Contains(" MiB available (RLIMIT_AS, ulimit -v)"));
+  CHECK(dir.entries() == std::set<std::string>{"big.ray"});
+}

@@ -84,6 +84,15 @@ TEST_CASE("eye equal to lookat is an error at the later of the two commands",
   require_error("sphere\neye 0 0 0\n", 2, 1, "same point");
 }
 
+TEST_CASE("eye and lookat too close to give a direction are an error that says so",
+          "[scene][camera][errors]") {
+  require_error("eye 0 0 0\nlookat 1e-200 0 0\n", 2, 1,
+                "the view direction (lookat - eye) is degenerate: eye and lookat are only 1e-200 apart");
+  require_error("lookat 0 0 1e-160\neye 0 0 0\nsphere\n", 2, 1, "degenerate");
+  // Close but representable: a direction like any other.
+  CHECK(load_text("eye 0 0 0\nlookat 1e-100 0 0\n").camera.lookat == Vec3{1e-100, 0, 0});
+}
+
 TEST_CASE("up parallel to the view direction is an error at the last camera command involved",
           "[scene][camera][errors]") {
   require_error("up 0 1 0\neye 0 5 0\n", 2, 1, "parallel");

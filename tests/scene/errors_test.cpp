@@ -67,3 +67,18 @@ TEST_CASE("the first error in the file is the one reported", "[scene][errors]") 
   const clrt::SceneError e = load_error("sphere\nfov 200\nbogus\n");
   CHECK(e.where().line == 2);
 }
+
+TEST_CASE("a UTF-8 byte order mark at the start of a scene file is skipped", "[scene][errors]") {
+  const std::string mark = "\xEF\xBB\xBF";
+  CHECK(clrt::test::load_text(mark + "sphere 0 0 0 1\n").instances.size() == 1);
+  CHECK(clrt::test::load_text(mark + "v\nfrom 0 0 5\nat 0 0 0\nup 0 1 0\nangle 45\nhither 0\n"
+                                     "resolution 8 8\ns 0 0 0 1\n",
+                              "scene.nff")
+            .instances.size() == 1);
+  // Columns count from the first character after it, as an editor shows them.
+  const clrt::SceneError e = load_error(mark + "sphre 0 0 0 1\n");
+  CHECK(e.message() == "unknown command 'sphre'");
+  CHECK(e.where().column == 1);
+  // Elsewhere it is no mark but bytes of a word.
+  require_error("sphere\n" + mark + "sphere\n", 2, 1, "unknown command '" + mark + "sphere'");
+}

@@ -1,5 +1,6 @@
 // Every malformed NFF construct is reported as FILE:LINE:COLUMN at the right place.
 #include <catch2/catch.hpp>
+#include <cmath>
 
 #include "scene_test_support.hpp"
 
@@ -65,6 +66,22 @@ TEST_CASE("NFF: p and pp take a vertex count >= 3 and that many vertices", "[sce
                     "found 17");
   require_nff_error(kView + "pp 3\n0 0 0 0 0 1\n1 0 0  0 0 0\n0 1 0 0 0 1\n", 10, 8,
                     "a vertex normal must not be a zero-length vector");
+}
+
+TEST_CASE("NFF: a concave p or pp beyond the corner limit is refused at its vertex count",
+          "[scene][nff][errors][polygons]") {
+  // A star of 5000 corners: tips at radius 2, notches at radius 1.
+  const int corners = 5000;
+  std::string p = "p " + std::to_string(corners) + "\n", pp = "pp " + std::to_string(corners) + "\n";
+  for (int i = 0; i < corners; ++i) {
+    const double angle = 2 * 3.14159265358979 * i / corners, r = i % 2 ? 1 : 2;
+    const std::string xyz = std::to_string(r * std::cos(angle)) + " " + std::to_string(r * std::sin(angle)) + " 0";
+    p += xyz + "\n";
+    pp += xyz + " 0 0 1\n";
+  }
+  const std::string expected = "a concave polygon of 5000 corners: clrt cuts concave polygons of at most 4096";
+  require_nff_error(kView + p, 8, 3, expected);
+  require_nff_error(kView + pp, 8, 4, expected);
 }
 
 TEST_CASE("NFF: f's numbers in their ranges", "[scene][nff][errors]") {

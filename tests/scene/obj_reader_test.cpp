@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cmath>
 #include <random>
 #include <string>
 #include <vector>
@@ -98,7 +99,11 @@ TEST_CASE("OBJ: a malformed line is an error at its line and column, never a sil
       {"f 1 2 3/0", ":5:7: texture coordinate index 0 is not allowed"},
       {"f 1 2 3//0", ":5:7: normal index 0 is not allowed"},
       {"f 1 2 99999999999", ":5:7: vertex index '99999999999' is out of range"},
-      {"f 1 2 -99999999999", ":5:7: vertex index '99999999999' is out of range"},
+      {"f 1 2 -99999999999", ":5:7: vertex index '-99999999999' is out of range"},
+      {"f 1 2 -2147483648", ":5:7: vertex index '-2147483648' is out of range"},
+      {"f 1 2 0x1", ":5:7: bad face corner '0x1'"},
+      {"f 1 2 3/0x1", ":5:7: bad face corner '3/0x1'"},
+      {"f 1 2 3//0x1", ":5:7: bad face corner '3//0x1'"},
       {"f", ":5:2: a face needs at least 3 corners, found 0"},
       {"vt", ":5:3: a texture coordinate is u [v [w]]: found no number"},
       {"vt 0 0 0 0", ":5:10: too many numbers for a texture coordinate"},
@@ -110,6 +115,12 @@ TEST_CASE("OBJ: a malformed line is an error at its line and column, never a sil
   };
   for (const Bad& c : cases)
     DYNAMIC_SECTION(c.line) { CHECK_THAT(obj_error(verts + c.line + "\nf 1 2 3\n"), Catch::Contains(c.message)); }
+}
+
+TEST_CASE("OBJ: a UTF-8 byte order mark at the file's start is skipped", "[scene][obj]") {
+  const MeshData m = load_obj_text("\xEF\xBB\xBFv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+  CHECK(m.positions.size() == 3);
+  CHECK(obj_error("\xEF\xBB\xBFv 0 0 x\n") == ":1:7: 'x' is not a number");
 }
 
 TEST_CASE("OBJ: a long word is quoted in part only", "[scene][obj][errors]") {
@@ -166,6 +177,44 @@ TEST_CASE("OBJ: a concave polygon is cut into triangles inside it, keeping its w
   const MeshData flipped =
       load_obj_text("v 2 1 0\nv 1 1 0\nv 1 2 0\nv 0 2 0\nv 0 0 0\nv 2 0 0\nf 6 5 4 3 2 1\n");
   for (std::size_t t = 0; t < 4; ++t) CHECK(twice_area_z(flipped, t) < 0);
+}
+
+namespace {
+
+// One face of `corners` corners round the origin in z = 0, counter-clockwise: a circle of radius
+// 1000, or a star whose every second corner lies at radius 600.
+std::string round_face_obj(int corners, bool star) {
+  std::string text, face = "f";
+  for (int i = 0; i < corners; ++i) {
+    const double angle = 2 * 3.14159265358979 * i / corners, r = star && i % 2 ? 600 : 1000;
+    text += "v " + std::to_string(r * std::cos(angle)) + " " + std::to_string(r * std::sin(angle)) + " 0\n";
+    face += " " + std::to_string(i + 1);
+  }
+  return text + face + "\n";
+}
+
+}  // namespace
+
+TEST_CASE("OBJ: a convex face beyond the concave corner limit is its fan, covering it exactly",
+          "[scene][obj][polygons]") {
+  const int corners = 6000;  // many more would not stay convex once rounded to single precision
+  const MeshData m = load_obj_text(round_face_obj(corners, false));
+  REQUIRE(m.corners.size() == 3 * (corners - 2));
+  double area = 0;
+  bool all_counter_clockwise = true;
+  for (std::size_t t = 0; t < corners - 2; ++t) {
+    all_counter_clockwise = all_counter_clockwise && twice_area_z(m, t) > 0;
+    area += twice_area_z(m, t) / 2;
+  }
+  CHECK(all_counter_clockwise);
+  CHECK(area == Approx(3.14159265358979e6).epsilon(1e-6));
+}
+
+TEST_CASE("OBJ: a concave face beyond the corner limit is refused at its line",
+          "[scene][obj][polygons][errors]") {
+  CHECK(obj_error(round_face_obj(200000, true)) ==
+        ":200001:1: a concave polygon of 200000 corners: clrt cuts concave polygons of at most 4096 "
+        "corners (convex ones of any size)");
 }
 
 namespace {

@@ -5,6 +5,8 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 
+#include "scene/limits.hpp"
+
 using clrt::TriangleCorners;
 using clrt::triangulate_polygon;
 using clrt::Vec3;
@@ -88,4 +90,48 @@ TEST_CASE("a polygon that crosses itself still ends, with at most n - 2 triangle
           "[scene][polygons]") {
   const std::vector<Vec3> bow_tie{{0, 0, 0}, {2, 2, 0}, {2, 0, 0}, {0, 2, 0}, {1, 3, 0}};
   CHECK(triangulate_polygon(bow_tie).size() <= 3);
+}
+
+namespace {
+
+// `corners` points on the unit circle, counter-clockwise: convex however many there are.
+std::vector<Vec3> circle(int corners) {
+  std::vector<Vec3> v;
+  const double pi = std::acos(-1.0);
+  for (int i = 0; i < corners; ++i)
+    v.push_back({std::cos(2 * pi * i / corners), std::sin(2 * pi * i / corners), 0});
+  return v;
+}
+
+}  // namespace
+
+TEST_CASE("a convex polygon of 200k corners is cut into its fan, covering it exactly",
+          "[scene][polygons]") {
+  const std::vector<Vec3> v = circle(200000);
+  const Triangles triangles = triangulate_polygon(v);
+  REQUIRE(triangles.size() == v.size() - 2);
+  double sum = 0;
+  bool all_counter_clockwise = true;
+  for (const TriangleCorners& t : triangles) {
+    all_counter_clockwise = all_counter_clockwise && area(v, t, {0, 0, 1}) > 0;
+    sum += area(v, t, {0, 0, 1});
+  }
+  CHECK(all_counter_clockwise);
+  CHECK(sum == Approx(polygon_area(v)).epsilon(1e-9));
+}
+
+TEST_CASE("a concave polygon is cut up to the corner limit and refused beyond it, at once",
+          "[scene][polygons][errors]") {
+  const std::size_t limit = clrt::limits::kMaxConcavePolygonCorners;
+  const std::vector<Vec3> at_limit = star(static_cast<int>(limit / 2));
+  REQUIRE(at_limit.size() == limit);
+  const Triangles triangles = triangulate_polygon(at_limit);
+  CHECK(triangles.size() == limit - 2);
+  double sum = 0;
+  for (const TriangleCorners& t : triangles) sum += area(at_limit, t, {0, 0, 1});
+  CHECK(sum == Approx(polygon_area(at_limit)).epsilon(1e-9));
+
+  CHECK_THROWS_WITH(triangulate_polygon(star(100000)),
+                    "a concave polygon of 200000 corners: clrt cuts concave polygons of at most " +
+                        std::to_string(limit) + " corners (convex ones of any size)");
 }

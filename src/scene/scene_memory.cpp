@@ -1,0 +1,36 @@
+#include "scene/scene_memory.hpp"
+
+namespace clrt {
+namespace {
+
+constexpr std::uint64_t kGeometryBytesPerPrimitive = 256;
+
+template <class T>
+std::uint64_t table_bytes(const std::vector<T>& table) {
+  return table.size() * sizeof(T);
+}
+
+}  // namespace
+
+std::uint64_t estimated_geometry_bytes(const Scene& scene) {
+  std::uint64_t primitives = scene.instances.size() + scene.triangles.size() + 1;
+  for (const MeshData& mesh : scene.meshes) primitives += mesh.corners.size() / 3;
+  return primitives * kGeometryBytesPerPrimitive;
+}
+
+std::uint64_t estimated_scene_bytes(const Scene& scene) {
+  std::uint64_t tables = table_bytes(scene.instances) + table_bytes(scene.triangles);
+  for (const MeshData& mesh : scene.meshes)
+    tables += table_bytes(mesh.positions) + table_bytes(mesh.normals) + table_bytes(mesh.corners) +
+              table_bytes(mesh.corner_normals);
+  return 2 * tables + estimated_geometry_bytes(scene);
+}
+
+void check_scene_memory(std::uint64_t needed, const MemoryLimit& limit, const SourceLocation& where) {
+  if (needed <= limit.bytes) return;
+  throw SceneError(where, "loading stopped here: the scene needs " + mebibytes(needed) +
+                              " so far, " + mebibytes(limit.bytes) + " available (" +
+                              limit.source + ")");
+}
+
+}  // namespace clrt

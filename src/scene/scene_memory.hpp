@@ -1,0 +1,26 @@
+// What a scene costs in memory, known while it loads: the loaders stop at the line where the
+// estimate passes the memory this process may still take (memory_limit.hpp), before spending it.
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include "scene/memory_limit.hpp"
+#include "scene/scene.hpp"
+#include "scene/source_location.hpp"
+
+namespace clrt {
+
+// Estimated bytes the scene's geometry tables take on a device (BVH nodes and leaf packets,
+// instances, normals), built on the host first: measured 165 to 220 bytes per triangle or
+// instance (docs/performance.md, BVH scaling); 256 are assumed.
+std::uint64_t estimated_geometry_bytes(const Scene& scene);
+
+// Estimated bytes the scene needs from its load to its render: its tables, each counted twice
+// (a growing table is copied into one twice its size), and its geometry tables.
+std::uint64_t estimated_scene_bytes(const Scene& scene);
+
+// Throws SceneError at `where`, loading stopped there, when `needed` bytes exceed `limit`.
+void check_scene_memory(std::uint64_t needed, const MemoryLimit& limit, const SourceLocation& where);
+
+}  // namespace clrt
