@@ -18,6 +18,9 @@ CLRT_SHARED_BEGIN
 /* Child-ray slots per ray of a queue: its reflection (slot 0) and its refraction (slot 1). */
 #define CLRT_CHILD_SLOTS 2u
 
+/* Shading classes when the wavefront shades class by class (kernels/sort_hits.cl). */
+#define CLRT_SHADE_CLASSES 3u
+
 /* A camera, reflection or refraction ray. Queues are kept sorted by `sample` (camera rays are
  * generated in sample order and compaction is stable), which is what lets contributions be
  * summed per sample in a fixed order without atomics. */

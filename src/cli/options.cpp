@@ -107,6 +107,12 @@ void add_device_options(CLI::App& app, CliOptions& o) {
                  "rays in flight per queue: device memory grows with it "
                  "(default: 16384 on CPU devices, 1048576 on others)")
       ->check(CLI::Range(1u << 10, 1u << 26));
+  app.add_option_function<std::string>(
+         "--shade-order",
+         [&](const std::string& order) { o.shade_by_class = CLI::detail::to_lower(order) == "class"; },
+         "queue (default): the wavefront shades each pass's hits in queue order; class: misses, "
+         "local-only surfaces, then mirrors and glass, one launch each (same image)")
+      ->check(CLI::IsMember({"queue", "class"}, CLI::ignore_case));
   app.add_option("--lanes", o.lanes,
                  "waves in flight per device, each with its own queues (default: per device class)")
       ->check(CLI::Range(1, 16));
@@ -168,6 +174,7 @@ RenderOptions resolve_render_options(const CliOptions& cli, const Scene& scene) 
   r.local_size = cli.local_size;
   r.lanes = cli.lanes;
   r.integrator = cli.integrator;
+  r.shade_by_class = cli.shade_by_class;
   r.region = resolve_region(cli.region, r.width, r.height);
   return r;
 }

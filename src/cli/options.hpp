@@ -27,6 +27,7 @@ struct CliOptions {
   std::uint32_t lanes = 0;      // 0: per device class
   std::optional<unsigned> threads;  // PoCL's CPU threads
   IntegratorKind integrator = IntegratorKind::Wavefront;
+  bool shade_by_class = false;
   RegionRequest region;
   AnimationRequest animation;
   std::string device = "cpu";

@@ -29,6 +29,7 @@ struct IntegratorConfig {
   std::size_t local_size = 64;
   std::uint32_t megakernel_depth = 0;  // the megakernel's stack, from the device's program
   bool profile = false;            // per-kernel device times and rays by kind (--stats)
+  bool shade_by_class = false;     // RenderOptions::shade_by_class
   BusyTimeline* timeline = nullptr;  // the device's, shared by its lanes (profiling only)
 };
 

@@ -1,6 +1,5 @@
 #include "render/render_limits.hpp"
 
-
 #include <algorithm>
 
 #include "render/integrator.hpp"

@@ -28,6 +28,9 @@ struct RenderOptions {
   // 0 picks the device class's (src/device/device_tuning.cpp).
   std::uint32_t wavefront = 0;
   IntegratorKind integrator = IntegratorKind::Wavefront;
+  // The wavefront shades each pass's hits class by class (misses, local terms only, mirrors and
+  // glass: kernels/sort_hits.cl) instead of in queue order. The image keeps its bits.
+  bool shade_by_class = false;
   // Work-items per work-group; 0 picks the device class's (src/device/device_tuning.cpp).
   std::size_t local_size = 0;
   // Waves in flight per device (each with its own queues); 0 picks the device class's.

@@ -183,6 +183,7 @@ Renderer::Renderer(const Scene& scene, GeometryData geometry, const RenderSetup&
     config.local_size = tuning.local_size;
     config.megakernel_depth = tuning.megakernel_depth;
     config.profile = setup.profile;
+    config.shade_by_class = options_.shade_by_class;
     config.timeline = w.timeline.get();
     for (std::uint32_t k = 0; k < tuning.lanes; ++k) {
       Lane lane;

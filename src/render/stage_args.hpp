@@ -66,6 +66,38 @@ struct ShadeArgs {
                    shadow_flags, spawn_slots, spawn_flags)
 };
 
+// shade's work for the rays of one shading class, in the order the class lists them.
+struct ShadeSortedArgs {
+  static constexpr const char* kName = "shade_sorted";
+  Global<const dev::RenderParams> params;
+  Global<const dev::Material> materials;
+  Global<const dev::Light> lights;
+  Global<const dev::Ray> rays;
+  Global<const dev::Hit> hits;
+  cl_uint first = 0;
+  Global<const cl_uint4> order;
+  Global<const cl_uint> class_count;  // left on the device by the compaction
+  Global<dev::f4> colour;
+  Global<dev::ShadowRay> shadow_slots;
+  Global<cl_uint> shadow_flags;
+  Global<dev::Ray> spawn_slots;
+  Global<cl_uint> spawn_flags;
+
+  CLRT_KERNEL_ARGS(params, materials, lights, rays, hits, first, order, class_count, colour,
+                   shadow_slots, shadow_flags, spawn_slots, spawn_flags)
+};
+
+struct ClassifyHitsArgs {
+  static constexpr const char* kName = "classify_hits";
+  Global<const dev::Material> materials;
+  Global<const dev::Hit> hits;
+  cl_uint first = 0, count = 0, wanted = 0;
+  Global<cl_uint4> indices;
+  Global<cl_uint> flags;
+
+  CLRT_KERNEL_ARGS(materials, hits, first, count, wanted, indices, flags)
+};
+
 struct ShadowArgs {
   static constexpr const char* kName = "shadow";
   SceneArgs scene;

@@ -18,6 +18,8 @@ namespace clrt {
 //   spawn_*           CLRT_CHILD_SLOTS per ray (reflection, refraction), compacted into next_rays
 //   shadow_*          shadow samples per ray of a shade chunk, compacted into shadow_queue
 //   visible           visible[j] of shadow_queue[j]
+//   shade_*           shading class by class: a chunk's ray indices, one class's flags and the
+//                     class's compacted order (kernels/sort_hits.cl)
 #define CLRT_WAVE_QUEUE_BUFFERS(X)                                                 \
   X(rays, dev::Ray, s.capacity, "ray queue")                                      \
   X(next_rays, dev::Ray, s.capacity, "next ray queue")                            \
@@ -28,7 +30,10 @@ namespace clrt {
   X(shadow_slots, dev::ShadowRay, s.shadow_buffer_slots(), "shadow ray slot")     \
   X(shadow_flags, cl_uint, s.shadow_buffer_slots(), "shadow ray flag")            \
   X(shadow_queue, dev::ShadowRay, s.shadow_buffer_slots(), "shadow ray queue")    \
-  X(visible, dev::f4, s.shadow_buffer_slots(), "shadow visibility")
+  X(visible, dev::f4, s.shadow_buffer_slots(), "shadow visibility")                \
+  X(shade_indices, cl_uint4, s.shade_chunk, "shading index")                       \
+  X(shade_flags, cl_uint, s.shade_chunk, "shading class flag")                     \
+  X(shade_order, cl_uint4, s.shade_chunk, "shading order")
 
 class WaveQueues {
  public:

@@ -52,6 +52,9 @@ WavefrontIntegrator::WavefrontIntegrator(DeviceContext& device, const compute::p
       generate_(program),
       intersect_(program),
       shade_(program),
+      shade_sorted_(program),
+      classify_(program),
+      shade_by_class_(config.shade_by_class),
       shadow_(program),
       gather_(program),
       accumulate_(program) {}
@@ -127,13 +130,36 @@ void WavefrontIntegrator::run_pass(std::uint32_t pass, std::uint32_t count) {
     shade_chunk(pass, first, std::min(queues_.shade_chunk(), count - first));
 }
 
+void WavefrontIntegrator::shade_by_class(std::uint32_t pass, std::uint32_t first,
+                                         std::uint32_t count) {
+  // One class at a time: flag it, compact its indices, shade them; its count stays on the device.
+  for (cl_uint c = 0; c < CLRT_SHADE_CLASSES; ++c) {
+    launcher_.launch(classify_,
+                     {frame_.materials, queues_.hits, first, count, c, queues_.shade_indices,
+                      queues_.shade_flags},
+                     count, pass);
+    compactor_.enqueue(launcher_, queues_.shade_indices, queues_.shade_flags, count,
+                       queues_.shade_order, count, pass);
+    launcher_.launch(shade_sorted_,
+                     {frame_.params, frame_.materials, frame_.lights, queues_.rays, queues_.hits,
+                      first, queues_.shade_order, compactor_.total(), queues_.colour,
+                      queues_.shadow_slots, queues_.shadow_flags, queues_.spawn_slots,
+                      queues_.spawn_flags},
+                     count, pass);
+  }
+}
+
 void WavefrontIntegrator::shade_chunk(std::uint32_t pass, std::uint32_t first,
                                       std::uint32_t count) {
-  launcher_.launch(shade_,
-                   {frame_.params, frame_.materials, frame_.lights, queues_.rays, queues_.hits,
-                    first, count, queues_.colour, queues_.shadow_slots, queues_.shadow_flags,
-                    queues_.spawn_slots, queues_.spawn_flags},
-                   count, pass);
+  if (shade_by_class_) {
+    shade_by_class(pass, first, count);
+  } else {
+    launcher_.launch(shade_,
+                     {frame_.params, frame_.materials, frame_.lights, queues_.rays, queues_.hits,
+                      first, count, queues_.colour, queues_.shadow_slots, queues_.shadow_flags,
+                      queues_.spawn_slots, queues_.spawn_flags},
+                     count, pass);
+  }
   const std::size_t slots = std::size_t{count} * frame_.host.params.shadow_samples;
   if (!tracing() || slots == 0) return;
   // The shadow queue's length stays on the device: shadow and gather_shadows are launched over

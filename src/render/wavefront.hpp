@@ -32,6 +32,7 @@ class WavefrontIntegrator final : public Integrator {
                    PixelStore& store, std::uint64_t stored_at);
   void run_pass(std::uint32_t pass, std::uint32_t count);
   void shade_chunk(std::uint32_t pass, std::uint32_t first, std::uint32_t count);
+  void shade_by_class(std::uint32_t pass, std::uint32_t first, std::uint32_t count);
   // Whether rays spawn rays (trace and path modes).
   bool tracing() const { return frame_.host.params.mode != CLRT_MODE_CAST; }
 
@@ -47,6 +48,9 @@ class WavefrontIntegrator final : public Integrator {
   TypedKernel<GenerateArgs> generate_;
   TypedKernel<IntersectArgs> intersect_;
   TypedKernel<ShadeArgs> shade_;
+  TypedKernel<ShadeSortedArgs> shade_sorted_;
+  TypedKernel<ClassifyHitsArgs> classify_;
+  bool shade_by_class_;
   TypedKernel<ShadowArgs> shadow_;
   TypedKernel<GatherShadowsArgs> gather_;
   TypedKernel<AccumulateSamplesArgs> accumulate_;

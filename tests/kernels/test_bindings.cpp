@@ -17,11 +17,10 @@ using namespace clrt;
 namespace {
 
 using RendererKernels =
-    std::tuple<GenerateArgs, IntersectArgs, ShadeArgs, ShadowArgs, GatherShadowsArgs,
-               AccumulateSamplesArgs, ResolveArgs, MegakernelArgs, CompactCountArgs,
-               CompactScanArgs, CompactScatterArgs, CountRayKindsArgs, FoldRayCountsArgs,
-               AddRayKindsArgs,
-               AddShadowRaysArgs, CommitRayCountsArgs>;
+    std::tuple<GenerateArgs, IntersectArgs, ShadeArgs, ShadeSortedArgs, ClassifyHitsArgs,
+               ShadowArgs, GatherShadowsArgs, AccumulateSamplesArgs, ResolveArgs, MegakernelArgs,
+               CompactCountArgs, CompactScanArgs, CompactScatterArgs, CountRayKindsArgs,
+               FoldRayCountsArgs, AddRayKindsArgs, AddShadowRaysArgs, CommitRayCountsArgs>;
 
 template <class Args>
 std::vector<std::string> mismatches(const compute::program& program) {

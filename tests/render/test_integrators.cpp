@@ -37,6 +37,13 @@ const std::vector<Variant> kVariants = {
        o.mode = RenderMode::Path;
        o.samples = 4;
      }},
+    {"shading class by class", [](RenderOptions& o) { o.shade_by_class = true; }},
+    {"path mode, shading class by class",
+     [](RenderOptions& o) {
+       o.mode = RenderMode::Path;
+       o.samples = 2;
+       o.shade_by_class = true;
+     }},
     {"path mode, a 1024-ray wavefront, seed 9",
      [](RenderOptions& o) {
        o.mode = RenderMode::Path;
