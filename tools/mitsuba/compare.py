@@ -1,8 +1,9 @@
 #!/usr/bin/env python3
-"""compare.py CLRT.exr MITSUBA.exr [--mean-tolerance 0.01] [--z-pass 0.99] [--z-max 3] [--block 4] [--scale F]
+"""compare.py CLRT.exr MITSUBA.exr [--mean-tolerance 0.01] [--z-pass 0.99] [--z-max 3] [--block 4]
+    [--z2-sigmas 4] [--scale F]
 
 Tells whether two Monte Carlo renders of one scene estimate the same image: exit 0 when they do,
-1 when they differ, 2 when the images cannot be compared. Two checks, both on the difference
+1 when they differ, 2 when the images cannot be compared. Three checks, all on the difference
 image D = A - B (docs/path-tracing.md, "Checked against Mitsuba 3"):
 
 - the mean of each channel over the image: |mean A - mean B| <= tolerance x mean B;
@@ -10,7 +11,9 @@ image D = A - B (docs/path-tracing.md, "Checked against Mitsuba 3"):
   unbiased, every D has expectation 0, whatever the image shows (edges, shadows), and sum(D^2)
   is an unbiased estimate of the variance of sum(D), because the pixels' samples are
   independent; so Z needs no second render and ignores fireflies (one huge D gives |Z| near 1).
-  At least the fraction z-pass of the blocks must have |Z| <= z-max.
+  At least the fraction z-pass of the blocks must have |Z| <= z-max;
+- the mean of Z^2 over blocks twice as wide, about 1 (at most) without bias: no more than
+  z2-sigmas of its standard deviations above 1.
 
 Run it with the python of the venv tools/mitsuba/install.sh makes (it reads EXR with Mitsuba).
 """
@@ -37,6 +40,7 @@ ROUNDING = 1e-4
 
 
 def block_z(a, b, size):
+    """Z of each size x size block and channel, and whether the block has any noise at all."""
     h, w = (a.shape[0] // size) * size, (a.shape[1] // size) * size
 
     def blocks(image):
@@ -45,8 +49,9 @@ def block_z(a, b, size):
     diff = blocks(a - b)
     floor = (ROUNDING * np.maximum(np.abs(blocks(a)), np.abs(blocks(b)))) ** 2
     s, q = diff.sum(axis=(1, 3)), (diff ** 2 + floor).sum(axis=(1, 3))
+    noisy = (diff ** 2 > floor).any(axis=(1, 3))
     # A block where both images agree exactly (black sky on both sides) has nothing to test.
-    return np.divide(s, np.sqrt(q), out=np.zeros_like(s), where=q > 0)
+    return np.divide(s, np.sqrt(q), out=np.zeros_like(s), where=q > 0), noisy
 
 
 def main():
@@ -59,6 +64,9 @@ def main():
                         help="smallest fraction of blocks with |Z| <= z-max (default 0.99)")
     parser.add_argument("--z-max", type=float, default=3.0, help="the largest |Z| a block may have (default 3)")
     parser.add_argument("--block", type=int, default=4, help="block side in pixels (default 4)")
+    parser.add_argument("--z2-sigmas", type=float, default=4.0,
+                        help="how far the mean of Z^2 over blocks twice as wide may lie above 1, "
+                             "in its standard deviations, sqrt(2 / blocks) (default 4)")
     parser.add_argument("--scale", type=float, default=1.0,
                         help="multiply the reference by this first: with 1.03, a pass says that an error "
                              "of 3%% would go unseen at these sample counts")
@@ -96,7 +104,7 @@ def main():
         if stderr / norm > args.mean_tolerance / 3:
             print(f"     note: the noise is too large to resolve the tolerance; render more samples")
 
-    z = block_z(a, b, args.block)
+    z, _ = block_z(a, b, args.block)
     passing = np.mean(np.abs(z) <= args.z_max)
     good = passing >= args.z_pass
     ok &= good
@@ -104,6 +112,19 @@ def main():
     print(f"{'ok  ' if good else 'FAIL'} blocks: {passing:.2%} of {z.size} ({args.block}x{args.block} pixels x channel) "
           f"have |Z| <= {args.z_max:g} (need {args.z_pass:.2%}); largest |Z| {abs(z[worst]):.2f} "
           f"at pixels x {worst[1] * args.block}, y {worst[0] * args.block}, channel {names[worst[2]]}")
+
+    # Z^2 averages to about 1 over blocks when both renders are unbiased (less where a block's
+    # samples are skewed), with a spread of about sqrt(2 / blocks); biases too small to push one
+    # block past z-max, but spread over many, raise it. Larger blocks see small biases better.
+    size = 2 * args.block
+    z, noisy = block_z(a, b, size)
+    count = np.count_nonzero(noisy)
+    mean_z2 = np.mean(z[noisy] ** 2) if count else 0.0
+    z2_max = 1.0 + args.z2_sigmas * np.sqrt(2.0 / max(count, 1))
+    good = mean_z2 <= z2_max
+    ok &= good
+    print(f"{'ok  ' if good else 'FAIL'} mean Z^2 over the {count} noisy {size}x{size} blocks "
+          f"x channel: {mean_z2:.3f} (at most {z2_max:.3f})")
     print("PASS" if ok else "FAIL")
     return 0 if ok else 1
 
