@@ -53,7 +53,7 @@ def main():
     parser.add_argument("--cache", required=True, help="folder of the Mitsuba references")
     parser.add_argument("--work", required=True, help="folder for clrt's renders")
     parser.add_argument("--spp", type=int, default=256, help="clrt's samples per pixel (default 256)")
-    parser.add_argument("--reference-spp", type=int, default=1024, help="Mitsuba's (default 1024)")
+    parser.add_argument("--reference-spp", type=int, default=512, help="Mitsuba's (default 512)")
     parser.add_argument("--reference-seed", type=int, default=7)
     parser.add_argument("scenes", nargs="+")
     args = parser.parse_args()

@@ -9,7 +9,6 @@ against a Mitsuba scene that quietly differs from it. Run with the Mitsuba venv'
 (tools/mitsuba/install.sh); without options it prints the scene dictionary it built.
 """
 import argparse
-import math
 import sys
 
 import numpy as np
@@ -69,13 +68,14 @@ def mitsuba_bsdf(material):
     the largest channel of the weights' sum, at most 1 after the energy scale s, and so is every
     scaled parameter.
     """
-    if material.glossy > 0:
-        raise SceneError("the normalised Phong lobe (ks > 0 with kr + kt < 1) has no Mitsuba "
-                         "counterpart; the comparison scenes leave it out")
     lobes = []
     if material.diffuse.max() > 0:
         lobes.append((material.diffuse.max(),
                       lambda k: one_sided({"type": "diffuse", "reflectance": rgb(k * material.diffuse)})))
+    if material.glossy > 0:
+        lobes.append((material.glossy,
+                      lambda k: one_sided({"type": "clrt_phong", "weight": k * material.glossy,
+                                           "exponent": float(material.exponent)})))
     if material.mirror > 0:
         lobes.append((material.mirror,
                       lambda k: one_sided({"type": "conductor", "material": "none",
@@ -169,6 +169,9 @@ class RayScene:
         else:
             raise SceneError(f"`{name}` is not supported by the Mitsuba comparison")
 
+    def materials(self):
+        return [m for m, *_ in self.spheres] + [m for m, _ in self.triangles]
+
     def add_sphere(self, centre, radius):
         linear = self.transform[:3, :3]
         scale = abs(np.linalg.det(linear)) ** (1.0 / 3.0)
@@ -238,6 +241,11 @@ def to_mitsuba(scene, spp=None, resolution=None, seed=0):
     spp = spp or scene.samples
     max_depth = scene.maxdepth + DEPTH_OFFSET
     import mitsuba as mi
+    if any(m.glossy > 0 for m in scene.materials()):
+        if not mi.variant().startswith("scalar"):
+            raise SceneError("the normalised Phong lobe (phong.py) runs in Mitsuba's scalar variants only")
+        import phong
+        phong.register()
     d = {
         "type": "scene",
         # Russian roulette would only add noise: the expectation is the same, so it starts

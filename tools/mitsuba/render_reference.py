@@ -21,15 +21,16 @@ def main():
     parser.add_argument("--spp", type=int, help="samples per pixel (default: the scene's `samples`)")
     parser.add_argument("--seed", type=int, default=0)
     parser.add_argument("--resolution", help="WxH (default: the scene's `resolution`)")
-    parser.add_argument("--threads", type=int, default=2, help="render threads (default 2)")
     parser.add_argument("--variant", default="scalar_rgb",
-                        help="Mitsuba variant: scalar_rgb (default, fastest for these small scenes) or llvm_ad_rgb")
+                        help="Mitsuba variant (default scalar_rgb; llvm_ad_rgb needs a newer LLVM than Debian 12's)")
     args = parser.parse_args()
 
     import drjit as dr
     import mitsuba as mi
     mi.set_variant(args.variant)
-    dr.set_thread_count(args.threads)
+    # Two threads: the machine's share. One is not an option: the Phong plugin's Python code
+    # then waits forever for the interpreter lock the render holds.
+    dr.set_thread_count(2)
     try:
         scene = ray_to_mitsuba.RayScene(args.scene)
         d = ray_to_mitsuba.to_mitsuba(scene, args.spp, ray_to_mitsuba.parse_resolution(args.resolution), args.seed)
