@@ -59,44 +59,39 @@ def one_sided(bsdf):
 
 
 def mitsuba_bsdf(material):
-    """The sum of the material's lobes, each with its own weight.
-
-    Mitsuba's blendbsdf takes a convex combination and samples its two halves in proportion to
-    it. Each lobe gets the share p_i / P of the blend, p_i its weight's largest channel, and its
-    parameters are scaled by P / p_i, so the blend evaluates to the plain sum of weight times
-    lobe. Mitsuba refuses reflectances above 1; only the Lambertian weight has colour, so P is
-    the largest channel of the weights' sum, at most 1 after the energy scale s, and so is every
-    scaled parameter.
-    """
+    """The sum of the material's lobes, each with its own weight (lobes.py's clrt_lobes)."""
     lobes = []
     if material.diffuse.max() > 0:
-        lobes.append((material.diffuse.max(),
-                      lambda k: one_sided({"type": "diffuse", "reflectance": rgb(k * material.diffuse)})))
+        lobes.append((material.diffuse.mean(),
+                      one_sided({"type": "diffuse", "reflectance": rgb(material.diffuse)})))
     if material.glossy > 0:
         lobes.append((material.glossy,
-                      lambda k: one_sided({"type": "clrt_phong", "weight": k * material.glossy,
-                                           "exponent": float(material.exponent)})))
+                      one_sided({"type": "clrt_phong", "weight": material.glossy,
+                                 "exponent": float(material.exponent)})))
     if material.mirror > 0:
         lobes.append((material.mirror,
-                      lambda k: one_sided({"type": "conductor", "material": "none",
-                                           "specular_reflectance": rgb([k * material.mirror] * 3)})))
+                      one_sided({"type": "conductor", "material": "none",
+                                 "specular_reflectance": rgb([material.mirror] * 3)})))
     if material.glass > 0:
         lobes.append((material.glass,
-                      lambda k: {"type": "dielectric", "int_ior": material.ior, "ext_ior": 1.0,
-                                 "specular_reflectance": rgb([k * material.glass] * 3),
-                                 "specular_transmittance": rgb([k * material.glass] * 3)}))
+                      {"type": "dielectric", "int_ior": material.ior, "ext_ior": 1.0,
+                       "specular_reflectance": rgb([material.glass] * 3),
+                       "specular_transmittance": rgb([material.glass] * 3)}))
     if not lobes:
         return one_sided({"type": "diffuse", "reflectance": rgb([0, 0, 0])})
+    if len(lobes) == 1:
+        return lobes[0][1]
+    # Lobes are drawn as clrt draws them, in proportion to their weights averaged over the
+    # channels; any choice would do, as each sample is divided by its chance.
     total = sum(p for p, _ in lobes)
+    d = {"type": "clrt_lobes"}
+    for i, (p, lobe) in enumerate(lobes):
+        d[f"lobe_{i}"], d[f"chance_{i}"] = lobe, float(p / total)
+    return d
 
-    def blend(rest, rest_total):
-        p, make = rest[0]
-        if len(rest) == 1:
-            return make(total / p)
-        return {"type": "blendbsdf", "weight": (rest_total - p) / rest_total,
-                "bsdf_0": make(total / p), "bsdf_1": blend(rest[1:], rest_total - p)}
 
-    return blend(lobes, total)
+def needs_plugins(material):
+    return material.glossy > 0 or sum(w > 0 for w in (material.diffuse.max(), material.mirror, material.glass)) > 1
 
 
 class RayScene:
@@ -241,11 +236,11 @@ def to_mitsuba(scene, spp=None, resolution=None, seed=0):
     spp = spp or scene.samples
     max_depth = scene.maxdepth + DEPTH_OFFSET
     import mitsuba as mi
-    if any(m.glossy > 0 for m in scene.materials()):
+    if any(needs_plugins(m) for m in scene.materials()):
         if not mi.variant().startswith("scalar"):
-            raise SceneError("the normalised Phong lobe (phong.py) runs in Mitsuba's scalar variants only")
-        import phong
-        phong.register()
+            raise SceneError("the Phong lobe and mixed materials (lobes.py) run in Mitsuba's scalar variants only")
+        import lobes
+        lobes.register()
     d = {
         "type": "scene",
         # Russian roulette would only add noise: the expectation is the same, so it starts
