@@ -9,6 +9,7 @@ for the check to mean anything. Exit 0 when every scene matches, 1 when one does
 (skipped) when the Mitsuba venv of tools/mitsuba/install.sh is absent.
 """
 import argparse
+import glob
 import hashlib
 import os
 import subprocess
@@ -41,7 +42,10 @@ def reference(python, scene, args, mitsuba_version):
         print(done.stdout, end="")
         if done.returncode != 0:
             raise RuntimeError(f"the Mitsuba reference of {scene} failed")
-        # Renamed into place whole, so a render cut short never poses as a reference.
+        # Renamed into place whole, so a render cut short never poses as a reference; the
+        # scene's older references can never match again.
+        for old in glob.glob(os.path.join(args.cache, f"{glob.escape(name)}-*.exr")):
+            os.remove(old)
         os.replace(partial, out)
     return out
 
