@@ -6,7 +6,7 @@ Reads a clrt `.ray` scene and builds the Mitsuba 3 scene that renders the same i
 weights) and docs/scene-format.md (camera, transforms). Only the subset the comparison scenes
 need is read; anything else is refused with FILE:LINE: error, so that a scene is never compared
 against a Mitsuba scene that quietly differs from it. Run with the Mitsuba venv's python
-(tools/mitsuba/install.sh); without options it prints the scene dictionary it built.
+(tools/mitsuba/install.sh); it prints the scene dictionary it built, for a look at the mapping.
 """
 import argparse
 import sys
