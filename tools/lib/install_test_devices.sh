@@ -32,4 +32,6 @@ install_test_devices() {
     echo "$(cd "$venv/lib" && pwd)/libintelocl.so" >"$vendors/intel/intel.icd"
     cp "$pocl_icd" "$vendors/intel/"
   fi
+  bash tools/mitsuba/install.sh "$build" ||
+    echo "setup: warning: Mitsuba 3 not installed; path_matches_mitsuba will be skipped" >&2
 }

@@ -1,0 +1,111 @@
+#!/usr/bin/env python3
+"""path_matches_mitsuba.py --clrt CLRT --venv VENV --cache DIR --work DIR SCENE.ray...
+
+The CTest check path_matches_mitsuba: renders each scene with `clrt --mode path` and with
+Mitsuba 3 (render_reference.py) and compares them (compare.py). Each reference is rendered
+once and kept in DIR under a hash of everything that decides its pixels. Then the same
+comparison against the reference scaled by 1.03 must fail, or the sample counts are too low
+for the check to mean anything. Exit 0 when every scene matches, 1 when one does not, 77
+(skipped) when the Mitsuba venv of tools/mitsuba/install.sh is absent.
+"""
+import argparse
+import glob
+import hashlib
+import os
+import subprocess
+import sys
+import time
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+SKIPPED = 77
+# The relative error the check must be able to see at the sample counts it uses.
+DETECTABLE = 1.03
+
+
+def run(command, **kwargs):
+    return subprocess.run(command, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, **kwargs)
+
+
+def reference(python, scene, args, mitsuba_version):
+    """The cached Mitsuba render of `scene`, rendered first if no cache entry matches."""
+    key = hashlib.sha256()
+    for path in (scene, os.path.join(HERE, "ray_to_mitsuba.py"), os.path.join(HERE, "render_reference.py")):
+        with open(path, "rb") as f:
+            key.update(f.read())
+    key.update(f"{mitsuba_version} {args.reference_spp} {args.reference_seed}".encode())
+    name = os.path.splitext(os.path.basename(scene))[0]
+    out = os.path.join(args.cache, f"{name}-{key.hexdigest()[:16]}.exr")
+    if not os.path.exists(out):
+        partial = f"{out}.{os.getpid()}.exr"
+        done = run([python, os.path.join(HERE, "render_reference.py"), scene, partial,
+                    "--spp", str(args.reference_spp), "--seed", str(args.reference_seed)])
+        print(done.stdout, end="")
+        if done.returncode != 0:
+            raise RuntimeError(f"the Mitsuba reference of {scene} failed")
+        # Renamed into place whole, so a render cut short never poses as a reference; the
+        # scene's older references can never match again.
+        for old in glob.glob(os.path.join(args.cache, f"{glob.escape(name)}-*.exr")):
+            os.remove(old)
+        os.replace(partial, out)
+    return out
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("--clrt", required=True)
+    parser.add_argument("--venv", required=True)
+    parser.add_argument("--cache", required=True, help="folder of the Mitsuba references")
+    parser.add_argument("--work", required=True, help="folder for clrt's renders")
+    parser.add_argument("--spp", type=int, default=256, help="clrt's samples per pixel (default 256)")
+    parser.add_argument("--reference-spp", type=int, default=512, help="Mitsuba's (default 512)")
+    parser.add_argument("--reference-seed", type=int, default=7)
+    parser.add_argument("scenes", nargs="+")
+    args = parser.parse_args()
+
+    python = os.path.join(args.venv, "bin", "python")
+    version = run([python, "-c", "import mitsuba; print(mitsuba.__version__)"]) if os.path.exists(python) else None
+    if version is None or version.returncode != 0:
+        print(f"skipped: no Mitsuba 3 in {args.venv} (tools/mitsuba/install.sh BUILD_DIR installs it)")
+        return SKIPPED
+    os.makedirs(args.cache, exist_ok=True)
+    os.makedirs(args.work, exist_ok=True)
+
+    failed = []
+    for scene in args.scenes:
+        name = os.path.splitext(os.path.basename(scene))[0]
+        print(f"== {name}", flush=True)
+        try:
+            ref = reference(python, scene, args, version.stdout.strip())
+        except RuntimeError as e:
+            print(f"FAIL {e}")
+            failed.append(name)
+            continue
+        image = os.path.join(args.work, f"{name}.exr")
+        start = time.perf_counter()
+        done = run([args.clrt, "--mode", "path", "--spp", str(args.spp), "--seed", "1", "--exr-pixel", "float",
+                    "-o", image, scene])
+        if done.returncode != 0:
+            print(done.stdout, end="")
+            print(f"FAIL clrt --mode path exited with {done.returncode}")
+            failed.append(name)
+            continue
+        print(f"clrt --mode path, {args.spp} spp: {time.perf_counter() - start:.1f} s")
+        compare = [python, os.path.join(HERE, "compare.py"), image, ref]
+        same = run(compare)
+        print(same.stdout, end="")
+        wrong = run(compare + ["--scale", str(DETECTABLE)])
+        if wrong.returncode != 1:
+            print(f"FAIL the comparison passes against the reference times {DETECTABLE}: too few samples to tell")
+        else:
+            print(f"ok   against the reference times {DETECTABLE} the comparison fails, as it must")
+        if same.returncode != 0 or wrong.returncode != 1:
+            failed.append(name)
+    if failed:
+        print(f"{len(failed)} of {len(args.scenes)} scenes differ from Mitsuba: {' '.join(failed)}")
+        return 1
+    print(f"all {len(args.scenes)} scenes match Mitsuba")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
