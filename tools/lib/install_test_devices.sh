@@ -3,7 +3,9 @@
 #   - Oclgrind (Debian's oclgrind): an OpenCL interpreter that reports out-of-bounds accesses,
 #     data races and API misuse inside kernels;
 #   - Intel's CPU runtime (PyPI intel-opencl-rt, into BUILD_DIR/opencl/intel-venv): another
-#     compiler, which vectorises work-groups as GPU drivers do.
+#     compiler, which vectorises work-groups as GPU drivers do;
+#   - and Mitsuba 3 (PyPI mitsuba, into BUILD_DIR/mitsuba-venv), the independent renderer that
+#     path mode is checked against (tools/mitsuba/).
 # Each gets a folder BUILD_DIR/opencl/vendors/NAME holding its ICD file and PoCL's, which the
 # tests name in OCL_ICD_VENDORS (tests/support/on_implementation.sh). One that cannot be installed (no network
 # for PyPI, say) is left out with a warning, and its tests report themselves skipped.
