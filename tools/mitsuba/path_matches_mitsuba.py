@@ -36,7 +36,8 @@ def reference(python, scene, args, mitsuba_version):
     name = os.path.splitext(os.path.basename(scene))[0]
     out = os.path.join(args.cache, f"{name}-{key.hexdigest()[:16]}.exr")
     if not os.path.exists(out):
-        partial = f"{out}.{os.getpid()}.exr"
+        # A hidden name, so that the clean-up of older references below cannot match it.
+        partial = os.path.join(args.cache, f".{name}-{os.getpid()}.exr")
         done = run([python, os.path.join(HERE, "render_reference.py"), scene, partial,
                     "--spp", str(args.reference_spp), "--seed", str(args.reference_seed)])
         print(done.stdout, end="")
