@@ -30,6 +30,7 @@ struct Plan {
   int repeats = 3;
   std::string resolution;   // WxH, or empty for each scene's own
   std::string spp;          // or empty for each scene's own
+  std::string mode;         // clrt's --mode for every run, or empty for its default (trace)
   std::string format = "pfm";
   std::string clrt;         // the executable
   std::string out_dir;

@@ -130,6 +130,8 @@ int main(int argc, char** argv) {
   app.add_option("--resolution", plan.resolution, "WxH for every scene; `scene` keeps each scene's")
       ->capture_default_str();
   app.add_option("--spp", plan.spp, "samples per pixel for every scene (default: each scene's)");
+  app.add_option("--mode", plan.mode, "clrt's --mode for every run: trace (default), cast or path")
+      ->check(CLI::IsMember({"trace", "cast", "path"}));
   app.add_option("--format", plan.format, "image format clrt writes and the runner compares")
       ->check(CLI::IsMember({"pfm", "png", "exr", "ppm"}))
       ->capture_default_str();
@@ -162,6 +164,7 @@ int main(int argc, char** argv) {
     nlohmann::json results = {{"clrt", clrt_version_string()}, {"machine", machine()}};
     results["settings"] = {{"scenes", plan.scenes},   {"repeats", plan.repeats},
                            {"resolution", plan.resolution}, {"spp", plan.spp},
+                           {"mode", plan.mode.empty() ? "trace" : plan.mode},
                            {"format", plan.format},   {"clrt_executable", plan.clrt}};
     results["runs"] = runs;
     results["summary"] = summarize(runs);

@@ -21,6 +21,7 @@ std::vector<std::string> clrt_args(const Plan& plan, const RunKey& key, const st
                                    image};
   if (!plan.resolution.empty()) args.insert(args.end(), {"--resolution", plan.resolution});
   if (!plan.spp.empty()) args.insert(args.end(), {"--spp", plan.spp});
+  if (!plan.mode.empty()) args.insert(args.end(), {"--mode", plan.mode});
   const std::vector<std::string> variant = plan.variants[key.variant].clrt_args();
   args.insert(args.end(), variant.begin(), variant.end());
   return args;

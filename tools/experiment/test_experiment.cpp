@@ -3,6 +3,7 @@
 // a variant that changes the picture is flagged with its PSNR; a wavefront sweep draws its plot.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -113,6 +114,26 @@ TEST_CASE("a run whose picture differs is flagged with its PSNR and kept", "[exp
   CHECK(std::filesystem::exists(runs[1]["command"][7].get<std::string>()));
   CHECK(text_of(dir.file("report.md")).find("differs from the scene's first image: area.ray") !=
         std::string::npos);
+}
+
+TEST_CASE("--mode path renders every run by path tracing, both integrators to the same image",
+          "[experiment][path]") {
+  test::ScratchDir dir;
+  const ProcessResult r = run_experiment(
+      {source_file("tests/render/scenes/area.ray"), "--mode", "path", "--integrator",
+       "wavefront,megakernel", "--variant", "queue=", "--variant", "by-class=--shade-order class",
+       "--repeats", "1",
+       "--resolution", "16x12", "--spp", "2", "--out", dir.path().string(), "--no-plots"});
+  INFO(r.out << r.err);
+  CHECK(r.exit_code == 0);
+  const nlohmann::json results = results_in(dir);
+  CHECK(results["settings"]["mode"] == "path");
+  REQUIRE(results["runs"].size() == 4);
+  for (const nlohmann::json& run : results["runs"]) {
+    const std::vector<std::string> command = run["command"];
+    CHECK(std::find(command.begin(), command.end(), "path") != command.end());
+    CHECK(run["validation"]["flagged"] == false);
+  }
 }
 
 TEST_CASE("a wavefront sweep draws its plot", "[experiment]") {
