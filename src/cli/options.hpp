@@ -17,6 +17,7 @@ enum class StatsFormat { None, Text, Json };
 struct CliOptions {
   std::string scene;
   std::string outfile;  // empty: the scene's name with .png, in the current directory
+  bool no_write = false;  // --no-write or -o none: render and report, write nothing
   std::optional<ImageFormat> format;    // --format: the output's format, else its extension
   ExrPixel exr_pixel = ExrPixel::Half;  // --exr-pixel
   std::optional<int> width, height, samples, max_depth;

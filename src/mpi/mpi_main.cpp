@@ -39,6 +39,7 @@ mpi::Session::Outcome attempt(Step&& step) {
   } catch (const RenderLimitError& e) {
     return {e.exit_code(), std::string("clrt-mpi: error: ") + e.what()};
   } catch (const std::exception& e) {
+    end_by_pending_signal();
     return {1, std::string("clrt-mpi: error: ") + e.what()};
   }
   return {};
@@ -87,6 +88,7 @@ int run(const mpi::Session& session, const CliOptions& cli, const mpi::TileSize&
     if (!session.first()) scene = load_scene(cli.scene, MemoryFiles(files));
     files.clear();
     setup = checked_render_setup(cli, scene, mpi::rank_devices(cli.device, session.local_rank()));
+    if (session.first()) check_output_space(output, FramePlan{}, render_region(setup.options));
     renderer.emplace(scene, built_geometry(scene, progress), setup, &progress);
   });
   if (!all_went_well(session, mine, status, progress)) return status;
@@ -114,7 +116,7 @@ int run(const mpi::Session& session, const CliOptions& cli, const mpi::TileSize&
           if (region.pixel_count() != std::uint64_t(setup.options.width) * setup.options.height)
             pixels.placement = Placement{static_cast<int>(region.x), static_cast<int>(region.y),
                                          setup.options.width, setup.options.height};
-          write_image(output, pixels, {cli.exr_pixel});
+          if (!writes_nothing(output)) write_image(output, pixels, {cli.exr_pixel});
         },
         image);
   });
@@ -124,8 +126,10 @@ int run(const mpi::Session& session, const CliOptions& cli, const mpi::TileSize&
     return mine.status;
   }
   report.total_seconds = std::chrono::duration<double>(Clock::now() - start).count();
-  progress.finish("wrote " + (output.is_stdout() ? std::string("standard output") : output.path) +
-                  " from " + std::to_string(session.size()) + " ranks");
+  const std::string ranks = " from " + std::to_string(session.size()) + " ranks";
+  const std::string where = output.is_stdout() ? "standard output" : output.path;
+  progress.finish(writes_nothing(output) ? "rendered" + ranks + ", wrote nothing (--no-write)"
+                                         : "wrote " + where + ranks);
   std::ostream& out = output.is_stdout() ? std::cerr : std::cout;
   if (cli.stats == StatsFormat::Json) out << report.to_json(rank_stats).dump(2) << "\n";
   if (cli.stats == StatsFormat::Text) out << report.to_text(rank_stats);
@@ -135,8 +139,8 @@ int run(const mpi::Session& session, const CliOptions& cli, const mpi::TileSize&
 }  // namespace
 
 int main(int argc, char** argv) {
-  clrt::return_large_blocks_when_freed();
   clrt::remove_temporaries_on_signal();
+  clrt::return_large_blocks_when_freed();
   clrt::mpi::Session session(argc, argv);
   std::vector<std::string> args(argv + 1, argv + argc);
   clrt::mpi::TileSize tile;

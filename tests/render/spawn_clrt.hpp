@@ -12,8 +12,8 @@ namespace clrt::test {
 class ClrtProcess {
  public:
   // Starts clrt with `arguments` in `working_dir`, its environment being the test's plus
-  // `extra_environment` ("NAME=value" each); SIGINT and SIGTERM start with their default action
-  // even if the test inherited them ignored. Output goes to `output_file`.
+  // `extra_environment` ("NAME=value" each); the signals that end clrt start with their default
+  // action even if the test inherited them ignored. Output goes to `output_file`.
   ClrtProcess(const std::vector<std::string>& arguments, const std::string& working_dir,
               const std::vector<std::string>& extra_environment, const std::string& output_file);
   ~ClrtProcess();  // kills the child if it is still running
