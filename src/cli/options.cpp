@@ -123,16 +123,18 @@ ParseResult parse_command_line(int argc, char** argv) {
 }
 
 ParseResult parse_arguments(std::vector<std::string> args, bool print,
-                            const std::string& program) {
+                            const ProgramOptions& program) {
   ParseResult result;
   CliOptions& o = result.options;
-  CLI::App app{program + ": a wavefront OpenCL ray tracer for .ray and .nff scenes", program};
+  CLI::App app{program.name + ": a wavefront OpenCL ray tracer for .ray and .nff scenes",
+               program.name};
   identify_tool(app);
   app.add_option("scene", o.scene, "the .ray or .nff scene to render");
   add_image_options(app, o);
   add_shading_options(app, o);
-  add_animation_options(app, o);
+  if (program.animation) add_animation_options(app, o);
   add_device_options(app, o);
+  if (program.add_own_options) program.add_own_options(app);
   bool stats = false;
   std::string stats_format = "text";
   app.add_flag("--stats", stats,

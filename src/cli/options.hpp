@@ -1,6 +1,7 @@
 // The clrt command line.
 #pragma once
 
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -9,6 +10,10 @@
 #include "cli/region_options.hpp"
 #include "image/image.hpp"
 #include "render/render_options.hpp"
+
+namespace CLI {
+class App;
+}
 
 namespace clrt {
 
@@ -43,11 +48,19 @@ struct ParseResult {
   std::optional<int> exit_code;
 };
 
+// A program that takes clrt's options, and what it changes of them, so that its --help lists
+// exactly what it accepts.
+struct ProgramOptions {
+  std::string name = "clrt";
+  bool animation = true;  // --frames, --orbit, --frame-range
+  std::function<void(CLI::App&)> add_own_options;  // e.g. clrt-mpi's --tile
+};
+
 ParseResult parse_command_line(int argc, char** argv);
-// The words after the program's name, for `program` (clrt, or clrt-mpi which takes the same
-// options); `print` false: no message (the MPI ranks but the first, which prints it).
+// The words after the program's name; `print` false: no message (the MPI ranks but the first,
+// which prints it).
 ParseResult parse_arguments(std::vector<std::string> args, bool print,
-                            const std::string& program = "clrt");
+                            const ProgramOptions& program = {});
 
 // The scene's settings overridden by whatever the command line gave. Throws UsageError for a
 // region that does not fit the image.

@@ -69,8 +69,6 @@ int run(const mpi::Session& session, const CliOptions& cli, const mpi::TileSize&
     if (!session.first()) return;
     if (cli.list_devices) throw UsageError("--list-devices: run clrt --list-devices on a node");
     const FramePlan frames = resolve_frames(cli.animation);
-    if (frames.animated)
-      throw UsageError("clrt-mpi renders one image; farm an animation's frames with --frame-range");
     output = resolve_image_output(cli, frames);
     progress.phase("loading " + cli.scene);
     RecordingFiles recording;
@@ -142,15 +140,9 @@ int main(int argc, char** argv) {
   clrt::remove_temporaries_on_signal();
   clrt::return_large_blocks_when_freed();
   clrt::mpi::Session session(argc, argv);
-  std::vector<std::string> args(argv + 1, argv + argc);
   clrt::mpi::TileSize tile;
-  try {
-    tile = clrt::mpi::take_tile_option(args);
-  } catch (const clrt::UsageError& e) {
-    if (session.first()) std::cerr << "clrt-mpi: error: " << e.what() << "\n";
-    return 2;
-  }
-  const clrt::ParseResult parsed = clrt::parse_arguments(args, session.first(), "clrt-mpi");
+  const clrt::ParseResult parsed = clrt::parse_arguments(
+      {argv + 1, argv + argc}, session.first(), clrt::mpi::mpi_program_options(tile));
   if (parsed.exit_code) return *parsed.exit_code;
   return run(session, parsed.options, tile);
 }
