@@ -13,22 +13,23 @@
 namespace clrt::image_detail {
 namespace {
 
-// The folder part of `path`, with its slash ("" for the current folder).
-std::string folder_of(const std::string& path) {
-  const std::size_t slash = path.rfind('/');
-  return slash == std::string::npos ? std::string() : path.substr(0, slash + 1);
-}
-
 // A name no other writer uses, short enough for any folder's limit on names (the output's own
 // name may already be at that limit): the process id keeps processes apart, the counter threads
 // and successive writes; O_EXCL catches whatever is left (e.g. a stale temporary from a crash).
 std::string next_temp_candidate(const std::string& path) {
   static std::atomic<unsigned> counter{0};
-  return folder_of(path) + ".clrt-" + std::to_string(::getpid()) + "-" +
+  const std::string folder = folder_of(path);
+  return folder + (folder == "/" ? "" : "/") + ".clrt-" + std::to_string(::getpid()) + "-" +
          std::to_string(counter++) + ".tmp";
 }
 
 }  // namespace
+
+std::string folder_of(const std::string& path) {
+  const std::size_t slash = path.rfind('/');
+  if (slash == std::string::npos) return ".";
+  return slash == 0 ? "/" : path.substr(0, slash);
+}
 
 AtomicFile::AtomicFile(std::string path, std::string name)
     : path_(std::move(path)), name_(std::move(name)) {
@@ -49,9 +50,7 @@ AtomicFile::AtomicFile(std::string path, std::string name)
     errno = error;
     if (errno != EEXIST) break;
   }
-  std::string folder = folder_of(path_);
-  if (folder.size() > 1) folder.pop_back();
-  fail("cannot create a file in " + (folder.empty() ? std::string(".") : folder));
+  fail("cannot create a file in " + folder_of(path_));
 }
 
 AtomicFile::~AtomicFile() { discard(); }

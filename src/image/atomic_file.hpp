@@ -34,4 +34,7 @@ class AtomicFile final : public ByteSink {
   bool temp_exists_ = false;
 };
 
+// The folder `path` is in: "." for a bare name, "/" for one at the root.
+std::string folder_of(const std::string& path);
+
 }  // namespace clrt::image_detail

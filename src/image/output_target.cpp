@@ -16,12 +16,6 @@ namespace {
 
 constexpr int kMaxLinks = 40;  // as the kernel's own limit when it follows links
 
-std::string folder_or_dot(const std::string& path) {
-  const std::size_t slash = path.rfind('/');
-  if (slash == std::string::npos) return ".";
-  return slash == 0 ? "/" : path.substr(0, slash);
-}
-
 [[noreturn]] void refuse(const std::string& path, const std::string& why) {
   throw ImageError("cannot write " + path + ": " + why);
 }
@@ -37,7 +31,8 @@ OutputTarget find_output_target(const std::string& path) {
       return {at, !S_ISREG(info.st_mode) && !S_ISDIR(info.st_mode)};
     char target[PATH_MAX];
     const ssize_t size = ::readlink(at.c_str(), target, sizeof target - 1);
-    if (size < 0) refuse(path, std::string("cannot read the link ") + at + ": " + std::strerror(errno));
+    if (size < 0)
+      refuse(path, std::string("cannot read the link ") + at + ": " + std::strerror(errno));
     const std::string next(target, static_cast<std::size_t>(size));
     at = next.front() == '/' || at.find('/') == std::string::npos
              ? next
@@ -60,7 +55,7 @@ void check_output_writable(const std::string& path) {
   }
   refuse_folder(path);
   struct stat info {};
-  const std::string folder = folder_or_dot(target.path);
+  const std::string folder = image_detail::folder_of(target.path);
   if (::stat(folder.c_str(), &info) != 0 || !S_ISDIR(info.st_mode))
     refuse(path, folder + " is not a folder");
   // The temporary's short name would pass where the final rename fails.
@@ -74,7 +69,7 @@ void check_output_writable(const std::string& path) {
 
 std::uint64_t free_bytes_for(const std::string& path) {
   struct statvfs info {};
-  if (::statvfs(folder_or_dot(find_output_target(path).path).c_str(), &info) != 0)
+  if (::statvfs(image_detail::folder_of(find_output_target(path).path).c_str(), &info) != 0)
     return UINT64_MAX;  // unknown: the write itself will tell
   const std::uint64_t blocks = ::geteuid() == 0 ? info.f_bfree : info.f_bavail;
   return blocks * info.f_frsize;

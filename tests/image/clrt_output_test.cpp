@@ -99,8 +99,9 @@ struct stat stat_of(const std::string& path) {
 
 // clrt run with `args` in `dir` as its working directory.
 ToolResult run_clrt_in(const ScratchDir& dir, const std::string& args) {
-  return run_tool(dir, "sh",
-                  "-c " + quoted("cd " + dir.path().string() + " && '" CLRT_EXE "' " + kScene + " " + args));
+  const std::string command =
+      "cd " + dir.path().string() + " && '" CLRT_EXE "' " + kScene + " " + args;
+  return run_tool(dir, "sh", "-c " + quoted(command));
 }
 
 }  // namespace

@@ -100,12 +100,13 @@ TEST_CASE("every name the folder allows can be written, a longer one is refused 
   ScratchDir dir;
   const long name_max = ::pathconf(dir.path().c_str(), _PC_NAME_MAX);
   REQUIRE(name_max > 4);
-  const std::string longest = dir.file(std::string(static_cast<std::size_t>(name_max) - 4, 'n') + ".ppm");
+  const auto name_of = [](long bytes) { return std::string(static_cast<std::size_t>(bytes), 'n'); };
+  const std::string longest = dir.file(name_of(name_max - 4) + ".ppm");
   clrt::check_output_writable(longest);
   clrt::write_image(longest, kImage);
   CHECK(clrt::read_ppm(longest).frames == kImage.frames);
   CHECK(dir.entries().size() == 1);
-  const std::string too_long = dir.file(std::string(static_cast<std::size_t>(name_max) - 3, 'n') + ".ppm");
+  const std::string too_long = dir.file(name_of(name_max - 3) + ".ppm");
   CHECK_THAT(refusal(too_long), Contains(too_long) && Contains("bytes"));
   CHECK(dir.entries().size() == 1);
 }

@@ -85,7 +85,8 @@ TEST_CASE("a failed write leaves the previous file intact and no temporary", "[i
     const std::string message =
         error_under_limit(RLIMIT_NOFILE, 0, [&] { clrt::write_image(path, second); });
     CHECK_THAT(message,
-               Contains(path) && Contains("cannot create a file in") && Contains("Too many open files"));
+               Contains(path) && Contains("cannot create a file in") &&
+                   Contains("Too many open files"));
   }
   CHECK(read_bytes(path) == first);
   CHECK(dir.entries() == Entries{"out.fsf"});

@@ -67,7 +67,8 @@ void wait_for_output(const std::string& log, const std::string& text, ClrtProces
     content << in.rdbuf();
     if (content.str().find(text) != std::string::npos) return;
     int status = 0;
-    if (clrt.ended(status)) FAIL("clrt ended before it printed '" << text << "', status " << status);
+    if (clrt.ended(status))
+      FAIL("clrt ended before it printed '" << text << "', status " << status);
     std::this_thread::sleep_for(std::chrono::milliseconds(20));
   }
 }
