@@ -34,6 +34,21 @@ sigset_t ending_signals() {
   return set;
 }
 
+// Those ignored from the start (nohup ignores SIGHUP) stay ignored. They are blocked all the
+// same and dropped when taken: left unblocked, a handler LLVM installs over SIG_IGN would run,
+// and LLVM's handler unblocks every signal in its thread, which would then die by the next one
+// without removing the temporaries.
+sigset_t ignored_from_start() {
+  sigset_t set;
+  sigemptyset(&set);
+  for (int signal_number : kEndingSignals) {
+    struct sigaction current {};
+    if (::sigaction(signal_number, nullptr, &current) == 0 && current.sa_handler == SIG_IGN)
+      sigaddset(&set, signal_number);
+  }
+  return set;
+}
+
 [[noreturn]] void end_by(int signal_number) {
   Temporaries& all = temporaries();
   // Never unlocked: no temporary is created or put in place from here on.
@@ -52,11 +67,11 @@ sigset_t ending_signals() {
 
 void remove_temporaries_on_signal() {
   static const bool started = [] {
-    const sigset_t set = ending_signals();
+    const sigset_t set = ending_signals(), ignored = ignored_from_start();
     ::pthread_sigmask(SIG_BLOCK, &set, nullptr);
-    std::thread([set] {
+    std::thread([set, ignored] {
       int signal_number = 0;
-      while (::sigwait(&set, &signal_number) != 0) {
+      while (::sigwait(&set, &signal_number) != 0 || sigismember(&ignored, signal_number) == 1) {
       }
       end_by(signal_number);
     }).detach();

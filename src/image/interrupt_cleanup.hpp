@@ -2,7 +2,8 @@
 // SIGQUIT, SIGALRM, SIGPIPE, SIGUSR1, SIGUSR2 and SIGXFSZ are blocked in every thread and taken
 // by one thread of ours with sigwait(), which removes every temporary that exists at that
 // moment, then ends the process by the same signal with its default action, so a shell sees the
-// conventional status (128 + the signal's number) and stops a loop running it.
+// conventional status (128 + the signal's number) and stops a loop running it. One ignored when
+// the process starts (nohup ignores SIGHUP) stays ignored.
 //
 // Why a thread rather than handlers: LLVM, inside PoCL, installs handlers of its own for most of
 // these signals whenever it compiles (which PoCL also does in the middle of a render) and then

@@ -10,12 +10,12 @@
 #include <fcntl.h>
 #include <poll.h>
 #include <signal.h>
+#include <sys/resource.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
-#include <sys/resource.h>
-
+#include <csignal>
 #include <filesystem>
 #include <fstream>
 #include <regex>
@@ -137,6 +137,28 @@ TEST_CASE("a signal during the render ends clrt by that signal, leaving nothing"
   REQUIRE(WIFSIGNALED(status));
   CHECK(WTERMSIG(status) == signal_number);
   CHECK(dir.entries().empty());
+}
+
+TEST_CASE("a signal ignored from the start, as nohup ignores SIGHUP, stays ignored",
+          "[cli][signals]") {
+  no_core_dumps();
+  ScratchDir dir;
+  const std::string fifo = dir.file("hold");
+  REQUIRE(::mkfifo(fifo.c_str(), 0600) == 0);
+  ScratchDir logs;
+  const auto saved = std::signal(SIGHUP, SIG_IGN);  // for the child to inherit
+  ClrtProcess clrt({test_scene("test2.ray"), "-q", "--resolution", "40x24", "-o", dir.file("out.png")},
+                   dir.path().string(), {"CLRT_TEST_HOLD_BEFORE_COMMIT=" + fifo}, logs.file("log"),
+                   {SIGHUP});
+  std::signal(SIGHUP, saved);
+  read_held_temporary(fifo, clrt);
+  // Had SIGHUP been taken, it would end clrt, whichever of the two clrt saw first.
+  REQUIRE(::kill(clrt.pid(), SIGHUP) == 0);
+  REQUIRE(::kill(clrt.pid(), SIGTERM) == 0);
+  const int status = clrt.wait();
+  REQUIRE(WIFSIGNALED(status));
+  CHECK(WTERMSIG(status) == SIGTERM);
+  CHECK(dir.entries() == std::set<std::string>{"hold"});
 }
 
 TEST_CASE("a reader that goes away ends clrt by SIGPIPE, as any program in a pipeline",
