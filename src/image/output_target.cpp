@@ -23,12 +23,17 @@ constexpr int kMaxLinks = 40;  // as the kernel's own limit when it follows link
 }  // namespace
 
 OutputTarget find_output_target(const std::string& path) {
+  // Where the links end in a device or FIFO, the path itself is opened: the kernel follows
+  // links that readlink() cannot spell, such as /dev/stdout's to a pipe.
+  struct stat final_file {};
+  if (::stat(path.c_str(), &final_file) == 0 && !S_ISREG(final_file.st_mode) &&
+      !S_ISDIR(final_file.st_mode))
+    return {path, true};
   std::string at = path;
   for (int links = 0; links <= kMaxLinks; ++links) {
     struct stat info {};
     if (::lstat(at.c_str(), &info) != 0) return {at, false};  // a new file, or refused later
-    if (!S_ISLNK(info.st_mode))
-      return {at, !S_ISREG(info.st_mode) && !S_ISDIR(info.st_mode)};
+    if (!S_ISLNK(info.st_mode)) return {at, false};
     char target[PATH_MAX];
     const ssize_t size = ::readlink(at.c_str(), target, sizeof target - 1);
     if (size < 0)

@@ -12,7 +12,8 @@ namespace clrt {
 
 struct OutputTarget {
   // The output itself or, through links, the file the last one points to (which may not exist
-  // yet): what a finished image replaces, so that the link stays a link.
+  // yet): what a finished image replaces, so that the link stays a link. A stream's path is the
+  // output as given.
   std::string path;
   // Neither a regular file nor a folder, e.g. a device (/dev/null) or a FIFO: written straight
   // through, since replacing it by a regular file would destroy it.

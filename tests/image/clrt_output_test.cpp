@@ -145,6 +145,23 @@ TEST_CASE("clrt writes straight through a FIFO to its reader", "[cli][output]") 
   CHECK(S_ISFIFO(stat_of(fifo).st_mode));
 }
 
+TEST_CASE("clrt -o /proc/self/fd/1 writes to whatever standard output is, a pipe or a file",
+          "[cli][output]") {
+  ScratchDir dir;
+  REQUIRE(run_clrt(dir, "-o " + quoted(dir.file("file.ppm"))).status == 0);
+  const Bytes expected = read_bytes(dir.file("file.ppm"));
+  // A link the kernel follows to a pipe that has no name: written straight through.
+  const ToolResult piped =
+      run_tool(dir, "sh", "-c " + quoted("'" CLRT_EXE "' " + kScene +
+                                         " --format ppm -o /proc/self/fd/1 | cat"));
+  CHECK(piped.status == 0);
+  CHECK(piped.out == expected);
+  // A link to a file (run_tool's stdout.bin), replaced whole as any file.
+  const ToolResult file = run_clrt(dir, "--format ppm -o /proc/self/fd/1");
+  CHECK(file.status == 0);
+  CHECK(file.out == expected);
+}
+
 TEST_CASE("clrt -o LINK replaces the link's target and leaves the link", "[cli][output]") {
   ScratchDir dir;
   std::filesystem::create_directory(dir.file("renders"));
