@@ -12,8 +12,8 @@
 #include "render/usage_error.hpp"
 
 int main(int argc, char** argv) {
-  clrt::return_large_blocks_when_freed();
   clrt::remove_temporaries_on_signal();
+  clrt::return_large_blocks_when_freed();
   const clrt::ParseResult parsed = clrt::parse_command_line(argc, argv);
   if (parsed.exit_code) return *parsed.exit_code;
   try {
@@ -28,6 +28,7 @@ int main(int argc, char** argv) {
     std::cerr << "clrt: error: out of memory\n";
     return 1;
   } catch (const std::exception& e) {
+    clrt::end_by_pending_signal();
     std::cerr << "clrt: error: " << e.what() << "\n";
     return 1;
   }

@@ -15,6 +15,8 @@
 namespace clrt {
 namespace {
 
+constexpr const char* kNoOutputPath = "none";
+
 // "640x480" -> width, height; CLI11 reports the returned message as a usage error.
 std::string parse_resolution(const std::string& text, CliOptions& o) {
   static const std::regex form("([0-9]{1,6})[xX]([0-9]{1,6})");
@@ -29,7 +31,9 @@ std::string parse_resolution(const std::string& text, CliOptions& o) {
 void add_image_options(CLI::App& app, CliOptions& o) {
   app.add_option("-o,--outfile", o.outfile,
                  "output image; the extension picks the format: .png .ppm .fsf .pfm .exr; "
-                 "- writes to standard output (needs --format) (default: SCENE's name with .png)");
+                 "- writes to standard output (needs --format), none writes nothing "
+                 "(default: SCENE's name with .png)");
+  app.add_flag("--no-write", o.no_write, "render and report, but write no image (as -o none)");
   app.add_option_function<std::string>(
          "--format", [&](const std::string& name) { o.format = format_from_name(name); },
          "the output's format, whatever its extension: png ppm fsf pfm exr")
@@ -128,16 +132,18 @@ ParseResult parse_command_line(int argc, char** argv) {
 }
 
 ParseResult parse_arguments(std::vector<std::string> args, bool print,
-                            const std::string& program) {
+                            const ProgramOptions& program) {
   ParseResult result;
   CliOptions& o = result.options;
-  CLI::App app{program + ": a wavefront OpenCL ray tracer for .ray and .nff scenes", program};
+  CLI::App app{program.name + ": a wavefront OpenCL ray tracer for .ray and .nff scenes",
+               program.name};
   identify_tool(app);
   app.add_option("scene", o.scene, "the .ray or .nff scene to render");
   add_image_options(app, o);
   add_shading_options(app, o);
-  add_animation_options(app, o);
+  if (program.animation) add_animation_options(app, o);
   add_device_options(app, o);
+  if (program.add_own_options) program.add_own_options(app);
   bool stats = false;
   std::string stats_format = "text";
   app.add_flag("--stats", stats,
@@ -153,6 +159,9 @@ ParseResult parse_arguments(std::vector<std::string> args, bool print,
     if (stats || app.count("--stats-format"))
       o.stats = stats_format == "json" ? StatsFormat::Json : StatsFormat::Text;
     if (o.scene.empty() && !o.list_devices) throw CLI::RequiredError("scene");
+    if (app.count("--outfile") && o.outfile.empty())
+      throw CLI::ValidationError("-o", "the output's name is empty; -o none writes nothing");
+    if (o.outfile == kNoOutputPath) o.no_write = true;
     if (o.outfile == kStdoutPath && !o.format)
       throw CLI::ValidationError("-o -", "standard output needs --format png|ppm|pfm|fsf|exr");
   } catch (const CLI::ParseError& e) {

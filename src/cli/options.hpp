@@ -1,6 +1,7 @@
 // The clrt command line.
 #pragma once
 
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -10,6 +11,10 @@
 #include "image/image.hpp"
 #include "render/render_options.hpp"
 
+namespace CLI {
+class App;
+}
+
 namespace clrt {
 
 enum class StatsFormat { None, Text, Json };
@@ -17,6 +22,7 @@ enum class StatsFormat { None, Text, Json };
 struct CliOptions {
   std::string scene;
   std::string outfile;  // empty: the scene's name with .png, in the current directory
+  bool no_write = false;  // --no-write or -o none: render and report, write nothing
   std::optional<ImageFormat> format;    // --format: the output's format, else its extension
   ExrPixel exr_pixel = ExrPixel::Half;  // --exr-pixel
   std::optional<int> width, height, samples, max_depth;
@@ -43,11 +49,19 @@ struct ParseResult {
   std::optional<int> exit_code;
 };
 
+// A program that takes clrt's options, and what it changes of them, so that its --help lists
+// exactly what it accepts.
+struct ProgramOptions {
+  std::string name = "clrt";
+  bool animation = true;  // --frames, --orbit, --frame-range
+  std::function<void(CLI::App&)> add_own_options;  // e.g. clrt-mpi's --tile
+};
+
 ParseResult parse_command_line(int argc, char** argv);
-// The words after the program's name, for `program` (clrt, or clrt-mpi which takes the same
-// options); `print` false: no message (the MPI ranks but the first, which prints it).
+// The words after the program's name; `print` false: no message (the MPI ranks but the first,
+// which prints it).
 ParseResult parse_arguments(std::vector<std::string> args, bool print,
-                            const std::string& program = "clrt");
+                            const ProgramOptions& program = {});
 
 // The scene's settings overridden by whatever the command line gave. Throws UsageError for a
 // region that does not fit the image.

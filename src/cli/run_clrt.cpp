@@ -2,8 +2,8 @@
 
 #include <malloc.h>
 #include <sys/resource.h>
-#include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdlib>
 #include <filesystem>
@@ -17,6 +17,7 @@
 #include "geometry/geometry_data.hpp"
 #include "image/fsf_animation.hpp"
 #include "cli/out_of_memory.hpp"
+#include "image/output_target.hpp"
 #include "render/frame_setup.hpp"
 #include "render/orbit.hpp"
 #include "render/output_guard.hpp"
@@ -36,44 +37,6 @@ double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-// Fails before any work when the image could not be written anyway: a folder that does not
-// exist or cannot be written to, or a folder given as the output.
-void check_writable(const std::string& path) {
-  namespace fs = std::filesystem;
-  std::error_code error;
-  if (fs::is_directory(path, error))
-    throw UsageError("cannot write " + path + ": it is a folder; name the image file");
-  const fs::path dir = fs::path(path).parent_path();
-  const std::string folder = dir.empty() ? "." : dir.string();
-  if (!fs::is_directory(folder, error))
-    throw UsageError("cannot write " + path + ": " + folder + " is not a folder");
-  if (access(folder.c_str(), W_OK) != 0)
-    throw UsageError("cannot write " + path + ": the folder " + folder + " is not writable");
-}
-
-}  // namespace
-
-ImageOutput resolve_image_output(const CliOptions& cli, const FramePlan& frames) {
-  std::error_code error;
-  if (std::filesystem::is_directory(output_path(cli), error))
-    throw UsageError("cannot write " + output_path(cli) + ": it is a folder; name the image file");
-  ImageOutput output;
-  try {
-    output = resolve_output(output_path(cli), cli.format);
-  } catch (const ImageError& e) {
-    throw UsageError(e.what());
-  }
-  if (output.is_stdout()) {
-    if (frames.count() > 1 && output.format != ImageFormat::Fsf)
-      throw UsageError("several frames go to standard output only as FSF (--format fsf)");
-    return output;
-  }
-  check_writable(output.path);
-  return output;
-}
-
-namespace {
-
 // Where frame `frame` goes: the output itself for a still or an FSF animation, else a numbered
 // file beside it.
 ImageOutput frame_output(const ImageOutput& output, const FramePlan& frames, std::uint32_t frame) {
@@ -81,7 +44,61 @@ ImageOutput frame_output(const ImageOutput& output, const FramePlan& frames, std
   return {numbered_frame_path(output.path, frame, frames.frames), output.format};
 }
 
+}  // namespace
+
+ImageOutput resolve_image_output(const CliOptions& cli, const FramePlan& frames) {
+  ImageOutput output;
+  try {
+    if (cli.no_write) return {"", cli.format.value_or(ImageFormat::Png)};
+    output = resolve_output(output_path(cli), cli.format);
+    if (output.is_stdout()) {
+      if (frames.count() > 1 && output.format != ImageFormat::Fsf)
+        throw UsageError("several frames go to standard output only as FSF (--format fsf)");
+      return output;
+    }
+    check_output_writable(frame_output(output, frames, frames.first).path);
+  } catch (const ImageError& e) {
+    throw UsageError(e.what());
+  }
+  return output;
+}
+
+void check_output_space(const ImageOutput& output, const FramePlan& frames,
+                        const PixelRect& region) {
+  if (writes_nothing(output) || output.is_stdout() || find_output_target(output.path).stream)
+    return;
+  const bool one_file = !frames.animated || output.format == ImageFormat::Fsf;
+  const std::uint64_t file_bytes =
+      (one_file ? frames.count() : 1) * minimum_file_bytes(output.format, region.pixel_count());
+  if (file_bytes == 0) return;
+  // The first file is written beside the one it replaces; numbered frames that replace an
+  // earlier animation's free their space as they go.
+  std::uint64_t needed = file_bytes;
+  if (!one_file) {
+    std::uint64_t replaced = 0;
+    for (std::uint32_t frame = frames.first; frame <= frames.last; ++frame) {
+      std::error_code absent;
+      const std::uintmax_t size =
+          std::filesystem::file_size(frame_output(output, frames, frame).path, absent);
+      if (!absent) replaced += size;
+    }
+    const std::uint64_t all = frames.count() * file_bytes;
+    needed = std::max(file_bytes, all > replaced ? all - replaced : 0);
+  }
+  const std::uint64_t free = free_bytes_for(output.path);
+  if (needed > free)
+    throw RenderLimitError(1, "cannot write " + output.path + ": it needs at least " +
+                                  std::to_string(needed) + " bytes and its file system has " +
+                                  std::to_string(free) + " free");
+}
+
+namespace {
+
 std::string describe_written(const ImageOutput& output, const FramePlan& frames) {
+  if (writes_nothing(output))
+    return "rendered " +
+           (frames.animated ? std::to_string(frames.count()) + " frames" : "the image") +
+           ", wrote nothing (--no-write)";
   const std::string where = output.is_stdout() ? "standard output" : output.path;
   if (!frames.animated) return "wrote " + where;
   const std::string count = std::to_string(frames.count()) + " frames";
@@ -109,12 +126,13 @@ int render_frames(const CliOptions& cli, Scene& scene, const FramePlan& frames,
   const RenderSetup setup = checked_render_setup(cli, scene, devices.entries);
   if (!cli.quiet)
     for (const DeviceEntry& d : setup.devices) progress.message("device " + describe_device(d));
+  const PixelRect region = render_region(setup.options);
+  check_output_space(output, frames, region);
   Renderer renderer(scene, built_geometry(scene, progress), setup, std::move(devices.prepared),
                     &progress);
-  const PixelRect region = render_region(setup.options);
   const bool eight_bit = !holds_floats(output.format);
   std::unique_ptr<FsfAnimationWriter> animation;
-  if (frames.animated && output.format == ImageFormat::Fsf)
+  if (frames.animated && output.format == ImageFormat::Fsf && !writes_nothing(output))
     animation = std::make_unique<FsfAnimationWriter>(output, static_cast<int>(region.width),
                                                      static_cast<int>(region.height),
                                                      frames.count());
@@ -133,7 +151,7 @@ int render_frames(const CliOptions& cli, Scene& scene, const FramePlan& frames,
         [&](const auto& pixels) {
           if (animation)
             animation->add_frame(pixels);
-          else
+          else if (!writes_nothing(output))
             write_image(frame_output(output, frames, frame), pixels, {cli.exr_pixel});
         },
         image);
@@ -183,7 +201,7 @@ GeometryData built_geometry(Scene& scene, Progress& progress) {
 void check_outputs_are_not_inputs(const ImageOutput& output, const FramePlan& frames,
                                   const Scene& scene) {
   try {
-    if (!output.is_stdout())
+    if (!output.is_stdout() && !writes_nothing(output))
       for (std::uint32_t frame = frames.first; frame <= frames.last; ++frame)
         check_output_is_not_input(frame_output(output, frames, frame).path, scene);
   } catch (const ImageError& e) {

@@ -16,8 +16,13 @@ namespace clrt {
 int run_clrt(const CliOptions& cli);
 
 // The steps clrt-mpi shares with clrt:
-// the output, checked before any work (UsageError);
+// the output, checked before any work (UsageError); with --no-write, one without a path;
 ImageOutput resolve_image_output(const CliOptions& cli, const FramePlan& frames);
+inline bool writes_nothing(const ImageOutput& output) { return output.path.empty(); }
+// that the output's file system has room for the image, where its size is known in advance
+// (RenderLimitError, exit 1);
+void check_output_space(const ImageOutput& output, const FramePlan& frames,
+                        const PixelRect& region);
 // that no output overwrites the scene or a mesh it read (UsageError);
 void check_outputs_are_not_inputs(const ImageOutput& output, const FramePlan& frames,
                                   const Scene& scene);

@@ -7,37 +7,50 @@
 #include <cerrno>
 #include <cstring>
 
+#include "image/interrupt_cleanup.hpp"
 #include "image/sink_error.hpp"
 
 namespace clrt::image_detail {
 namespace {
 
-// A name no other writer uses: the process id keeps processes apart, the counter threads and
-// successive writes; O_EXCL catches whatever is left (e.g. a stale temporary from a crash).
+// A name no other writer uses, short enough for any folder's limit on names (the output's own
+// name may already be at that limit): the process id keeps processes apart, the counter threads
+// and successive writes; O_EXCL catches whatever is left (e.g. a stale temporary from a crash).
 std::string next_temp_candidate(const std::string& path) {
   static std::atomic<unsigned> counter{0};
-  return path + "." + std::to_string(::getpid()) + "-" + std::to_string(counter++) + ".tmp";
+  const std::string folder = folder_of(path);
+  return folder + (folder == "/" ? "" : "/") + ".clrt-" + std::to_string(::getpid()) + "-" +
+         std::to_string(counter++) + ".tmp";
 }
 
 }  // namespace
 
-AtomicFile::AtomicFile(std::string path) : path_(std::move(path)) {
+std::string folder_of(const std::string& path) {
+  const std::size_t slash = path.rfind('/');
+  if (slash == std::string::npos) return ".";
+  return slash == 0 ? "/" : path.substr(0, slash);
+}
+
+AtomicFile::AtomicFile(std::string path, std::string name)
+    : path_(std::move(path)), name_(std::move(name)) {
   constexpr int kAttempts = 100;
   for (int attempt = 0; attempt < kAttempts; ++attempt) {
     temp_path_ = next_temp_candidate(path_);
-    registration_.emplace(temp_path_);
-    // Mode 0666 lets the umask decide, as for any newly created file (mkstemp would force 0600).
-    fd_ = ::open(temp_path_.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+    int error = 0;
+    change_temporary(temp_path_, [&] {
+      // Mode 0666 lets the umask decide, as for any new file (mkstemp would force 0600).
+      fd_ = ::open(temp_path_.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+      error = errno;
+      return fd_ >= 0;
+    });
     if (fd_ >= 0) {
       temp_exists_ = true;
       return;
     }
-    const int error = errno;
-    registration_.reset();  // an existing file (a leftover of another process) is not ours
     errno = error;
     if (errno != EEXIST) break;
   }
-  fail("cannot create temporary");
+  fail("cannot create a file in " + folder_of(path_));
 }
 
 AtomicFile::~AtomicFile() { discard(); }
@@ -45,36 +58,44 @@ AtomicFile::~AtomicFile() { discard(); }
 void AtomicFile::write_through(const void* data, std::size_t size) {
   if (const int error = write_all(fd_, data, size)) {
     errno = error;
-    fail("cannot write temporary");
+    fail("");
   }
 }
 
 void AtomicFile::finish() {
   flush();
   hold_before_commit_for_tests(temp_path_);
-  if (::fsync(fd_) != 0) fail("cannot flush temporary");
+  if (::fsync(fd_) != 0) fail("cannot flush it to disk");
   const int fd = fd_;
   fd_ = -1;
   // A failed close can mean lost data (e.g. on NFS), so it fails the write.
-  if (::close(fd) != 0) fail("cannot close temporary");
-  if (::rename(temp_path_.c_str(), path_.c_str()) != 0) fail("cannot rename temporary");
-  temp_exists_ = false;
-  registration_.reset();
+  if (::close(fd) != 0) fail("");
+  int error = 0;
+  change_temporary(temp_path_, [&] {
+    temp_exists_ = ::rename(temp_path_.c_str(), path_.c_str()) != 0;
+    error = errno;
+    return temp_exists_;
+  });
+  errno = error;
+  if (temp_exists_) fail("cannot rename the finished image onto it");
 }
 
-void AtomicFile::fail(const char* step) {
+void AtomicFile::fail(const std::string& step) {
   const int error = errno;  // before discard() or any allocation can change it
   discard();
-  throw SinkError("cannot write " + path_ + ": " + step + " " + temp_path_ + ": " +
-                   std::strerror(error));
+  throw SinkError("cannot write " + name_ + ": " + (step.empty() ? "" : step + ": ") +
+                  std::strerror(error));
 }
 
 void AtomicFile::discard() noexcept {
   if (fd_ >= 0) ::close(fd_);
   fd_ = -1;
-  if (temp_exists_) ::unlink(temp_path_.c_str());
+  if (temp_exists_)
+    change_temporary(temp_path_, [this] {
+      ::unlink(temp_path_.c_str());
+      return false;
+    });
   temp_exists_ = false;
-  registration_.reset();
 }
 
 }  // namespace clrt::image_detail

@@ -2,22 +2,21 @@
 #pragma once
 
 #include <cstddef>
-#include <optional>
 #include <string>
 
 #include "image/byte_sink.hpp"
-#include "image/interrupt_cleanup.hpp"
 
 namespace clrt::image_detail {
 
-// Writes go to a temporary beside the target (same directory, hence same file system, so the
-// final rename is atomic). finish() flushes it to disk and renames it over the target; any
-// failure, or destruction before finish(), removes the temporary and leaves the target as it
-// was, and so does SIGINT or SIGTERM once remove_temporaries_on_signal() has installed its
-// handlers. Errors are ImageError naming the target path and the system's reason.
+// Writes go to a temporary beside `path` (same folder, hence same file system, so the final
+// rename is atomic), named .clrt-PID-N.tmp whatever the length of the file's own name. finish()
+// flushes it to disk and renames it over `path`; any failure, destruction before finish(), or a
+// signal once remove_temporaries_on_signal() is in place, removes the temporary and leaves
+// `path` as it was. Errors are SinkError naming `name` (the path the user gave, which may be a
+// link to `path`) and the system's reason.
 class AtomicFile final : public ByteSink {
  public:
-  explicit AtomicFile(std::string path);
+  AtomicFile(std::string path, std::string name);
   ~AtomicFile() override;
 
   void finish() override;
@@ -27,14 +26,15 @@ class AtomicFile final : public ByteSink {
 
  private:
   // Reads errno, so call it straight after the failing system call.
-  [[noreturn]] void fail(const char* step);
+  [[noreturn]] void fail(const std::string& step);
   void discard() noexcept;
 
-  std::string path_, temp_path_;
+  std::string path_, name_, temp_path_;
   int fd_ = -1;
   bool temp_exists_ = false;
-  // Held from before the temporary is created until it is renamed or removed.
-  std::optional<TemporaryRegistration> registration_;
 };
+
+// The folder `path` is in: "." for a bare name, "/" for one at the root.
+std::string folder_of(const std::string& path);
 
 }  // namespace clrt::image_detail

@@ -27,9 +27,24 @@ void ByteSink::flush() {
   buffer_.clear();
 }
 
+FdSink::~FdSink() {
+  if (owned_ && fd_ >= 0) ::close(fd_);
+}
+
+void FdSink::finish() {
+  flush();
+  if (!owned_) return;
+  const int fd = fd_;
+  fd_ = -1;
+  if (::close(fd) != 0) fail(errno);
+}
+
 void FdSink::write_through(const void* data, std::size_t size) {
-  if (const int error = write_all(fd_, data, size))
-    throw SinkError("cannot write " + name_ + ": " + std::strerror(error));
+  if (const int error = write_all(fd_, data, size)) fail(error);
+}
+
+void FdSink::fail(int error) const {
+  throw SinkError("cannot write " + name_ + ": " + std::strerror(error));
 }
 
 int write_all(int fd, const void* data, std::size_t size) {

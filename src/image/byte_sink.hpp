@@ -28,17 +28,26 @@ class ByteSink {
   std::vector<std::uint8_t> buffer_;
 };
 
-// A descriptor the caller owns and keeps open; errors are ImageError naming `name`.
+// A descriptor, written as it is: errors are ImageError naming `name`. The caller keeps it
+// open, unless `owned`: then finish() closes it (a failed close fails the write) and so does
+// destruction before finish().
 class FdSink final : public ByteSink {
  public:
-  FdSink(int fd, std::string name) : fd_(fd), name_(std::move(name)) {}
+  FdSink(int fd, std::string name, bool owned = false)
+      : fd_(fd), name_(std::move(name)), owned_(owned) {}
+  ~FdSink() override;
+
+  void finish() override;
 
  protected:
   void write_through(const void* data, std::size_t size) override;
 
  private:
+  [[noreturn]] void fail(int error) const;
+
   int fd_;
   std::string name_;
+  bool owned_;
 };
 
 // All `size` bytes to `fd`, retrying after signals and short writes: 0, or the errno of the

@@ -1,9 +1,8 @@
 #include "image/fsf_animation.hpp"
 
-#include <unistd.h>
-
-#include "image/atomic_file.hpp"
+#include "image/byte_sink.hpp"
 #include "image/encoders.hpp"
+#include "image/output_target.hpp"
 
 namespace clrt {
 
@@ -15,10 +14,7 @@ FsfAnimationWriter::FsfAnimationWriter(const ImageOutput& output, int width, int
       frames_(frames) {
   if (output.format != ImageFormat::Fsf)
     throw ImageError("cannot write " + name_ + ": an animation in one file needs FSF");
-  if (output.is_stdout())
-    sink_ = std::make_unique<image_detail::FdSink>(STDOUT_FILENO, name_);
-  else
-    sink_ = std::make_unique<image_detail::AtomicFile>(output.path);
+  sink_ = image_detail::open_output_sink(output);
   image_detail::write_fsf_header(width, height, frames, *sink_);
 }
 

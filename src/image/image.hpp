@@ -89,10 +89,12 @@ struct WriteOptions {
   PngEncoding png;  // a level outside 0-9 is an ImageError before anything is written
 };
 
-// Writes `image` in the format its extension names. PFM and EXR keep the unclamped floats; the
-// others quantise. The file is written to a temporary beside `path` and renamed into place, so a
-// failure (thrown as ImageError naming the path and the reason) leaves nothing behind. PNG and
-// EXR record a placement; FSF, PPM and PFM cannot hold one and drop it.
+// Writes `image` in the format its extension names (PNG for a device or FIFO without one). PFM
+// and EXR keep the unclamped floats; the others quantise. A file is written to a temporary
+// beside it (beside a link's target, for a link) and renamed into place, so a failure (thrown
+// as ImageError naming the path and the reason) leaves nothing behind; a device or FIFO is
+// written straight through (output_target.hpp). PNG and EXR record a placement; FSF, PPM and
+// PFM cannot hold one and drop it.
 void write_image(const std::string& path, const FloatImage& image,
                  const WriteOptions& options = {});
 void write_image(const std::string& path, const Rgba8Image& image,  // PNG/PPM/PFM/EXR: frame 0
@@ -107,7 +109,8 @@ struct ImageOutput {
 };
 constexpr const char* kStdoutPath = "-";
 // Checks what can be checked before any work: "-" needs `format` and a standard output that is
-// not a terminal; a file's extension, when it names a format, must agree with `format`.
+// not a terminal; a folder is refused; a file's extension, when it names a format, must agree
+// with `format`; without `format`, a device or FIFO whose name has no known extension gets PNG.
 ImageOutput resolve_output(const std::string& path, std::optional<ImageFormat> format);
 // A file as write_image(path) writes it; standard output through write_image_to_fd.
 void write_image(const ImageOutput& output, const FloatImage& image,

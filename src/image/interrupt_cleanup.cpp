@@ -1,68 +1,101 @@
 #include "image/interrupt_cleanup.hpp"
 
 #include <fcntl.h>
-#include <limits.h>
+#include <pthread.h>
 #include <unistd.h>
 
-#include <array>
-#include <atomic>
 #include <csignal>
 #include <cstdlib>
-#include <cstring>
+#include <mutex>
+#include <set>
+#include <thread>
 
 namespace clrt {
 namespace {
 
-enum SlotState : int { kFree, kFilling, kRegistered };
+constexpr int kEndingSignals[] = {SIGINT,  SIGTERM, SIGHUP,  SIGQUIT, SIGALRM,
+                                  SIGPIPE, SIGUSR1, SIGUSR2, SIGXFSZ};
 
-struct Slot {
-  std::atomic<int> state{kFree};
-  char path[PATH_MAX];
+struct Temporaries {
+  std::mutex mutex;
+  std::set<std::string> paths;
 };
 
-std::array<Slot, 64> slots;
-static_assert(std::atomic<int>::is_always_lock_free, "the handlers read the slots");
+// Never destroyed: a signal may come while static objects are destroyed at exit.
+Temporaries& temporaries() {
+  static Temporaries* const all = new Temporaries;
+  return *all;
+}
 
-extern "C" void on_termination_signal(int signal_number) {
-  // Only async-signal-safe calls from here on.
-  for (Slot& slot : slots)
-    if (slot.state.load(std::memory_order_acquire) == kRegistered) ::unlink(slot.path);
+sigset_t ending_signals() {
+  sigset_t set;
+  sigemptyset(&set);
+  for (int signal_number : kEndingSignals) sigaddset(&set, signal_number);
+  return set;
+}
+
+// Those ignored from the start (nohup ignores SIGHUP) stay ignored. They are blocked all the
+// same and dropped when taken: left unblocked, a handler LLVM installs over SIG_IGN would run,
+// and LLVM's handler unblocks every signal in its thread, which would then die by the next one
+// without removing the temporaries.
+sigset_t ignored_from_start() {
+  sigset_t set;
+  sigemptyset(&set);
+  for (int signal_number : kEndingSignals) {
+    struct sigaction current {};
+    if (::sigaction(signal_number, nullptr, &current) == 0 && current.sa_handler == SIG_IGN)
+      sigaddset(&set, signal_number);
+  }
+  return set;
+}
+
+[[noreturn]] void end_by(int signal_number) {
+  Temporaries& all = temporaries();
+  // Never unlocked: no temporary is created or put in place from here on.
+  all.mutex.lock();
+  for (const std::string& path : all.paths) ::unlink(path.c_str());
   std::signal(signal_number, SIG_DFL);
-  std::raise(signal_number);  // delivered when the handler returns: the default action ends us
+  sigset_t just_this;
+  sigemptyset(&just_this);
+  sigaddset(&just_this, signal_number);
+  ::pthread_sigmask(SIG_UNBLOCK, &just_this, nullptr);
+  std::raise(signal_number);
+  std::_Exit(128 + signal_number);  // only if the default action did not end the process
 }
 
 }  // namespace
 
 void remove_temporaries_on_signal() {
-  static const bool installed = [] {
-    struct sigaction action {};
-    action.sa_handler = on_termination_signal;
-    sigemptyset(&action.sa_mask);
-    // Either signal arriving during the other's handler waits for it, then ends the process.
-    sigaddset(&action.sa_mask, SIGINT);
-    sigaddset(&action.sa_mask, SIGTERM);
-    for (int signal_number : {SIGINT, SIGTERM}) ::sigaction(signal_number, &action, nullptr);
+  static const bool started = [] {
+    const sigset_t set = ending_signals(), ignored = ignored_from_start();
+    ::pthread_sigmask(SIG_BLOCK, &set, nullptr);
+    std::thread([set, ignored] {
+      int signal_number = 0;
+      while (::sigwait(&set, &signal_number) != 0 || sigismember(&ignored, signal_number) == 1) {
+      }
+      end_by(signal_number);
+    }).detach();
     return true;
   }();
-  (void)installed;
+  (void)started;
+}
+
+void end_by_pending_signal() {
+  sigset_t pending;
+  if (::sigpending(&pending) != 0) return;
+  for (int signal_number : {SIGPIPE, SIGXFSZ})
+    if (sigismember(&pending, signal_number) == 1) end_by(signal_number);
 }
 
 namespace image_detail {
 
-TemporaryRegistration::TemporaryRegistration(const std::string& path) {
-  if (path.size() >= PATH_MAX) return;
-  for (int i = 0; i < static_cast<int>(slots.size()); ++i) {
-    int expected = kFree;
-    if (!slots[i].state.compare_exchange_strong(expected, kFilling)) continue;
-    std::memcpy(slots[i].path, path.c_str(), path.size() + 1);
-    slots[i].state.store(kRegistered, std::memory_order_release);
-    slot_ = i;
-    return;
-  }
-}
-
-TemporaryRegistration::~TemporaryRegistration() {
-  if (slot_ >= 0) slots[static_cast<std::size_t>(slot_)].state.store(kFree, std::memory_order_release);
+void change_temporary(const std::string& path, const std::function<bool()>& step) {
+  Temporaries& all = temporaries();
+  const std::lock_guard<std::mutex> lock(all.mutex);
+  if (step())
+    all.paths.insert(path);
+  else
+    all.paths.erase(path);
 }
 
 void hold_before_commit_for_tests(const std::string& temp_path) {

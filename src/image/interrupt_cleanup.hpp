@@ -1,31 +1,36 @@
-// SIGINT and SIGTERM must not leave an AtomicFile's temporary behind: the handlers remove every
-// temporary that exists at that moment, then end the process by the same signal, so a shell
-// still sees an interrupted program ($? is 130 or 143) and stops a loop running it.
+// No signal that ends clrt may leave an AtomicFile's temporary behind. SIGINT, SIGTERM, SIGHUP,
+// SIGQUIT, SIGALRM, SIGPIPE, SIGUSR1, SIGUSR2 and SIGXFSZ are blocked in every thread and taken
+// by one thread of ours with sigwait(), which removes every temporary that exists at that
+// moment, then ends the process by the same signal with its default action, so a shell sees the
+// conventional status (128 + the signal's number) and stops a loop running it. One ignored when
+// the process starts (nohup ignores SIGHUP) stays ignored.
+//
+// Why a thread rather than handlers: LLVM, inside PoCL, installs handlers of its own for most of
+// these signals whenever it compiles (which PoCL also does in the middle of a render) and then
+// swallows SIGQUIT, SIGUSR1 and SIGXFSZ. A blocked signal never reaches any handler, whoever
+// installed it, so sigwait() gets it.
 #pragma once
 
+#include <functional>
 #include <string>
 
 namespace clrt {
 
-// Installs the handlers (once per process; later calls do nothing).
+// Blocks the signals and starts the thread (once per process; later calls do nothing). Call it
+// first thing in main(), before any thread exists: threads inherit the blocked set.
 void remove_temporaries_on_signal();
+
+// A failed write may have raised SIGPIPE (a pipe without reader) or SIGXFSZ (past the file size
+// limit) for the writing thread, where it waits, blocked. If one does, ends the process by it as
+// the thread would have; otherwise returns. Call it before reporting a failure.
+void end_by_pending_signal();
 
 namespace image_detail {
 
-// The temporaries the handlers remove: AtomicFile registers its path before creating the file
-// and releases the entry once the file is renamed or removed. Safe from any thread and from
-// the handlers. A path that finds no free entry (more than 64 writes at once) or is longer than
-// PATH_MAX is not registered: its temporary would survive a signal.
-class TemporaryRegistration {
- public:
-  explicit TemporaryRegistration(const std::string& path);
-  ~TemporaryRegistration();
-  TemporaryRegistration(const TemporaryRegistration&) = delete;
-  TemporaryRegistration& operator=(const TemporaryRegistration&) = delete;
-
- private:
-  int slot_ = -1;
-};
+// Runs `step`, which creates, renames or removes the temporary at `path` and returns whether the
+// temporary exists afterwards, while no signal can end the process; the temporaries removed on a
+// signal are exactly those that exist. Safe from any thread.
+void change_temporary(const std::string& path, const std::function<bool()>& step);
 
 // For the test that signals clrt in the middle of a write: when CLRT_TEST_HOLD_BEFORE_COMMIT
 // names a FIFO, writes `temp_path` and a newline to it, then waits for a signal forever.

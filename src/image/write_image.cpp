@@ -1,8 +1,9 @@
 #include <unistd.h>
 
-#include "image/atomic_file.hpp"
+#include "image/byte_sink.hpp"
 #include "image/encoders.hpp"
 #include "image/image_checks.hpp"
+#include "image/output_target.hpp"
 #include "image/sink_error.hpp"
 
 namespace clrt {
@@ -61,8 +62,7 @@ template <typename Image>
 void write_file(const std::string& path, ImageFormat format, const Image& image,
                 const WriteOptions& options) {
   check_writable(image, format, options, path);
-  image_detail::AtomicFile file(path);
-  encode_into(file, path, format, image, options);
+  encode_into(*image_detail::open_output_sink({path, format}), path, format, image, options);
 }
 
 template <typename Image>
@@ -82,14 +82,20 @@ void write_output(const ImageOutput& output, const Image& image, const WriteOpti
     write_file(output.path, output.format, image, options);
 }
 
+// The extension's format; a device or FIFO without one (/dev/null) gets clrt's default.
+ImageFormat default_format(const std::string& path) {
+  if (!format_of_extension(path) && find_output_target(path).stream) return ImageFormat::Png;
+  return format_from_path(path);
+}
+
 }  // namespace
 
 void write_image(const std::string& path, const FloatImage& image, const WriteOptions& options) {
-  write_file(path, format_from_path(path), image, options);
+  write_file(path, default_format(path), image, options);
 }
 
 void write_image(const std::string& path, const Rgba8Image& image, const WriteOptions& options) {
-  write_file(path, format_from_path(path), image, options);
+  write_file(path, default_format(path), image, options);
 }
 
 void write_image(const ImageOutput& output, const FloatImage& image, const WriteOptions& options) {
@@ -117,7 +123,8 @@ ImageOutput resolve_output(const std::string& path, std::optional<ImageFormat> f
       throw ImageError("standard output is a terminal; redirect it to a file or a pipe");
     return {path, *format};
   }
-  if (!format) return {path, format_from_path(path)};
+  refuse_folder(path);
+  if (!format) return {path, default_format(path)};
   const std::optional<ImageFormat> named = format_of_extension(path);
   if (named && *named != *format)
     throw ImageError(path + ": the extension names " + format_name(*named) +

@@ -39,6 +39,7 @@ mpi::Session::Outcome attempt(Step&& step) {
   } catch (const RenderLimitError& e) {
     return {e.exit_code(), std::string("clrt-mpi: error: ") + e.what()};
   } catch (const std::exception& e) {
+    end_by_pending_signal();
     return {1, std::string("clrt-mpi: error: ") + e.what()};
   }
   return {};
@@ -68,8 +69,6 @@ int run(const mpi::Session& session, const CliOptions& cli, const mpi::TileSize&
     if (!session.first()) return;
     if (cli.list_devices) throw UsageError("--list-devices: run clrt --list-devices on a node");
     const FramePlan frames = resolve_frames(cli.animation);
-    if (frames.animated)
-      throw UsageError("clrt-mpi renders one image; farm an animation's frames with --frame-range");
     output = resolve_image_output(cli, frames);
     progress.phase("loading " + cli.scene);
     RecordingFiles recording;
@@ -87,6 +86,7 @@ int run(const mpi::Session& session, const CliOptions& cli, const mpi::TileSize&
     if (!session.first()) scene = load_scene(cli.scene, MemoryFiles(files));
     files.clear();
     setup = checked_render_setup(cli, scene, mpi::rank_devices(cli.device, session.local_rank()));
+    if (session.first()) check_output_space(output, FramePlan{}, render_region(setup.options));
     renderer.emplace(scene, built_geometry(scene, progress), setup, &progress);
   });
   if (!all_went_well(session, mine, status, progress)) return status;
@@ -114,7 +114,7 @@ int run(const mpi::Session& session, const CliOptions& cli, const mpi::TileSize&
           if (region.pixel_count() != std::uint64_t(setup.options.width) * setup.options.height)
             pixels.placement = Placement{static_cast<int>(region.x), static_cast<int>(region.y),
                                          setup.options.width, setup.options.height};
-          write_image(output, pixels, {cli.exr_pixel});
+          if (!writes_nothing(output)) write_image(output, pixels, {cli.exr_pixel});
         },
         image);
   });
@@ -124,8 +124,10 @@ int run(const mpi::Session& session, const CliOptions& cli, const mpi::TileSize&
     return mine.status;
   }
   report.total_seconds = std::chrono::duration<double>(Clock::now() - start).count();
-  progress.finish("wrote " + (output.is_stdout() ? std::string("standard output") : output.path) +
-                  " from " + std::to_string(session.size()) + " ranks");
+  const std::string ranks = " from " + std::to_string(session.size()) + " ranks";
+  const std::string where = output.is_stdout() ? "standard output" : output.path;
+  progress.finish(writes_nothing(output) ? "rendered" + ranks + ", wrote nothing (--no-write)"
+                                         : "wrote " + where + ranks);
   std::ostream& out = output.is_stdout() ? std::cerr : std::cout;
   if (cli.stats == StatsFormat::Json) out << report.to_json(rank_stats).dump(2) << "\n";
   if (cli.stats == StatsFormat::Text) out << report.to_text(rank_stats);
@@ -135,18 +137,12 @@ int run(const mpi::Session& session, const CliOptions& cli, const mpi::TileSize&
 }  // namespace
 
 int main(int argc, char** argv) {
-  clrt::return_large_blocks_when_freed();
   clrt::remove_temporaries_on_signal();
+  clrt::return_large_blocks_when_freed();
   clrt::mpi::Session session(argc, argv);
-  std::vector<std::string> args(argv + 1, argv + argc);
   clrt::mpi::TileSize tile;
-  try {
-    tile = clrt::mpi::take_tile_option(args);
-  } catch (const clrt::UsageError& e) {
-    if (session.first()) std::cerr << "clrt-mpi: error: " << e.what() << "\n";
-    return 2;
-  }
-  const clrt::ParseResult parsed = clrt::parse_arguments(args, session.first(), "clrt-mpi");
+  const clrt::ParseResult parsed = clrt::parse_arguments(
+      {argv + 1, argv + argc}, session.first(), clrt::mpi::mpi_program_options(tile));
   if (parsed.exit_code) return *parsed.exit_code;
   return run(session, parsed.options, tile);
 }

@@ -1,9 +1,10 @@
-// The options clrt-mpi adds to clrt's: --tile WxH, the size of the tiles the ranks are dealt.
+// The options clrt-mpi adds to clrt's and leaves out: --tile WxH, the size of the tiles the
+// ranks are dealt, and no animation.
 #pragma once
 
 #include <cstdint>
-#include <string>
-#include <vector>
+
+#include "cli/options.hpp"
 
 namespace clrt::mpi {
 
@@ -11,8 +12,8 @@ struct TileSize {
   std::uint32_t width = 128, height = 128;
 };
 
-// Takes `--tile WxH` (or --tile=WxH) out of `args`; the rest are clrt's. Throws UsageError for
-// a malformed size.
-TileSize take_tile_option(std::vector<std::string>& args);
+// clrt-mpi's command line: clrt's options but the animation's (it renders one image), and
+// --tile WxH into `tile`.
+ProgramOptions mpi_program_options(TileSize& tile);
 
 }  // namespace clrt::mpi

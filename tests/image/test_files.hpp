@@ -1,15 +1,17 @@
-// File helpers for the image tests: whole-file byte access, and the scratch directory to put
-// the files in.
+// File helpers for the image tests: whole-file byte access, the message of an ImageError, and
+// the scratch directory to put the files in.
 #pragma once
 
 #include <cstdint>
 #include <fstream>
+#include <functional>
 #include <initializer_list>
 #include <iterator>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "image/image.hpp"
 #include "scratch_dir.hpp"
 
 namespace clrt::test {
@@ -37,6 +39,16 @@ inline Bytes concat(std::initializer_list<Bytes> parts) {
 
 inline Bytes bytes_of(const std::string& text) {
   return {text.begin(), text.end()};
+}
+
+// The message of the ImageError `step` throws, or "" if it throws none.
+inline std::string error_of(const std::function<void()>& step) {
+  try {
+    step();
+  } catch (const ImageError& error) {
+    return error.what();
+  }
+  return {};
 }
 
 }  // namespace clrt::test

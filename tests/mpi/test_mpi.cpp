@@ -119,3 +119,18 @@ TEST_CASE("clrt-mpi names its version and refuses a bad option with exit 2, prin
   CHECK(tile.exit_code == 2);
   CHECK(count_of(tile.output, "clrt-mpi: error: --tile takes") == 1);
 }
+
+TEST_CASE("clrt-mpi --help lists what it accepts: --tile, and no animation options", "[mpi]") {
+  const CommandResult help = run_program(CLRT_MPI_EXE, "--help");
+  INFO(help.output);
+  CHECK(help.exit_code == 0);
+  CHECK(help.output.rfind("clrt-mpi: ", 0) == 0);
+  for (const char* accepted : {"--tile", "--spp", "--resolution", "--no-write", "-o,--outfile"})
+    CHECK(help.output.find(accepted) != std::string::npos);
+  for (const char* refused : {"--frames", "--orbit", "--frame-range"}) {
+    CHECK(help.output.find(refused) == std::string::npos);
+    const CommandResult r = run_mpi(mpirun(2) + refused + " 2 scene.ray");
+    CHECK(r.exit_code == 2);
+    CHECK(count_of(r.output, "clrt-mpi: error:") == 1);
+  }
+}

@@ -15,7 +15,7 @@ namespace clrt::test {
 
 ClrtProcess::ClrtProcess(const std::vector<std::string>& arguments, const std::string& working_dir,
                          const std::vector<std::string>& extra_environment,
-                         const std::string& output_file) {
+                         const std::string& output_file, const std::vector<int>& inherited) {
   std::vector<std::string> args{CLRT_EXE};
   args.insert(args.end(), arguments.begin(), arguments.end());
   std::vector<char*> argv;
@@ -36,8 +36,10 @@ ClrtProcess::ClrtProcess(const std::vector<std::string>& arguments, const std::s
   posix_spawnattr_init(&attributes);
   sigset_t defaults;
   sigemptyset(&defaults);
-  sigaddset(&defaults, SIGINT);
-  sigaddset(&defaults, SIGTERM);
+  for (int signal_number : {SIGINT, SIGTERM, SIGHUP, SIGQUIT, SIGALRM, SIGPIPE, SIGUSR1, SIGUSR2,
+                            SIGXFSZ})
+    sigaddset(&defaults, signal_number);
+  for (int signal_number : inherited) sigdelset(&defaults, signal_number);
   posix_spawnattr_setsigdefault(&attributes, &defaults);
   sigset_t none;
   sigemptyset(&none);

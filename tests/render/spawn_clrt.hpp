@@ -12,10 +12,12 @@ namespace clrt::test {
 class ClrtProcess {
  public:
   // Starts clrt with `arguments` in `working_dir`, its environment being the test's plus
-  // `extra_environment` ("NAME=value" each); SIGINT and SIGTERM start with their default action
-  // even if the test inherited them ignored. Output goes to `output_file`.
+  // `extra_environment` ("NAME=value" each); the signals that end clrt start with their default
+  // action even if the test inherited them ignored, but for `inherited` (which it gets as the
+  // test has them, e.g. ignored as nohup does). Output goes to `output_file`.
   ClrtProcess(const std::vector<std::string>& arguments, const std::string& working_dir,
-              const std::vector<std::string>& extra_environment, const std::string& output_file);
+              const std::vector<std::string>& extra_environment, const std::string& output_file,
+              const std::vector<int>& inherited = {});
   ~ClrtProcess();  // kills the child if it is still running
   ClrtProcess(const ClrtProcess&) = delete;
   ClrtProcess& operator=(const ClrtProcess&) = delete;

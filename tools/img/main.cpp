@@ -7,9 +7,11 @@
 
 #include "command_line.hpp"
 #include "cli/tool_command_line.hpp"
+#include "image/interrupt_cleanup.hpp"
 
 int main(int argc, char** argv) {
   using namespace clrt::img;
+  clrt::remove_temporaries_on_signal();
   CLI::App app{"Convert, describe, compare and stitch the images clrt writes (FSF, PNG, PPM, "
                "PFM, OpenEXR).",
                "clrt-img"};
@@ -27,6 +29,7 @@ int main(int argc, char** argv) {
     std::cerr << "clrt-img: error: " << error.what() << "\n";
     return 2;
   } catch (const std::exception& error) {
+    clrt::end_by_pending_signal();
     std::cerr << "clrt-img: error: " << error.what() << "\n";
     return 1;
   }
