@@ -31,26 +31,18 @@ typedef struct WhittedSink {
   uint* counts; /* rays by kind, CLRT_RAY_KINDS */
 } WhittedSink;
 
+/* Designated initialisers leave the other kind's fields zero: nothing is copied uninitialised. */
 CLRT_INLINE WhittedSink queue_sink(__global ShadowRay* shadows, __global uint* shadow_flags,
                                    __global Ray* children, __global uint* child_flags) {
-  WhittedSink s = {0}; /* the other kind's fields too: nothing is copied uninitialised */
-  s.kind = CLRT_SINK_QUEUE;
-  s.shadows = shadows;
-  s.shadow_flags = shadow_flags;
-  s.children = children;
-  s.child_flags = child_flags;
+  const WhittedSink s = {.kind = CLRT_SINK_QUEUE, .shadows = shadows, .shadow_flags = shadow_flags,
+                         .children = children, .child_flags = child_flags};
   return s;
 }
 
 CLRT_INLINE WhittedSink stack_sink(SceneTables scene, float epsilon, Ray* stack, uint* top,
                                    uint* counts) {
-  WhittedSink s = {0};
-  s.kind = CLRT_SINK_STACK;
-  s.scene = scene;
-  s.epsilon = epsilon;
-  s.stack = stack;
-  s.top = top;
-  s.counts = counts;
+  const WhittedSink s = {.kind = CLRT_SINK_STACK, .scene = scene, .epsilon = epsilon,
+                         .stack = stack, .top = top, .counts = counts};
   return s;
 }
 

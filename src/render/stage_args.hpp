@@ -48,43 +48,47 @@ struct IntersectArgs {
   CLRT_KERNEL_ARGS(scene, params, rays, count, hits)
 };
 
-struct ShadeArgs {
-  static constexpr const char* kName = "shade";
+// What both shading kernels read: the frame's tables and the pass's rays and hits.
+struct ShadeInputs {
   Global<const dev::RenderParams> params;
   Global<const dev::Material> materials;
   Global<const dev::Light> lights;
   Global<const dev::Ray> rays;
   Global<const dev::Hit> hits;
-  cl_uint first = 0, count = 0;
+
+  CLRT_KERNEL_ARGS(params, materials, lights, rays, hits)
+};
+
+// What both write, in each ray's own slots (kernels/shade.cl).
+struct ShadeOutputs {
   Global<dev::f4> colour;
   Global<dev::ShadowRay> shadow_slots;
   Global<cl_uint> shadow_flags;
   Global<dev::Ray> spawn_slots;
   Global<cl_uint> spawn_flags;
 
-  CLRT_KERNEL_ARGS(params, materials, lights, rays, hits, first, count, colour, shadow_slots,
-                   shadow_flags, spawn_slots, spawn_flags)
+  CLRT_KERNEL_ARGS(colour, shadow_slots, shadow_flags, spawn_slots, spawn_flags)
+};
+
+struct ShadeArgs {
+  static constexpr const char* kName = "shade";
+  ShadeInputs in;
+  cl_uint first = 0, count = 0;
+  ShadeOutputs out;
+
+  CLRT_KERNEL_ARGS(in, first, count, out)
 };
 
 // shade's work for the rays of one shading class, in the order the class lists them.
 struct ShadeSortedArgs {
   static constexpr const char* kName = "shade_sorted";
-  Global<const dev::RenderParams> params;
-  Global<const dev::Material> materials;
-  Global<const dev::Light> lights;
-  Global<const dev::Ray> rays;
-  Global<const dev::Hit> hits;
+  ShadeInputs in;
   cl_uint first = 0;
   Global<const cl_uint4> order;
   Global<const cl_uint> class_count;  // left on the device by the compaction
-  Global<dev::f4> colour;
-  Global<dev::ShadowRay> shadow_slots;
-  Global<cl_uint> shadow_flags;
-  Global<dev::Ray> spawn_slots;
-  Global<cl_uint> spawn_flags;
+  ShadeOutputs out;
 
-  CLRT_KERNEL_ARGS(params, materials, lights, rays, hits, first, order, class_count, colour,
-                   shadow_slots, shadow_flags, spawn_slots, spawn_flags)
+  CLRT_KERNEL_ARGS(in, first, order, class_count, out)
 };
 
 struct ClassifyHitsArgs {

@@ -130,6 +130,15 @@ void WavefrontIntegrator::run_pass(std::uint32_t pass, std::uint32_t count) {
     shade_chunk(pass, first, std::min(queues_.shade_chunk(), count - first));
 }
 
+ShadeInputs WavefrontIntegrator::shade_inputs() const {
+  return {frame_.params, frame_.materials, frame_.lights, queues_.rays, queues_.hits};
+}
+
+ShadeOutputs WavefrontIntegrator::shade_outputs() const {
+  return {queues_.colour, queues_.shadow_slots, queues_.shadow_flags, queues_.spawn_slots,
+          queues_.spawn_flags};
+}
+
 void WavefrontIntegrator::shade_by_class(std::uint32_t pass, std::uint32_t first,
                                          std::uint32_t count) {
   // One class at a time: flag it, compact its indices, shade them; its count stays on the device.
@@ -141,10 +150,7 @@ void WavefrontIntegrator::shade_by_class(std::uint32_t pass, std::uint32_t first
     compactor_.enqueue(launcher_, queues_.shade_indices, queues_.shade_flags, count,
                        queues_.shade_order, count, pass);
     launcher_.launch(shade_sorted_,
-                     {frame_.params, frame_.materials, frame_.lights, queues_.rays, queues_.hits,
-                      first, queues_.shade_order, compactor_.total(), queues_.colour,
-                      queues_.shadow_slots, queues_.shadow_flags, queues_.spawn_slots,
-                      queues_.spawn_flags},
+                     {shade_inputs(), first, queues_.shade_order, compactor_.total(), shade_outputs()},
                      count, pass);
   }
 }
@@ -154,11 +160,7 @@ void WavefrontIntegrator::shade_chunk(std::uint32_t pass, std::uint32_t first,
   if (shade_by_class_) {
     shade_by_class(pass, first, count);
   } else {
-    launcher_.launch(shade_,
-                     {frame_.params, frame_.materials, frame_.lights, queues_.rays, queues_.hits,
-                      first, count, queues_.colour, queues_.shadow_slots, queues_.shadow_flags,
-                      queues_.spawn_slots, queues_.spawn_flags},
-                     count, pass);
+    launcher_.launch(shade_, {shade_inputs(), first, count, shade_outputs()}, count, pass);
   }
   const std::size_t slots = std::size_t{count} * frame_.host.params.shadow_samples;
   if (!tracing() || slots == 0) return;

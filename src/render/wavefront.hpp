@@ -33,6 +33,8 @@ class WavefrontIntegrator final : public Integrator {
   void run_pass(std::uint32_t pass, std::uint32_t count);
   void shade_chunk(std::uint32_t pass, std::uint32_t first, std::uint32_t count);
   void shade_by_class(std::uint32_t pass, std::uint32_t first, std::uint32_t count);
+  ShadeInputs shade_inputs() const;
+  ShadeOutputs shade_outputs() const;
   // Whether rays spawn rays (trace and path modes).
   bool tracing() const { return frame_.host.params.mode != CLRT_MODE_CAST; }
 

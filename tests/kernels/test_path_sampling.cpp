@@ -69,16 +69,9 @@ V3 of(const dev::f4& v) { return {v.x, v.y, v.z}; }
 
 constexpr double kPi = 3.14159265358979323846;
 
+// White, ka 0.
 dev::Material material(float kd, float ks, float n, float kr, float kt, float ior = 1.5f) {
-  dev::Material m{};
-  m.color = {1, 1, 1, 0};
-  m.kd = kd;
-  m.ks = ks;
-  m.shininess = n;
-  m.kr = kr;
-  m.kt = kt;
-  m.ior = ior;
-  return m;
+  return {{1, 1, 1, 0}, 0, kd, ks, n, kr, kt, ior, 0};
 }
 
 // The density with which the smooth lobes draw wi, as docs/path-tracing.md states it, over the

@@ -183,25 +183,25 @@ ShadeOutput shade(const ShadeInput& in, std::uint32_t first = 0, std::uint32_t c
   std::vector<dev::Light> light_table = make_lights(in.scene);
   if (light_table.empty()) light_table.resize(1);  // a buffer must not be empty
   ShadeArgs args;
-  args.params = test::upload(std::vector<dev::RenderParams>{params});
-  args.materials = test::upload(make_materials(in.scene));
-  args.lights = test::upload(light_table);
-  args.rays = test::upload(in.rays);
-  args.hits = test::upload(in.hits);
+  args.in.params = test::upload(std::vector<dev::RenderParams>{params});
+  args.in.materials = test::upload(make_materials(in.scene));
+  args.in.lights = test::upload(light_table);
+  args.in.rays = test::upload(in.rays);
+  args.in.hits = test::upload(in.hits);
   args.first = first;
   args.count = count;
-  args.colour = test::upload(std::vector<dev::f4>(n, kStaleColour));
-  args.shadow_slots = test::upload(std::vector<dev::ShadowRay>(slot_count));
-  args.shadow_flags = test::upload(std::vector<cl_uint>(slot_count, kStaleFlag));
-  args.spawn_slots = test::upload(std::vector<dev::Ray>(2 * n));
-  args.spawn_flags = test::upload(std::vector<cl_uint>(2 * n, kStaleFlag));
+  args.out.colour = test::upload(std::vector<dev::f4>(n, kStaleColour));
+  args.out.shadow_slots = test::upload(std::vector<dev::ShadowRay>(slot_count));
+  args.out.shadow_flags = test::upload(std::vector<cl_uint>(slot_count, kStaleFlag));
+  args.out.spawn_slots = test::upload(std::vector<dev::Ray>(2 * n));
+  args.out.spawn_flags = test::upload(std::vector<cl_uint>(2 * n, kStaleFlag));
   test::run(test::renderer_program(), args, count);
 
-  out.colour = test::download(args.colour, n);
-  out.shadows = test::download(args.shadow_slots, slot_count);
-  out.shadow_flags = test::download(args.shadow_flags, slot_count);
-  out.spawns = test::download(args.spawn_slots, 2 * n);
-  out.spawn_flags = test::download(args.spawn_flags, 2 * n);
+  out.colour = test::download(args.out.colour, n);
+  out.shadows = test::download(args.out.shadow_slots, slot_count);
+  out.shadow_flags = test::download(args.out.shadow_flags, slot_count);
+  out.spawns = test::download(args.out.spawn_slots, 2 * n);
+  out.spawn_flags = test::download(args.out.spawn_flags, 2 * n);
   return out;
 }
 

@@ -116,7 +116,7 @@ TEST_CASE("a run whose picture differs is flagged with its PSNR and kept", "[exp
         std::string::npos);
 }
 
-TEST_CASE("--mode path renders every run by path tracing, both integrators to the same image",
+TEST_CASE("a path-mode experiment traces every run, both integrators to the same image",
           "[experiment][path]") {
   test::ScratchDir dir;
   const ProcessResult r = run_experiment(
