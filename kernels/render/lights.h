@@ -10,6 +10,13 @@ typedef struct LightSample {
   float3 to_light;  /* unit direction from the shading point towards the light */
   float distance;   /* INFINITY for directional lights */
   float3 intensity; /* colour reaching the point, before N.L; zero outside a spot's cone */
+  /* Path mode's physical reading (docs/path-tracing.md): `geometry` turns the intensity into
+   * the irradiance it brings (1 / d^2 for point and spot lights, 1 for directional ones,
+   * cos at the light times its area / d^2 for an area light's sample), and `density` is the
+   * solid-angle density of the sample for multiple importance sampling (0 for the lights no
+   * path can hit). The Whitted terms use neither. */
+  float geometry;
+  float density;
 } LightSample;
 
 /* Sample j of `light` from point p; `path` is the shading point's random stream. Area lights
@@ -24,6 +31,8 @@ CLRT_INLINE LightSample sample_light(__global const Light* light, uint j, float3
       s.to_light = -xyz(light->direction);
       s.distance = INFINITY;
       s.position = p + s.to_light;
+      s.geometry = 1.0f;
+      s.density = 0.0f;
       return s;
     case CLRT_LIGHT_AREA: {
       const float2 uv = stratified(j, light->grid_u, light->grid_v,
@@ -39,6 +48,17 @@ CLRT_INLINE LightSample sample_light(__global const Light* light, uint j, float3
   const float3 delta = s.position - p;
   s.distance = length3(delta);
   s.to_light = delta / s.distance;
+  const float d2 = s.distance * s.distance;
+  s.geometry = 1.0f / d2;
+  s.density = 0.0f;
+  if (light->kind == CLRT_LIGHT_AREA) {
+    const float3 normal = cross3(xyz(light->edge_u), xyz(light->edge_v));
+    const float area = length3(normal);
+    const float cos_light = fabs(dot3(normal, s.to_light)) / area;
+    /* One of `samples` uniform points: density d^2 / (cos_light area) in solid angle. */
+    s.geometry = cos_light * area / d2;
+    s.density = cos_light > 0.0f ? d2 / (cos_light * area) : 0.0f;
+  }
   if (light->kind == CLRT_LIGHT_SPOT) {
     /* D runs from the light to P: lit when S.D >= cos(angle), scaled by (S.D)^exp. With a
      * cone wider than 90 degrees S.D may be negative: the factor is then 1 for exp 0 (as

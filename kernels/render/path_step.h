@@ -77,27 +77,12 @@ CLRT_INLINE float3 crossed_emission(const Ray* ray, __global const Light* lights
 CLRT_INLINE float3 light_estimate(const ShadePoint* sp, const PathLobes* lobes,
                                   __global const Light* light, const LightSample* ls) {
   const float3 f = smooth_bsdf(lobes, sp->n, sp->v, ls->to_light);
-  if (all(f == (float3)(0.0f))) return (float3)(0.0f);
-  const float cos_i = dot3(sp->n, ls->to_light);
-  switch (light->kind) {
-    case CLRT_LIGHT_DIRECTIONAL:
-      return f * cos_i * ls->intensity;
-    case CLRT_LIGHT_POINT:
-    case CLRT_LIGHT_SPOT:
-      return f * cos_i * ls->intensity / (ls->distance * ls->distance);
-    case CLRT_LIGHT_AREA: {
-      const float3 normal = cross3(xyz(light->edge_u), xyz(light->edge_v));
-      const float area = length3(normal);
-      const float cos_light = fabs(dot3(normal, ls->to_light)) / area;
-      if (cos_light == 0.0f) return (float3)(0.0f);
-      /* One of `samples` uniform points: density d^2 / (cos_light area) in solid angle. */
-      const float light_pdf = ls->distance * ls->distance / (cos_light * area);
-      const float w = power_heuristic((float)light->samples, light_pdf,
-                                      smooth_pdf(lobes, sp->n, sp->v, ls->to_light));
-      return f * cos_i * ls->intensity * (w / light_pdf);
-    }
-  }
-  return (float3)(0.0f);
+  if (all(f == (float3)(0.0f)) || ls->geometry == 0.0f) return (float3)(0.0f);
+  /* A light that paths can hit as well shares this direction with the BSDF's samples. */
+  const float w = ls->density > 0.0f ? power_heuristic((float)light->samples, ls->density,
+                                                       smooth_pdf(lobes, sp->n, sp->v, ls->to_light))
+                                     : 1.0f;
+  return f * dot3(sp->n, ls->to_light) * ls->intensity * (ls->geometry * w);
 }
 
 /* The direction the path continues in, its weight f cos / pdf (with the lobe choice), the

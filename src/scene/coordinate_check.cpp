@@ -4,6 +4,7 @@
 #include <cmath>
 #include <vector>
 
+#include "scene/light_kinds.hpp"
 #include "scene/limits.hpp"
 
 namespace clrt {
@@ -68,8 +69,7 @@ void check_coordinates(const LoaderState& state) {
     world.add(t.v2);
   }
   for (const LightSpec& light : scene.lights)
-    if (light.kind != LightKind::Ambient && light.kind != LightKind::Directional)
-      world.add(light.position);
+    if (light_kind(light.kind).placed) world.add(light.position);
   for (const InstanceSpec& instance : scene.instances) {
     const Box box = mapped(object_box(instance, mesh_boxes), instance.transform);
     if (!(box.reach() <= limits::kMaxCoordinate))

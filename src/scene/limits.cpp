@@ -1,24 +1,14 @@
 #include "scene/limits.hpp"
 
 #include <cstdio>
-#include <stdexcept>
 
+#include "scene/light_kinds.hpp"
 #include "scene/scene.hpp"
 
 namespace clrt {
 
 std::int64_t shadow_samples(const LightSpec& light) {
-  switch (light.kind) {
-    case LightKind::Ambient:
-      return 0;
-    case LightKind::Point:
-    case LightKind::Directional:
-    case LightKind::Spot:
-      return 1;
-    case LightKind::Area:
-      return light.samples;
-  }
-  throw std::logic_error("a light kind without shadow samples");
+  return light_kind(light.kind).shadow_samples(light);
 }
 
 std::string short_number(double value) {
