@@ -29,8 +29,20 @@ std::string duration_text(double seconds) {
 }  // namespace
 
 Progress::Progress(bool enabled)
-    : enabled_(enabled && isatty(STDERR_FILENO)),
-      start_(std::chrono::steady_clock::now()),
+    : Progress(Output{[](const std::string& text) {
+                        std::fputs(text.c_str(), stderr);
+                        std::fflush(stderr);
+                      },
+                      terminal_columns},
+               std::chrono::steady_clock::now) {
+  enabled_ = enabled && isatty(STDERR_FILENO);
+}
+
+Progress::Progress(Output output, Clock clock)
+    : enabled_(true),
+      output_(std::move(output)),
+      clock_(std::move(clock)),
+      start_(clock_()),
       last_draw_(start_) {}
 
 Progress::~Progress() { clear(); }
@@ -48,8 +60,8 @@ void Progress::start(const std::string& name, std::uint64_t total) {
   std::lock_guard<std::mutex> lock(mutex_);
   name_ = name;
   total_ = total;
-  done_ = 0;
-  start_ = std::chrono::steady_clock::now();
+  done_ = first_done_ = 0;
+  start_ = clock_();
   draw(true);
 }
 
@@ -57,15 +69,19 @@ void Progress::advance(std::uint64_t done) {
   if (!enabled_) return;
   std::lock_guard<std::mutex> lock(mutex_);
   done_ += done;
+  if (first_done_ == 0) {
+    first_done_ = done_;
+    first_ = clock_();
+  }
   draw(done_ >= total_);
 }
 
 // Redrawing more than ten times a second only costs time.
 void Progress::draw(bool force) {
-  const auto now = std::chrono::steady_clock::now();
+  const auto now = clock_();
   if (!force && now - last_draw_ < std::chrono::milliseconds(100)) return;
   last_draw_ = now;
-  const int columns = terminal_columns() - 1;  // the last column would wrap on some terminals
+  const int columns = output_.columns() - 1;  // the last column would wrap on some terminals
   std::string line = name_;
   if (total_ > 0) {
     const double fraction = std::min(1.0, static_cast<double>(done_) / static_cast<double>(total_));
@@ -73,8 +89,11 @@ void Progress::draw(bool force) {
     char tail[96];
     std::snprintf(tail, sizeof tail, " %3.0f%% %s", 100 * fraction, duration_text(elapsed).c_str());
     std::string text = tail;
-    if (fraction > 0.02 && fraction < 1)
-      text += ", " + duration_text(elapsed * (1 - fraction) / fraction) + " left";
+    const double since_first = std::chrono::duration<double>(now - first_).count();
+    if (done_ > first_done_ && done_ < total_ && since_first > 0) {
+      const double rate = static_cast<double>(done_ - first_done_) / since_first;
+      text += ", " + duration_text(static_cast<double>(total_ - done_) / rate) + " left";
+    }
     const int bar = columns - static_cast<int>(line.size() + text.size()) - 3;
     if (bar >= 10) {
       const int filled = static_cast<int>(fraction * bar);
@@ -83,15 +102,13 @@ void Progress::draw(bool force) {
     line += text;
   }
   if (static_cast<int>(line.size()) > columns) line.resize(std::max(0, columns));
-  std::fprintf(stderr, "\r\033[K%s", line.c_str());
-  std::fflush(stderr);
+  output_.write("\r\033[K" + line);
   drawn_ = true;
 }
 
 void Progress::clear() {
   if (!drawn_) return;
-  std::fprintf(stderr, "\r\033[K");
-  std::fflush(stderr);
+  output_.write("\r\033[K");
   drawn_ = false;
 }
 
@@ -99,7 +116,7 @@ void Progress::message(const std::string& text) {
   std::lock_guard<std::mutex> lock(mutex_);
   const bool redraw = drawn_;
   clear();
-  std::fprintf(stderr, "%s\n", text.c_str());
+  output_.write(text + "\n");
   if (redraw) draw(true);
 }
 
@@ -107,7 +124,7 @@ void Progress::finish(const std::string& message) {
   if (!enabled_) return;
   std::lock_guard<std::mutex> lock(mutex_);
   clear();
-  if (!message.empty()) std::fprintf(stderr, "%s\n", message.c_str());
+  if (!message.empty()) output_.write(message + "\n");
 }
 
 }  // namespace clrt

@@ -2,10 +2,16 @@
 // phase (load, BVH, kernel build, render, write), and while a long phase runs a bar that fits
 // the terminal's width with the share done, the time so far and an estimate of the time left.
 // It ends with what was written. Redirected output never sees any of it.
+//
+// The time left comes from the rate since the first piece of work was done, never from the
+// start: the first waves also pay for work done once (PoCL compiles a kernel for its work-group
+// size at its first launch), and counting that as the rendering rate once made a 0.3 s render
+// say "19.8 s left". Until a second piece arrives there is no estimate rather than a wrong one.
 #pragma once
 
 #include <chrono>
 #include <cstdint>
+#include <functional>
 #include <mutex>
 #include <string>
 
@@ -13,8 +19,17 @@ namespace clrt {
 
 class Progress {
  public:
+  using Clock = std::function<std::chrono::steady_clock::time_point()>;
+  // Where a drawn line goes and how wide it may be (a test's own, or the terminal).
+  struct Output {
+    std::function<void(const std::string& text)> write;
+    std::function<int()> columns;
+  };
+
   // Draws nothing unless `enabled` and stderr is a terminal.
   explicit Progress(bool enabled);
+  // Always draws, into `output`, reading the time from `clock`.
+  Progress(Output output, Clock clock);
   ~Progress();
   Progress(const Progress&) = delete;
   Progress& operator=(const Progress&) = delete;
@@ -37,10 +52,13 @@ class Progress {
   void clear();
 
   bool enabled_;
+  Output output_;
+  Clock clock_;
   std::string name_;
   std::uint64_t total_ = 0, done_ = 0;
+  std::uint64_t first_done_ = 0;  // done when the first piece arrived; 0 before
   bool drawn_ = false;
-  std::chrono::steady_clock::time_point start_, last_draw_;
+  std::chrono::steady_clock::time_point start_, first_, last_draw_;
   std::mutex mutex_;
 };
 
