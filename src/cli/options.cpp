@@ -1,5 +1,6 @@
 #include "cli/options.hpp"
 
+#include <cstdint>
 #include <filesystem>
 #include <map>
 #include <regex>
@@ -8,6 +9,7 @@
 
 #include "cli/argument_words.hpp"
 #include "cli/tool_command_line.hpp"
+#include "cli/whole_number.hpp"
 #include "render/integrator.hpp"
 
 #include "scene/limits.hpp"
@@ -48,13 +50,13 @@ void add_image_options(CLI::App& app, CliOptions& o) {
         if (!error.empty()) throw CLI::ValidationError(error);
       },
       "image size WxH (overrides the scene's `resolution`)");
-  for (const auto& [name, whole, field, help] :
-       {std::tuple{"--pixel-bounds", true, &o.region.pixel_bounds,
+  for (const auto& [name, pbrt_name, whole, field, help] :
+       {std::tuple{"--pixel-bounds", "--pixelbounds", true, &o.region.pixel_bounds,
                    "render only pixels x0,x1,y0,y1 (half-open; four words also do)"},
-        std::tuple{"--crop-window", false, &o.region.crop_window,
+        std::tuple{"--crop-window", "--cropwindow", false, &o.region.crop_window,
                    "render only the fractions x0,x1,y0,y1 of the image (four words also do)"}})
     app.add_option_function<std::string>(
-        name,
+        std::string(name) + "," + pbrt_name,
         [name = std::string(name), whole = whole, field = field](const std::string& text) {
           const std::string error = parse_region_numbers(text, whole, *field);
           if (!error.empty()) throw CLI::ValidationError(name + " " + error);
@@ -64,10 +66,10 @@ void add_image_options(CLI::App& app, CliOptions& o) {
 
 void add_shading_options(CLI::App& app, CliOptions& o) {
   app.add_option("--spp", o.samples, "camera samples per pixel (overrides `samples`)")
-      ->check(CLI::Range(std::int64_t{1}, limits::kMaxSamples));
+      ->transform(whole_number(1, limits::kMaxSamples));
   app.add_option("--max-depth", o.max_depth,
                  "deepest reflection/refraction bounce (overrides `maxdepth`)")
-      ->check(CLI::Range(std::int64_t{0}, limits::kMaxDepth));
+      ->transform(whole_number(0, limits::kMaxDepth));
   static const std::map<std::string, RenderMode> modes{
       {"trace", RenderMode::Trace}, {"cast", RenderMode::Cast}, {"path", RenderMode::Path}};
   app.add_option_function<std::string>(
@@ -76,13 +78,14 @@ void add_shading_options(CLI::App& app, CliOptions& o) {
          "(Monte Carlo path tracing: indirect light, docs/path-tracing.md)")
       ->check(CLI::IsMember(modes, CLI::ignore_case));
   app.add_option("--seed", o.seed, "seed of the random numbers (jitter, area lights)")
+      ->transform(whole_number(0, UINT32_MAX))
       ->capture_default_str();
 }
 
 void add_animation_options(CLI::App& app, CliOptions& o) {
   app.add_option("--frames", o.animation.frames,
                  "render N frames of a turntable around lookat (FSF: one file; else name-0001.png...)")
-      ->check(CLI::Range(1u, 1u << 24));
+      ->transform(whole_number(1, 1 << 24));
   app.add_option("--orbit", o.animation.orbit_degrees,
                  "degrees the camera turns over all the frames (default 360)");
   app.add_option("--frame-range", o.animation.frame_range,
@@ -94,8 +97,9 @@ void add_device_options(CLI::App& app, CliOptions& o) {
                  "cpu, gpu, all, P:D (platform:device index) or part of a device or platform name")
       ->capture_default_str();
   app.add_flag("--list-devices", o.list_devices, "list the OpenCL devices and exit");
-  app.add_option("--threads", o.threads, "CPU threads of PoCL's or Intel's CPU device (default: every core)")
-      ->check(CLI::Range(1u, 4096u));
+  app.add_option("--threads,--nthreads", o.threads,
+                 "CPU threads of PoCL's or Intel's CPU device (default: every core)")
+      ->transform(whole_number(1, 4096));
   std::string integrators;
   for (const IntegratorEntry& entry : integrator_table())
     integrators += std::string(integrators.empty() ? "" : "; ") + entry.name + ": " + entry.summary;
@@ -106,13 +110,13 @@ void add_device_options(CLI::App& app, CliOptions& o) {
   app.add_option("--wavefront", o.wavefront,
                  "rays in flight per queue: device memory grows with it "
                  "(default: 16384 on CPU devices, 1048576 on others)")
-      ->check(CLI::Range(1u << 10, 1u << 26));
+      ->transform(whole_number(1 << 10, 1 << 26));
   app.add_option("--lanes", o.lanes,
                  "waves in flight per device, each with its own queues (default: per device class)")
-      ->check(CLI::Range(1, 16));
+      ->transform(whole_number(1, 16));
   app.add_option("--local-size", o.local_size,
                  "work-items per work-group for every kernel (default: per device class)")
-      ->check(CLI::Range(1, 1024));
+      ->transform(whole_number(1, 1024));
 }
 
 }  // namespace
