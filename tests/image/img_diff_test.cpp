@@ -73,9 +73,15 @@ TEST_CASE("diff refuses different sizes (1), animations without --frame (1) and 
   ToolResult result = run_img(dir, "diff " + quoted(a) + " " + quoted(small));
   CHECK(result.status == 1);
   CHECK_THAT(result.err, Contains("2x1") && Contains("1x1"));
-  CHECK(run_img(dir, "diff " + quoted(a) + " " + quoted(anim)).status == 1);
-  CHECK(run_img(dir, "diff " + quoted(a) + " " + quoted(anim) + " --frame 0").status == 0);
-  CHECK(run_img(dir, "diff " + quoted(a) + " " + quoted(anim) + " --frame 1").status == 1);
+  result = run_img(dir, "diff " + quoted(a) + " " + quoted(anim));
+  CHECK(result.status == 1);
+  CHECK_THAT(result.err, Contains("holds 2 frames: pick one with --frame-b N"));
+  CHECK(run_img(dir, "diff " + quoted(a) + " " + quoted(anim) + " --frame 1").status == 0);
+  // --frame names both sides: the still has no frame 2.
+  result = run_img(dir, "diff " + quoted(a) + " " + quoted(anim) + " --frame 2");
+  CHECK(result.status == 1);
+  CHECK_THAT(result.err, Contains(a + " has no frame 2: it holds one frame"));
+  CHECK(run_img(dir, "diff " + quoted(a) + " " + quoted(anim) + " --frame 0").status == 2);
   for (const char* threshold : {"-1", "nan", "inf", "x", "1e999"}) {
     INFO(threshold);
     result = run_img(dir, "diff " + quoted(a) + " " + quoted(a) + " --threshold " + threshold);
@@ -84,4 +90,25 @@ TEST_CASE("diff refuses different sizes (1), animations without --frame (1) and 
   }
   CHECK(run_img(dir, "diff " + quoted(a) + " " + quoted(a) + " --out d.gif").status == 2);
   CHECK(run_img(dir, "diff " + quoted(a)).status == 2);
+}
+
+TEST_CASE("diff names each side's frame: --frame-a, --frame-b, or --frame for both",
+          "[img][diff]") {
+  ScratchDir dir;
+  const std::string a = dir.file("a.png"), b = dir.file("b.png"), anim = dir.file("anim.fsf");
+  clrt::write_image(a, kA);
+  clrt::write_image(b, kB);
+  clrt::write_image(anim, Rgba8Image(2, 1, {kA.frames[0], kB.frames[0]}));
+  CHECK(run_img(dir, "diff " + quoted(anim) + " " + quoted(b) + " --frame-a 2").status == 0);
+  CHECK(run_img(dir, "diff " + quoted(anim) + " " + quoted(b) + " --frame-a 1").status == 1);
+  CHECK(run_img(dir, "diff " + quoted(a) + " " + quoted(anim) + " --frame-b 1").status == 0);
+  ToolResult result = run_img(dir, "diff " + quoted(a) + " " + quoted(anim) + " --frame-b 2");
+  CHECK(result.status == 1);
+  CHECK_THAT(result.out_text(), Contains("differing pixels: 2"));
+  CHECK(run_img(dir, "diff " + quoted(anim) + " " + quoted(anim) + " --frame 2").status == 0);
+  CHECK(run_img(dir, "diff " + quoted(anim) + " " + quoted(anim) + " --frame-a 1 --frame-b 2")
+            .status == 1);
+  result = run_img(dir, "diff " + quoted(anim) + " " + quoted(anim) + " --frame 1 --frame-b 2");
+  CHECK(result.status == 2);
+  CHECK_THAT(result.err, Contains("clrt-img: error: --frame excludes --frame-b"));
 }
