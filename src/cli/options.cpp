@@ -6,6 +6,7 @@
 #include <regex>
 #include <sstream>
 #include <tuple>
+#include <utility>
 
 #include "cli/argument_words.hpp"
 #include "cli/tool_command_line.hpp"
@@ -28,7 +29,7 @@ std::string parse_resolution(const std::string& text, CliOptions& o) {
   return {};
 }
 
-void add_image_options(CLI::App& app, CliOptions& o) {
+void add_output_options(CLI::App& app, CliOptions& o) {
   app.add_option("-o,--outfile", o.outfile,
                  "output image; the extension picks the format: .png .ppm .fsf .pfm .exr; "
                  "- writes to standard output (needs --format) (default: SCENE's name with .png)");
@@ -43,6 +44,9 @@ void add_image_options(CLI::App& app, CliOptions& o) {
          },
          "EXR channels: half (default) or float")
       ->check(CLI::IsMember({"half", "float"}, CLI::ignore_case));
+}
+
+void add_image_options(CLI::App& app, CliOptions& o) {
   app.add_option_function<std::string>(
       "--resolution",
       [&](const std::string& s) {
@@ -132,10 +136,16 @@ ParseResult parse_arguments(std::vector<std::string> args, bool print,
   CLI::App app{program + ": a wavefront OpenCL ray tracer for .ray and .nff scenes", program};
   identify_tool(app);
   app.add_option("scene", o.scene, "the .ray or .nff scene to render");
-  add_image_options(app, o);
-  add_shading_options(app, o);
-  add_animation_options(app, o);
-  add_device_options(app, o);
+  // --help lists the options in groups, in the order a render is set up.
+  for (const auto& [group, add] :
+       {std::pair{"Scene and image", add_image_options}, std::pair{"Rendering", add_shading_options},
+        std::pair{"Devices", add_device_options}, std::pair{"Output", add_output_options},
+        std::pair{"Animation", add_animation_options}}) {
+    app.option_defaults()->group(group);
+    add(app, o);
+  }
+  app.option_defaults()->group("Diagnostics");
+  app.footer("Every option, its defaults and its pbrt spelling: docs/cli.md");
   bool stats = false;
   std::string stats_format = "text";
   app.add_flag("--stats", stats,

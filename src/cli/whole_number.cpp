@@ -22,7 +22,7 @@ CLI::Validator whole_number(std::int64_t min, std::int64_t max) {
         text = std::to_string(*value);
         return std::string();
       },
-      "INT in [" + std::to_string(min) + " - " + std::to_string(max) + "]");
+      range);
 }
 
 }  // namespace clrt

@@ -114,6 +114,23 @@ TEST_CASE("pbrt's spellings --outfile, --nthreads, --pixelbounds and --cropwindo
   }
 }
 
+TEST_CASE("the help lists the options in groups and ends pointing to docs/cli.md",
+          "[cli][usage]") {
+  const CommandResult help = run_clrt("--help");
+  CHECK(help.exit_code == 0);
+  std::size_t at = 0;
+  for (const char* group : {"\nScene and image:\n", "\nRendering:\n", "\nDevices:\n",
+                            "\nOutput:\n", "\nAnimation:\n", "\nDiagnostics:\n"}) {
+    INFO(group << help.output);
+    at = help.output.find(group, at);
+    CHECK(at != std::string::npos);
+  }
+  CHECK(help.output.find("--spp INT:1 to 65536") != std::string::npos);
+  const std::string last = "docs/cli.md\n";
+  CHECK(help.output.size() > last.size());
+  CHECK(help.output.compare(help.output.size() - last.size(), last.size(), last) == 0);
+}
+
 TEST_CASE("an output that is a folder or in no folder is refused before any work",
           "[cli][usage]") {
   ScratchDir dir;
