@@ -4,7 +4,8 @@ namespace clrt {
 namespace {
 
 bool is_region_option(const std::string& arg) {
-  return arg == "--pixel-bounds" || arg == "--crop-window";
+  return arg == "--pixel-bounds" || arg == "--crop-window" || arg == "--pixelbounds" ||
+         arg == "--cropwindow";
 }
 
 }  // namespace

@@ -1,13 +1,16 @@
 #include "cli/options.hpp"
 
+#include <cstdint>
 #include <filesystem>
 #include <map>
 #include <regex>
 #include <sstream>
 #include <tuple>
+#include <utility>
 
 #include "cli/argument_words.hpp"
 #include "cli/tool_command_line.hpp"
+#include "cli/whole_number.hpp"
 #include "render/integrator.hpp"
 
 #include "scene/limits.hpp"
@@ -28,7 +31,7 @@ std::string parse_resolution(const std::string& text, CliOptions& o) {
   return {};
 }
 
-void add_image_options(CLI::App& app, CliOptions& o) {
+void add_output_options(CLI::App& app, CliOptions& o) {
   app.add_option("-o,--outfile", o.outfile,
                  "output image; the extension picks the format: .png .ppm .fsf .pfm .exr; "
                  "- writes to standard output (needs --format), none writes nothing "
@@ -45,6 +48,9 @@ void add_image_options(CLI::App& app, CliOptions& o) {
          },
          "EXR channels: half (default) or float")
       ->check(CLI::IsMember({"half", "float"}, CLI::ignore_case));
+}
+
+void add_image_options(CLI::App& app, CliOptions& o) {
   app.add_option_function<std::string>(
       "--resolution",
       [&](const std::string& s) {
@@ -52,13 +58,13 @@ void add_image_options(CLI::App& app, CliOptions& o) {
         if (!error.empty()) throw CLI::ValidationError(error);
       },
       "image size WxH (overrides the scene's `resolution`)");
-  for (const auto& [name, whole, field, help] :
-       {std::tuple{"--pixel-bounds", true, &o.region.pixel_bounds,
+  for (const auto& [name, pbrt_name, whole, field, help] :
+       {std::tuple{"--pixel-bounds", "--pixelbounds", true, &o.region.pixel_bounds,
                    "render only pixels x0,x1,y0,y1 (half-open; four words also do)"},
-        std::tuple{"--crop-window", false, &o.region.crop_window,
+        std::tuple{"--crop-window", "--cropwindow", false, &o.region.crop_window,
                    "render only the fractions x0,x1,y0,y1 of the image (four words also do)"}})
     app.add_option_function<std::string>(
-        name,
+        std::string(name) + "," + pbrt_name,
         [name = std::string(name), whole = whole, field = field](const std::string& text) {
           const std::string error = parse_region_numbers(text, whole, *field);
           if (!error.empty()) throw CLI::ValidationError(name + " " + error);
@@ -68,10 +74,10 @@ void add_image_options(CLI::App& app, CliOptions& o) {
 
 void add_shading_options(CLI::App& app, CliOptions& o) {
   app.add_option("--spp", o.samples, "camera samples per pixel (overrides `samples`)")
-      ->check(CLI::Range(std::int64_t{1}, limits::kMaxSamples));
+      ->transform(whole_number(1, limits::kMaxSamples));
   app.add_option("--max-depth", o.max_depth,
                  "deepest reflection/refraction bounce (overrides `maxdepth`)")
-      ->check(CLI::Range(std::int64_t{0}, limits::kMaxDepth));
+      ->transform(whole_number(0, limits::kMaxDepth));
   static const std::map<std::string, RenderMode> modes{
       {"trace", RenderMode::Trace}, {"cast", RenderMode::Cast}, {"path", RenderMode::Path}};
   app.add_option_function<std::string>(
@@ -80,13 +86,14 @@ void add_shading_options(CLI::App& app, CliOptions& o) {
          "(Monte Carlo path tracing: indirect light, docs/path-tracing.md)")
       ->check(CLI::IsMember(modes, CLI::ignore_case));
   app.add_option("--seed", o.seed, "seed of the random numbers (jitter, area lights)")
+      ->transform(whole_number(0, UINT32_MAX))
       ->capture_default_str();
 }
 
 void add_animation_options(CLI::App& app, CliOptions& o) {
   app.add_option("--frames", o.animation.frames,
                  "render N frames of a turntable around lookat (FSF: one file; else name-0001.png...)")
-      ->check(CLI::Range(1u, 1u << 24));
+      ->transform(whole_number(1, 1 << 24));
   app.add_option("--orbit", o.animation.orbit_degrees,
                  "degrees the camera turns over all the frames (default 360)");
   app.add_option("--frame-range", o.animation.frame_range,
@@ -98,8 +105,9 @@ void add_device_options(CLI::App& app, CliOptions& o) {
                  "cpu, gpu, all, P:D (platform:device index) or part of a device or platform name")
       ->capture_default_str();
   app.add_flag("--list-devices", o.list_devices, "list the OpenCL devices and exit");
-  app.add_option("--threads", o.threads, "CPU threads of PoCL's or Intel's CPU device (default: every core)")
-      ->check(CLI::Range(1u, 4096u));
+  app.add_option("--threads,--nthreads", o.threads,
+                 "CPU threads of PoCL's or Intel's CPU device (default: every core)")
+      ->transform(whole_number(1, 4096));
   std::string integrators;
   for (const IntegratorEntry& entry : integrator_table())
     integrators += std::string(integrators.empty() ? "" : "; ") + entry.name + ": " + entry.summary;
@@ -110,7 +118,7 @@ void add_device_options(CLI::App& app, CliOptions& o) {
   app.add_option("--wavefront", o.wavefront,
                  "rays in flight per queue: device memory grows with it "
                  "(default: 16384 on CPU devices, 1048576 on others)")
-      ->check(CLI::Range(1u << 10, 1u << 26));
+      ->transform(whole_number(1 << 10, 1 << 26));
   app.add_option_function<std::string>(
          "--shade-order",
          [&](const std::string& order) { o.shade_by_class = CLI::detail::to_lower(order) == "class"; },
@@ -119,10 +127,10 @@ void add_device_options(CLI::App& app, CliOptions& o) {
       ->check(CLI::IsMember({"queue", "class"}, CLI::ignore_case));
   app.add_option("--lanes", o.lanes,
                  "waves in flight per device, each with its own queues (default: per device class)")
-      ->check(CLI::Range(1, 16));
+      ->transform(whole_number(1, 16));
   app.add_option("--local-size", o.local_size,
                  "work-items per work-group for every kernel (default: per device class)")
-      ->check(CLI::Range(1, 1024));
+      ->transform(whole_number(1, 1024));
 }
 
 }  // namespace
@@ -139,11 +147,23 @@ ParseResult parse_arguments(std::vector<std::string> args, bool print,
                program.name};
   identify_tool(app);
   app.add_option("scene", o.scene, "the .ray or .nff scene to render");
-  add_image_options(app, o);
-  add_shading_options(app, o);
-  if (program.animation) add_animation_options(app, o);
-  add_device_options(app, o);
-  if (program.add_own_options) program.add_own_options(app);
+  // --help lists the options in groups, in the order a render is set up.
+  using AddOptions = void (*)(CLI::App&, CliOptions&);
+  std::vector<std::pair<const char*, AddOptions>> groups = {{"Scene and image", add_image_options},
+                                                            {"Rendering", add_shading_options},
+                                                            {"Devices", add_device_options},
+                                                            {"Output", add_output_options}};
+  if (program.animation) groups.emplace_back("Animation", add_animation_options);
+  for (const auto& [group, add] : groups) {
+    app.option_defaults()->group(group);
+    add(app, o);
+  }
+  if (program.add_own_options) {
+    app.option_defaults()->group(program.name);
+    program.add_own_options(app);
+  }
+  app.option_defaults()->group("Diagnostics");
+  app.footer("Every option, its defaults and its pbrt spelling: docs/cli.md");
   bool stats = false;
   std::string stats_format = "text";
   app.add_flag("--stats", stats,

@@ -1,8 +1,8 @@
 #include "cli/tool_command_line.hpp"
 
-#include <algorithm>
 #include <sstream>
 
+#include "cli/unknown_words.hpp"
 #include "version.hpp"
 
 namespace clrt {
@@ -18,13 +18,20 @@ void identify_tool(CLI::App& app) {
 
 std::optional<int> parse_tool_arguments(CLI::App& app, std::vector<std::string> args,
                                         bool print) {
-  try {
-    std::reverse(args.begin(), args.end());  // CLI11 takes them last first
-    app.parse(args);
-  } catch (const CLI::ParseError& e) {
+  const auto report = [&](const CLI::ParseError& e) {
     std::ostringstream silent;
-    const int status = print ? app.exit(e) : app.exit(e, silent, silent);
-    return status == 0 ? 0 : 2;
+    return print ? app.exit(e) : app.exit(e, silent, silent);
+  };
+  try {
+    app.parse(std::vector<std::string>(args.rbegin(), args.rend()));  // CLI11 takes them last first
+  } catch (const CLI::ParseError& e) {
+    if (e.get_exit_code() == 0) return report(e);
+    const std::optional<std::string> culprit = unknown_word_message(app, args);
+    if (culprit)
+      report(CLI::ParseError(*culprit, e.get_exit_code()));
+    else
+      report(e);
+    return 2;
   }
   return std::nullopt;
 }

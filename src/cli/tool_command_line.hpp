@@ -1,6 +1,7 @@
 // What every clrt program does with its command line: --version naming the commit, errors as
-// "NAME: error: ..." with a pointer to --help, and exit status 2 for a usage error (0 after
-// --help or --version), whatever CLI11 would return.
+// "NAME: error: ..." with a pointer to --help, an unknown option or command named as such with
+// the nearest real name, and exit status 2 for a usage error (0 after --help or --version),
+// whatever CLI11 would return.
 #pragma once
 
 #include <CLI/CLI.hpp>

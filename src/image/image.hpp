@@ -153,7 +153,8 @@ Rgba8Image read_image(const std::string& path);
 using AnyImage = std::variant<Rgba8Image, FloatImage>;
 AnyImage read_any_image(const std::string& path);
 
-// A one-frame image holding frame `frame` (counted from 0) of `image`; ImageError if out of range.
+// A one-frame image holding frame `frame` of `image`, counted from 1 as clrt numbers the files
+// of an animation; ImageError if out of range.
 Rgba8Image select_frame(const Rgba8Image& image, int frame);
 
 }  // namespace clrt

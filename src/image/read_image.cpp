@@ -77,11 +77,11 @@ std::string info_text(const ImageInfo& info) {
 }
 
 Rgba8Image select_frame(const Rgba8Image& image, int frame) {
-  if (frame < 0 || static_cast<std::size_t>(frame) >= image.frames.size())
+  if (frame < 1 || static_cast<std::size_t>(frame) > image.frames.size())
     throw ImageError("there is no frame " + std::to_string(frame) + ": the image has " +
-                     std::to_string(image.frames.size()) + " frame(s), counted from 0");
-  return Rgba8Image(image.width, image.height, {image.frames[static_cast<std::size_t>(frame)]},
-                    image.placement);
+                     std::to_string(image.frames.size()) + " frame(s), counted from 1");
+  return Rgba8Image(image.width, image.height,
+                    {image.frames[static_cast<std::size_t>(frame) - 1]}, image.placement);
 }
 
 }  // namespace clrt

@@ -67,7 +67,7 @@ std::string RenderStats::to_text() const {
   out << std::fixed << std::setprecision(3);
   out << "clrt:          " << version << "\n";
   out << "scene:         " << scene << " (" << width << "x" << height << ", " << samples_per_pixel
-      << " samples per pixel)\n";
+      << (samples_per_pixel == 1 ? " sample" : " samples") << " per pixel)\n";
   for (const DeviceReport& d : devices)
     out << "device:        " << d.name << " (" << d.platform << ", driver " << d.driver << ", "
         << d.opencl_c << "; local size " << d.local_size << ", wavefront " << d.wavefront

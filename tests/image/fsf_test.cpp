@@ -158,9 +158,11 @@ TEST_CASE("FSF info lists size, frames, byte order and bytes", "[image][fsf]") {
   CHECK_THROWS_AS(clrt::fsf_file_size({0xffffffffu, 0xffffffffu, 0xffffffffu, false}), ImageError);
 }
 
-TEST_CASE("select_frame picks one frame of an animation", "[image][fsf]") {
+TEST_CASE("select_frame picks one frame of an animation, counted from 1", "[image][fsf]") {
   const Rgba8Image anim{1, 1, {{1, 1, 1, 255}, {2, 2, 2, 255}}};
-  CHECK(clrt::select_frame(anim, 1).frames == std::vector<Bytes>{{2, 2, 2, 255}});
-  CHECK_THROWS_AS(clrt::select_frame(anim, 2), ImageError);
+  CHECK(clrt::select_frame(anim, 1).frames == std::vector<Bytes>{{1, 1, 1, 255}});
+  CHECK(clrt::select_frame(anim, 2).frames == std::vector<Bytes>{{2, 2, 2, 255}});
+  CHECK_THROWS_WITH(clrt::select_frame(anim, 3), Catch::Matchers::Contains("counted from 1"));
+  CHECK_THROWS_AS(clrt::select_frame(anim, 0), ImageError);
   CHECK_THROWS_AS(clrt::select_frame(anim, -1), ImageError);
 }

@@ -44,12 +44,12 @@ TEST_CASE("convert: FSF -> PNG -> FSF gives back the same file", "[img][convert]
   CHECK(read_bytes(back) == read_bytes(fsf));
 }
 
-TEST_CASE("convert: PPM both ways, --frame picks a frame, FSF keeps every frame",
+TEST_CASE("convert: PPM both ways, --frame picks a frame (from 1), FSF keeps every frame",
           "[img][convert]") {
   ScratchDir dir;
-  const std::string anim = dir.file("anim.fsf"), ppm = dir.file("f1.ppm"), fsf = dir.file("f1.fsf");
+  const std::string anim = dir.file("anim.fsf"), ppm = dir.file("f2.ppm"), fsf = dir.file("f2.fsf");
   clrt::write_image(anim, kAnimation);
-  REQUIRE(convert(dir, anim, ppm, " --frame 1").status == 0);
+  REQUIRE(convert(dir, anim, ppm, " --frame 2").status == 0);
   REQUIRE(convert(dir, ppm, fsf).status == 0);
   const Rgba8Image back = clrt::read_fsf(fsf);
   CHECK(back.width == 3);
@@ -60,7 +60,45 @@ TEST_CASE("convert: PPM both ways, --frame picks a frame, FSF keeps every frame"
   CHECK(read_bytes(copy) == read_bytes(anim));
   const ToolResult one = convert(dir, anim, dir.file("x.png"));
   CHECK(one.status == 1);
-  CHECK_THAT(one.err, Contains("holds 2 frames: pick one with --frame N"));
+  CHECK_THAT(one.err, Contains("holds 2 frames: pick one with --frame N (counted from 1)") &&
+                         Contains("%04d"));
+  const std::string first = dir.file("first.png");
+  REQUIRE(convert(dir, anim, first, " --frame 1").status == 0);
+  CHECK(clrt::read_png(first).frames == std::vector<Bytes>{kAnimation.frames[0]});
+}
+
+TEST_CASE("convert: a %04d or %d in the output's name writes every frame, numbered from 1",
+          "[img][convert]") {
+  ScratchDir dir;
+  const std::string anim = dir.file("anim.fsf");
+  clrt::write_image(anim, kAnimation);
+  const auto frame = [](std::size_t k) { return std::vector<Bytes>{kAnimation.frames[k - 1]}; };
+  REQUIRE(convert(dir, anim, dir.file("turn-%04d.png")).status == 0);
+  CHECK(clrt::read_png(dir.file("turn-0001.png")).frames == frame(1));
+  CHECK(clrt::read_png(dir.file("turn-0002.png")).frames == frame(2));
+  // --frame with a pattern writes that frame alone, under its number; %% is a % sign.
+  REQUIRE(convert(dir, anim, dir.file("f%%-%d.ppm"), " --frame 2").status == 0);
+  CHECK(clrt::read_ppm(dir.file("f%-2.ppm")).frames == frame(2));
+  // A still through a pattern is frame 1.
+  REQUIRE(convert(dir, dir.file("turn-0002.png"), dir.file("still-%02d.fsf")).status == 0);
+  CHECK(clrt::read_fsf(dir.file("still-01.fsf")).frames == frame(2));
+  CHECK(dir.entries() == std::set<std::string>{"anim.fsf", "turn-0001.png", "turn-0002.png",
+                                                "f%-2.ppm", "still-01.fsf", "stdout.bin",
+                                                "stderr.txt"});
+
+  // Any other use of % is refused before anything is read or written.
+  for (const char* pattern : {"a-%s.png", "a-%5d.png", "a-%d-%d.png", "a-%%.png", "a-%0d.png",
+                              "a-%011d.png", "a-%.png", "a%"}) {
+    INFO(pattern);
+    const ToolResult refused = convert(dir, anim, dir.file(pattern));
+    CHECK(refused.status == 2);
+    CHECK_THAT(refused.err, Contains("clrt-img: error: ") &&
+                                Contains("a frame pattern takes one %d or %0Nd (e.g. %04d)"));
+  }
+  const ToolResult beyond = convert(dir, anim, dir.file("x-%d.png"), " --frame 3");
+  CHECK(beyond.status == 1);
+  CHECK_THAT(beyond.err, Contains("has no frame 3: it holds frames 1 to 2"));
+  CHECK(dir.entries().size() == 7);
 }
 
 TEST_CASE("convert: PFM and EXR are read, and float to 8-bit quantises as clrt does",
@@ -131,9 +169,15 @@ TEST_CASE("convert fails with status 1 on bad files and 2 on bad usage", "[img][
   ToolResult result = convert(dir, missing, out);
   CHECK(result.status == 1);
   CHECK_THAT(result.err, Contains("clrt-img: error: ") && Contains(missing));
-  result = convert(dir, anim, out, " --frame 2");
+  result = convert(dir, anim, out, " --frame 3");
   CHECK(result.status == 1);
-  CHECK_THAT(result.err, Contains("no frame 2"));
+  CHECK_THAT(result.err, Contains("no frame 3"));
+  result = convert(dir, anim, out, " --frame 0");
+  CHECK(result.status == 2);
+  CHECK_THAT(result.err, Contains("clrt-img: error: --frame: frames are counted from 1"));
+  result = convert(dir, anim, out, " --frame two");
+  CHECK(result.status == 2);
+  CHECK_THAT(result.err, Contains("clrt-img: error: --frame: two is not a whole number"));
   result = convert(dir, anim, dir.file("out.gif"));
   CHECK(result.status == 2);
   CHECK_THAT(result.err, Contains("clrt-img: error: ") && Contains(".gif"));

@@ -15,6 +15,19 @@ namespace {
 const Rgba8Image kA(2, 1, {{10, 20, 30, 255, 100, 100, 100, 255}});
 const Rgba8Image kB(2, 1, {{10, 22, 30, 255, 100, 100, 95, 255}});
 
+// A two-frame animation of kA then kB, written into `dir`.
+std::string write_animation(const ScratchDir& dir) {
+  const std::string anim = dir.file("anim.fsf");
+  clrt::write_image(anim, Rgba8Image(2, 1, {kA.frames[0], kB.frames[0]}));
+  return anim;
+}
+
+// clrt-img diff A B, then `extra` options.
+ToolResult diff(const ScratchDir& dir, const std::string& a, const std::string& b,
+                const std::string& extra) {
+  return run_img(dir, "diff " + quoted(a) + " " + quoted(b) + " " + extra);
+}
+
 }  // namespace
 
 TEST_CASE("diff of 8-bit images reports steps of 1/255 and exits 1 above the threshold",
@@ -66,16 +79,21 @@ TEST_CASE("diff of two float images compares floats, a float against 8-bit quant
 TEST_CASE("diff refuses different sizes (1), animations without --frame (1) and bad options (2)",
           "[img][diff]") {
   ScratchDir dir;
-  const std::string a = dir.file("a.png"), small = dir.file("s.png"), anim = dir.file("anim.fsf");
+  const std::string a = dir.file("a.png"), small = dir.file("s.png"), anim = write_animation(dir);
   clrt::write_image(a, kA);
   clrt::write_image(small, Rgba8Image(1, 1, {{1, 2, 3, 255}}));
-  clrt::write_image(anim, Rgba8Image(2, 1, {kA.frames[0], kB.frames[0]}));
   ToolResult result = run_img(dir, "diff " + quoted(a) + " " + quoted(small));
   CHECK(result.status == 1);
   CHECK_THAT(result.err, Contains("2x1") && Contains("1x1"));
-  CHECK(run_img(dir, "diff " + quoted(a) + " " + quoted(anim)).status == 1);
-  CHECK(run_img(dir, "diff " + quoted(a) + " " + quoted(anim) + " --frame 0").status == 0);
-  CHECK(run_img(dir, "diff " + quoted(a) + " " + quoted(anim) + " --frame 1").status == 1);
+  result = diff(dir, a, anim, "");
+  CHECK(result.status == 1);
+  CHECK_THAT(result.err, Contains("holds 2 frames: pick one with --frame-b N"));
+  CHECK(diff(dir, a, anim, "--frame 1").status == 0);
+  // --frame names both sides: the still has no frame 2.
+  result = diff(dir, a, anim, "--frame 2");
+  CHECK(result.status == 1);
+  CHECK_THAT(result.err, Contains(a + " has no frame 2: it holds one frame"));
+  CHECK(diff(dir, a, anim, "--frame 0").status == 2);
   for (const char* threshold : {"-1", "nan", "inf", "x", "1e999"}) {
     INFO(threshold);
     result = run_img(dir, "diff " + quoted(a) + " " + quoted(a) + " --threshold " + threshold);
@@ -84,4 +102,23 @@ TEST_CASE("diff refuses different sizes (1), animations without --frame (1) and 
   }
   CHECK(run_img(dir, "diff " + quoted(a) + " " + quoted(a) + " --out d.gif").status == 2);
   CHECK(run_img(dir, "diff " + quoted(a)).status == 2);
+}
+
+TEST_CASE("diff names each side's frame: --frame-a, --frame-b, or --frame for both",
+          "[img][diff]") {
+  ScratchDir dir;
+  const std::string a = dir.file("a.png"), b = dir.file("b.png"), anim = write_animation(dir);
+  clrt::write_image(a, kA);
+  clrt::write_image(b, kB);
+  CHECK(diff(dir, anim, b, "--frame-a 2").status == 0);
+  CHECK(diff(dir, anim, b, "--frame-a 1").status == 1);
+  CHECK(diff(dir, a, anim, "--frame-b 1").status == 0);
+  ToolResult result = diff(dir, a, anim, "--frame-b 2");
+  CHECK(result.status == 1);
+  CHECK_THAT(result.out_text(), Contains("differing pixels: 2"));
+  CHECK(diff(dir, anim, anim, "--frame 2").status == 0);
+  CHECK(diff(dir, anim, anim, "--frame-a 1 --frame-b 2").status == 1);
+  result = diff(dir, anim, anim, "--frame 1 --frame-b 2");
+  CHECK(result.status == 2);
+  CHECK_THAT(result.err, Contains("clrt-img: error: --frame excludes --frame-b"));
 }

@@ -115,6 +115,7 @@ TEST_CASE("clrt-mpi names its version and refuses a bad option with exit 2, prin
   INFO(bad.output);
   CHECK(bad.exit_code == 2);
   CHECK(count_of(bad.output, "clrt-mpi: error:") == 1);
+  CHECK(count_of(bad.output, "clrt-mpi: error: unknown option --no-such-option\n") == 1);
   const CommandResult tile = run_mpi(mpirun(2) + "--tile 0x5 scene.ray");
   CHECK(tile.exit_code == 2);
   CHECK(count_of(tile.output, "clrt-mpi: error: --tile takes") == 1);

@@ -87,6 +87,10 @@ TEST_CASE("the text statistics are a table, and quiet alone prints nothing", "[c
   CHECK(table.output.find("rays:") != std::string::npos);
   CHECK(table.output.find("kernels:") != std::string::npos);
   CHECK(table.output.find("passes:") != std::string::npos);
+  CHECK(table.output.find("(40x30, 1 sample per pixel)") != std::string::npos);
+  const CommandResult two = run_clrt(render_args("test2.ray", dir) + " -q --stats --spp 2");
+  REQUIRE(two.exit_code == 0);
+  CHECK(two.output.find("(40x30, 2 samples per pixel)") != std::string::npos);
   const CommandResult quiet = run_clrt(render_args("test2.ray", dir) + " -q");
   REQUIRE(quiet.exit_code == 0);
   CHECK(quiet.output.empty());

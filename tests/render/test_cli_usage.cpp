@@ -1,11 +1,15 @@
 // The command line behaves like the tools users know: --stats is a flag in any position, every
-// error starts "clrt: error:" and usage errors exit 2, outputs that cannot be written are refused
-// before any work, --threads changes nothing but the speed, every tool has --version and exits 2
-// on a usage error, and the progress line fits the terminal and names its phases.
+// error starts "clrt: error:" and usage errors exit 2, an unknown option or command is named
+// with the nearest real name, a count that is no number says so, pbrt's spellings work,
+// outputs that cannot be written are refused before any work, --threads changes nothing but
+// the speed, every tool has --version and exits 2 on a usage error, and the progress line fits
+// the terminal and names its phases.
 #include <catch2/catch.hpp>
 
 #include <sstream>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "render_support.hpp"
 #include "scratch_dir.hpp"
@@ -51,6 +55,82 @@ TEST_CASE("usage errors exit 2 and start 'clrt: error:'", "[cli][usage]") {
   }
 }
 
+TEST_CASE("an unknown option is named, with the nearest real one when one is close",
+          "[cli][usage]") {
+  const std::string scene = quoted(test_scene("test2.ray"));
+  const std::string resolution =
+      "clrt: error: unknown option --resolutoin (did you mean --resolution?)\n";
+  for (const auto& [args, message] : std::vector<std::pair<std::string, std::string>>{
+           {"--resolutoin 100x100 " + scene, resolution},
+           {scene + " --resolutoin=100x100", resolution},
+           {"--sp 2 " + scene, "clrt: error: unknown option --sp (did you mean --spp?)\n"},
+           {"--nthread 2 " + scene,
+            "clrt: error: unknown option --nthread (did you mean --nthreads?)\n"},
+           {"-x " + scene, "clrt: error: unknown option -x\n"},
+           {"--frobnicate " + scene, "clrt: error: unknown option --frobnicate\n"}}) {
+    const CommandResult r = run_clrt(args);
+    INFO(args << ": " << r.output);
+    CHECK(r.exit_code == 2);
+    CHECK(r.output.rfind(message, 0) == 0);
+  }
+}
+
+TEST_CASE("a count that is no number says so, one out of range names the range",
+          "[cli][usage]") {
+  ScratchDir dir;
+  for (const auto& [args, message] : std::vector<std::pair<std::string, std::string>>{
+           {"--spp abc", "clrt: error: --spp: abc is not a whole number\n"},
+           {"--spp 2.5", "clrt: error: --spp: 2.5 is not a whole number\n"},
+           {"--spp 0", "clrt: error: --spp: 0 is not in the range 1 to 65536\n"},
+           {"--seed x1", "clrt: error: --seed: x1 is not a whole number\n"},
+           {"--frames -3", "clrt: error: --frames: -3 is not in the range 1 to 16777216\n"}}) {
+    const CommandResult r = run_clrt(args + " " + scene_args(dir));
+    INFO(args << ": " << r.output);
+    CHECK(r.exit_code == 2);
+    CHECK(r.output.rfind(message, 0) == 0);
+  }
+  // Decimal, whatever the leading zeros (CLI11 alone would read 010 as octal 8).
+  const CommandResult ten = run_clrt("--spp 010 --stats -q " + scene_args(dir));
+  CHECK(ten.exit_code == 0);
+  CHECK(ten.output.find("(20x12, 10 samples per pixel)") != std::string::npos);
+}
+
+TEST_CASE("pbrt's spellings --outfile, --nthreads, --pixelbounds and --cropwindow work",
+          "[cli][usage]") {
+  ScratchDir dir;
+  const std::string scene = quoted(test_scene("reflect.ray")) + " -q --resolution 20x12 ";
+  const std::string bounds = dir.file("bounds.pfm");
+  REQUIRE(run_clrt(scene + "--pixel-bounds 6,15,2,11 -o " + bounds).exit_code == 0);
+  // pbrt's crop window: pixels ceil(20 x 0.26) = 6 to ceil(20 x 0.74) = 15, ceil(12 x 0.1) = 2
+  // to ceil(12 x 0.9) = 11.
+  for (const std::string& args :
+       {std::string("--pixelbounds 6 15 2 11 --nthreads 1"),
+        std::string("--pixelbounds=6,15,2,11"), std::string("--cropwindow 0.26 0.74 0.1 0.9"),
+        std::string("--cropwindow 0.26,0.74,0.1,0.9 --nthreads 2")}) {
+    INFO(args);
+    const std::string out = dir.file("alias.pfm");
+    REQUIRE(run_clrt(scene + args + " --outfile " + out).exit_code == 0);
+    CHECK(file_bytes(out) == file_bytes(bounds));
+  }
+}
+
+TEST_CASE("the help lists the options in groups and ends pointing to docs/cli.md",
+          "[cli][usage]") {
+  const CommandResult help = run_clrt("--help");
+  CHECK(help.exit_code == 0);
+  std::size_t at = 0;
+  for (const char* group : {"\nScene and image:\n", "\nRendering:\n", "\nDevices:\n",
+                            "\nOutput:\n", "\nAnimation:\n", "\nDiagnostics:\n"}) {
+    INFO(group << help.output);
+    at = help.output.find(group, at);
+    CHECK(at != std::string::npos);
+  }
+  CHECK(help.output.find("--spp INT:1 to 65536") != std::string::npos);
+  const std::string last = "docs/cli.md\n";
+  CHECK(help.output.size() > last.size());
+  CHECK(help.output.compare(help.output.size() - last.size(), last.size(), last) == 0);
+}
+
 TEST_CASE("an output that is a folder or in no folder is refused before any work",
           "[cli][usage]") {
   ScratchDir dir;
@@ -84,8 +164,31 @@ TEST_CASE("every tool names its version and exits 2 on a usage error", "[cli][us
     CHECK(version.output.find("clrt 0.1.0 (commit ") != std::string::npos);
     const CommandResult bad = run_program(tool, "--no-such-option");
     CHECK(bad.exit_code == 2);
-    CHECK(bad.output.find(": error: ") != std::string::npos);
+    CHECK(bad.output.find(": error: unknown option --no-such-option\n") != std::string::npos);
+    const CommandResult typo = run_program(tool, "--versoin");
+    CHECK(typo.exit_code == 2);
+    CHECK(typo.output.find(": error: unknown option --versoin (did you mean --version?)\n") !=
+          std::string::npos);
   }
+}
+
+TEST_CASE("clrt-img names an unknown command and the nearest real one", "[cli][usage]") {
+  const CommandResult typo = run_program(CLRT_IMG_EXE, "conver a.fsf b.png");
+  CHECK(typo.exit_code == 2);
+  CHECK(typo.output.rfind("clrt-img: error: unknown command conver (did you mean convert?)\n",
+                          0) == 0);
+  const CommandResult none = run_program(CLRT_IMG_EXE, "");
+  CHECK(none.exit_code == 2);
+  CHECK(none.output.rfind("clrt-img: error: a command is required: convert, info, diff, stitch\n",
+                          0) == 0);
+  const CommandResult option = run_program(CLRT_IMG_EXE, "diff a.png b.png --treshold 2");
+  CHECK(option.exit_code == 2);
+  CHECK(option.output.rfind(
+            "clrt-img: error: unknown option --treshold (did you mean --threshold?)\n", 0) == 0);
+  // The options of another command are unknown to this one.
+  const CommandResult other = run_program(CLRT_IMG_EXE, "convert a.png b.png --threshold 2");
+  CHECK(other.exit_code == 2);
+  CHECK(other.output.rfind("clrt-img: error: unknown option --threshold\n", 0) == 0);
 }
 
 TEST_CASE("on a terminal the progress line names its phases, fits the width and ends with the file",

@@ -14,6 +14,7 @@
 #include <thread>
 
 #include "cli/tool_command_line.hpp"
+#include "cli/whole_number.hpp"
 #include "device/opencl.hpp"
 #include "render/integrator.hpp"
 #include "experiment_plan.hpp"
@@ -125,7 +126,7 @@ int main(int argc, char** argv) {
   app.add_option("--local-size", local_sizes, "comma-separated work-group sizes (default: the device's)");
   app.add_option("--variant", extras, "NAME=ARGS: further clrt arguments as one more variant (repeatable)");
   app.add_option("--repeats", plan.repeats, "runs of each configuration")
-      ->check(CLI::Range(1, 1000))
+      ->transform(clrt::whole_number(1, 1000))
       ->capture_default_str();
   app.add_option("--resolution", plan.resolution, "WxH for every scene; `scene` keeps each scene's")
       ->capture_default_str();

@@ -3,6 +3,7 @@
 #include <climits>
 #include <iostream>
 
+#include "cli/whole_number.hpp"
 #include "image/image_info.hpp"
 
 namespace clrt::img {
@@ -26,8 +27,17 @@ void add_exr_pixel_option(CLI::App& command, std::optional<ExrPixel>& pixel) {
       ->check(CLI::IsMember({"half", "float"}, CLI::ignore_case));
 }
 
-void add_frame_option(CLI::App& command, std::optional<int>& frame, const std::string& what) {
-  command.add_option("--frame", frame, what)->check(CLI::Range(0, INT_MAX));
+CLI::Option* add_frame_option(CLI::App& command, const std::string& name,
+                              std::optional<int>& frame, const std::string& what) {
+  const CLI::Validator whole = whole_number(1, INT_MAX);
+  // Frames were once counted from 0 here: a 0 is most likely that habit, so say why it fails.
+  const CLI::Validator from_one(
+      [whole](std::string& text) {
+        return parse_whole_number(text) == 0 ? "frames are counted from 1, so there is no frame 0"
+                                             : whole(text);
+      },
+      "");
+  return command.add_option(name, frame, what + " (counted from 1)")->transform(from_one);
 }
 
 ImageFormat input_format(const std::string& path) {
@@ -46,16 +56,20 @@ ImageOutput output_argument(const std::string& path, std::optional<ImageFormat> 
   }
 }
 
-AnyImage pick_frame(AnyImage image, std::optional<int> frame, const std::string& path) {
-  if (auto* rgba = std::get_if<Rgba8Image>(&image)) {
-    if (frame) return select_frame(*rgba, *frame);
-    if (rgba->frames.size() > 1)
-      throw ImageError(path + " holds " + std::to_string(rgba->frames.size()) +
-                       " frames: pick one with --frame N (counted from 0)");
-    return image;
-  }
-  if (frame && *frame != 0)
-    throw ImageError(path + " has no frame " + std::to_string(*frame) + ": it holds one");
+int frame_count(const AnyImage& image) {
+  const auto* rgba = std::get_if<Rgba8Image>(&image);
+  return rgba ? static_cast<int>(rgba->frames.size()) : 1;
+}
+
+AnyImage pick_frame(const AnyImage& image, std::optional<int> frame, const std::string& path,
+                    const std::string& how) {
+  const int count = frame_count(image);
+  if (!frame && count > 1)
+    throw ImageError(path + " holds " + std::to_string(count) + " frames: pick one with " + how);
+  if (frame && (*frame < 1 || *frame > count))
+    throw ImageError(path + " has no frame " + std::to_string(*frame) + ": it holds " +
+                     (count == 1 ? "one frame" : "frames 1 to " + std::to_string(count)));
+  if (frame && count > 1) return select_frame(std::get<Rgba8Image>(image), *frame);
   return image;
 }
 

@@ -32,16 +32,22 @@ class UsageError : public std::runtime_error {
 // --format NAME and --exr-pixel half|float.
 void add_format_option(CLI::App& command, std::optional<ImageFormat>& format);
 void add_exr_pixel_option(CLI::App& command, std::optional<ExrPixel>& pixel);
-// --frame N, counted from 0.
-void add_frame_option(CLI::App& command, std::optional<int>& frame, const std::string& what);
+// A frame option (`name`: --frame, --frame-a...) taking N counted from 1, as clrt numbers the
+// files of an animation.
+CLI::Option* add_frame_option(CLI::App& command, const std::string& name,
+                              std::optional<int>& frame, const std::string& what);
 
 // The checks that need no file: an input's format by its extension, an output as
 // resolve_output() takes it. Their failures are UsageErrors.
 ImageFormat input_format(const std::string& path);
 ImageOutput output_argument(const std::string& path, std::optional<ImageFormat> format);
 
-// One frame of an 8-bit image (`frame`, or the only one); a float image has just frame 0.
-AnyImage pick_frame(AnyImage image, std::optional<int> frame, const std::string& path);
+// The frames an image holds: an 8-bit one any number, a float one one.
+int frame_count(const AnyImage& image);
+// Frame `frame` of an image (counted from 1), or its only one; an animation without `frame`
+// is an ImageError that tells the user to pick one `how` ("--frame N (counted from 1)").
+AnyImage pick_frame(const AnyImage& image, std::optional<int> frame, const std::string& path,
+                    const std::string& how);
 
 // Whether the file holds samples that half floats cannot (PFM always; EXR by its header).
 bool holds_float32(const std::string& path, ImageFormat format);

@@ -1,9 +1,11 @@
 // clrt-img convert IN OUT: any format clrt reads into any it writes. 8-bit to 8-bit and float
 // to float keep every value; float to 8-bit quantises as clrt does; 8-bit to float gives
-// value / 255. All frames of an FSF go into an FSF; other outputs take the frame --frame names.
+// value / 255. All frames of an FSF go into an FSF, or into one file each through a pattern
+// such as turn-%04d.png; other outputs take the frame --frame names.
 #include <memory>
 
 #include "command_line.hpp"
+#include "frame_pattern.hpp"
 #include "image/image_info.hpp"
 
 namespace clrt::img {
@@ -16,20 +18,41 @@ struct ConvertOptions {
   std::optional<ExrPixel> exr_pixel;
 };
 
-int convert(const ConvertOptions& options) {
-  const ImageFormat input = input_format(options.input);
-  const ImageOutput output = output_argument(options.output, options.format);
-  AnyImage image = read_any_image(options.input);
-  if (output.format != ImageFormat::Fsf || options.frame)
-    image = pick_frame(std::move(image), options.frame, options.input);
+void write_converted(const std::string& path, const ImageOutput& output, const AnyImage& image,
+                     const WriteOptions& options) {
   const std::optional<Placement> placement =
       std::visit([](const auto& i) { return i.placement; }, image);
   if (placement && !records_placement(output.format))
-    warn(options.output + ": " + format_name(output.format) +
+    warn(path + ": " + format_name(output.format) +
          " cannot record the placement; only the tile's pixels are written");
+  std::visit([&](const auto& i) { write_image(output, i, options); }, image);
+}
+
+const char kHowToPick[] =
+    "--frame N (counted from 1), or write them all through a name such as out-%04d.png";
+
+int convert(const ConvertOptions& options) {
+  const ImageFormat input = input_format(options.input);
+  const bool numbered = is_frame_pattern(options.output);
+  // A pattern's first name stands for all of them: they differ in the number alone.
+  const ImageOutput output = output_argument(
+      numbered ? frame_file_name(options.output, 1) : options.output, options.format);
+  AnyImage image = read_any_image(options.input);
   const WriteOptions write_options{
       exr_pixel_for(options.exr_pixel, holds_float32(options.input, input))};
-  std::visit([&](const auto& i) { write_image(output, i, write_options); }, image);
+  if (numbered) {
+    const int first = options.frame.value_or(1);
+    const int last = options.frame.value_or(frame_count(image));
+    for (int frame = first; frame <= last; ++frame) {
+      const std::string path = frame_file_name(options.output, frame);
+      write_converted(path, output_argument(path, options.format),
+                      pick_frame(image, frame, options.input, kHowToPick), write_options);
+    }
+    return 0;
+  }
+  if (output.format != ImageFormat::Fsf || options.frame)
+    image = pick_frame(image, options.frame, options.input, kHowToPick);
+  write_converted(options.output, output, image, write_options);
   return 0;
 }
 
@@ -40,11 +63,12 @@ void add_convert(CLI::App& app, Command& command) {
   CLI::App* sub = app.add_subcommand("convert", "convert an image to another format");
   sub->add_option("input", options->input, "image to read: .fsf .png .ppm .pfm .exr")->required();
   sub->add_option("output", options->output,
-                  "image to write, its format by extension or --format; - for standard output")
+                  "image to write, its format by extension or --format; - for standard output; "
+                  "a name with %04d (or %d) writes every frame, one file each: turn-%04d.png")
       ->required();
-  add_frame_option(*sub, options->frame,
-                   "the frame of an animation to convert (default: all into FSF; a single-frame "
-                   "output needs it for an animation)");
+  add_frame_option(*sub, "--frame", options->frame,
+                   "the frame of an animation to convert (default: all into FSF or a %04d "
+                   "name; another single-frame output needs it for an animation)");
   add_format_option(*sub, options->format);
   add_exr_pixel_option(*sub, options->exr_pixel);
   sub->callback([&command, options] { command = [options] { return convert(*options); }; });

@@ -1,5 +1,6 @@
 // clrt-img diff A B: how far two renders of one frame are apart; exit 1 when a pixel differs by
-// more than the threshold.
+// more than the threshold. --frame N picks frame N of both, --frame-a and --frame-b one side's
+// (a still against an animation's frame).
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -16,7 +17,7 @@ namespace {
 struct DiffOptions {
   std::string a, b, out;
   double threshold = 0;
-  std::optional<int> frame;
+  std::optional<int> frame, frame_a, frame_b;
 };
 
 std::string number(double value) {
@@ -42,8 +43,12 @@ int diff(const DiffOptions& options) {
   input_format(options.b);
   std::optional<ImageOutput> out;
   if (!options.out.empty()) out = output_argument(options.out, std::nullopt);
-  const AnyImage a = pick_frame(read_any_image(options.a), options.frame, options.a);
-  const AnyImage b = pick_frame(read_any_image(options.b), options.frame, options.b);
+  const std::optional<int> frame_a = options.frame ? options.frame : options.frame_a;
+  const std::optional<int> frame_b = options.frame ? options.frame : options.frame_b;
+  const AnyImage a = pick_frame(read_any_image(options.a), frame_a, options.a,
+                                "--frame-a N (counted from 1; --frame N for both)");
+  const AnyImage b = pick_frame(read_any_image(options.b), frame_b, options.b,
+                                "--frame-b N (counted from 1; --frame N for both)");
   const ImageDifference difference = compare_images(a, b, options.threshold);
   std::cout << report(difference, options.threshold) << std::flush;
   if (out) write_image(*out, difference.difference);
@@ -72,7 +77,11 @@ void add_diff(CLI::App& app, Command& command) {
           "NUMBER>=0"));
   sub->add_option("--out", options->out,
                   "write |A - B| per channel, scaled so the largest difference is white");
-  add_frame_option(*sub, options->frame, "the frame to compare in animations");
+  CLI::Option* both = add_frame_option(*sub, "--frame", options->frame,
+                                       "the frame to compare, in both images");
+  // Naming a side's frame and both sides' at once would leave one of them unread: refused.
+  both->excludes(add_frame_option(*sub, "--frame-a", options->frame_a, "the frame of A"));
+  both->excludes(add_frame_option(*sub, "--frame-b", options->frame_b, "the frame of B"));
   sub->callback([&command, options] { command = [options] { return diff(*options); }; });
 }
 

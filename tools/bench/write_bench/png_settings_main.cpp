@@ -60,7 +60,7 @@ Input load(const std::string& path) {
   clrt::AnyImage image = clrt::read_any_image(path);
   clrt::Rgba8Image pixels = std::holds_alternative<clrt::FloatImage>(image)
                                 ? clrt::quantize(std::get<clrt::FloatImage>(image))
-                                : clrt::select_frame(std::get<clrt::Rgba8Image>(image), 0);
+                                : clrt::select_frame(std::get<clrt::Rgba8Image>(image), 1);
   const std::string name = path.substr(path.find_last_of('/') + 1);
   return {name, std::move(image), std::move(pixels)};
 }
