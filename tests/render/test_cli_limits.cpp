@@ -11,6 +11,7 @@
 
 #include "render_support.hpp"
 #include "scratch_dir.hpp"
+#include "skip_test.hpp"
 #include "spawn_clrt.hpp"
 
 using namespace clrt::test;
@@ -103,6 +104,11 @@ TEST_CASE("an output that is an input is refused before any work", "[cli][limits
 
 TEST_CASE("a scene larger than the memory clrt may take stops loading early, at its line, exit 2",
           "[cli][limits][memory]") {
+#if defined(__SANITIZE_ADDRESS__)
+  // AddressSanitizer reserves terabytes of address space for its shadow memory, so no build of
+  // it starts under ulimit -v.
+  CLRT_SKIP_TEST("AddressSanitizer cannot run under ulimit -v");
+#endif
   // 3M spheres: 51 MB of text that would need about 3.4 GiB loaded; the address space is capped
   // at 2 GiB, so loading must stop about half way, with the figures, not on a failed allocation.
   ScratchDir dir;
