@@ -9,18 +9,22 @@ set -euo pipefail
 
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 
+# What clrt itself needs: the first command installs only these.
 packages=(
   cmake g++ make                 # the build
   ocl-icd-opencl-dev             # the OpenCL ICD loader (libOpenCL.so) and its CMake/pkg-config files
   opencl-headers                 # CL/cl.h
   pocl-opencl-icd                # PoCL: the CPU OpenCL device clrt runs and is tested on
   libboost-dev                   # Boost.Compute (header-only) for the host API
-  catch2                         # the test framework (2.13 on Debian 12)
   libcli11-dev                   # the command line
   libpng-dev                     # PNG output and input
   zlib1g-dev                     # the PNG writer's compression, on every core (libpng-dev pulls it in too)
   libopenexr-dev                 # OpenEXR output and input (half or 32-bit float HDR, tiles' data windows)
   nlohmann-json3-dev             # JSON for --stats=json and the experiment records
+)
+# What the tests and the other programs add (--tests).
+test_packages=(
+  catch2                         # the test framework (2.13 on Debian 12)
   python3-matplotlib             # the plots of clrt-experiment (and its test)
   libopenmpi-dev openmpi-bin     # clrt-mpi: one image across the ranks of an MPI job (and mpirun for its tests)
 )
@@ -34,11 +38,15 @@ esac
 
 source tools/lib/install_missing.sh
 source tools/lib/install_test_devices.sh
+if ((with_tests)); then packages+=("${test_packages[@]}"); fi
 install_missing "${packages[@]}"
 
-if [[ ! -f build/CMakeCache.txt ]]; then
-  cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
-fi
+# The tests are configured in only with --tests: a first picture needs neither Catch2 nor MPI.
+# An existing tree keeps its other settings; --tests only switches the tests on.
+configure=()
+[[ -f build/CMakeCache.txt ]] || configure+=(-DCMAKE_BUILD_TYPE=Release -DCLRT_BUILD_TESTS=$((with_tests)))
+((with_tests)) && configure+=(-DCLRT_BUILD_TESTS=ON)
+if ((${#configure[@]})); then cmake -S . -B build "${configure[@]}"; fi
 # Without --tests only clrt, all the first render needs: the test programs are most of the build
 # and would keep a newcomer from a first picture for minutes.
 targets=(--target clrt)
