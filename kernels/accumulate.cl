@@ -5,7 +5,7 @@
  *   2. a sample's level d: the colours of its rays of depth d, left to right in the ray tree
  *      (reflection before refraction at every branch), added from the first;
  *   3. a sample's colour: 0 + level 0 + level 1 + ... (levels without rays add nothing);
- *   4. a pixel: sample 0 + sample 1 + ..., divided by the sample count.
+ *   4. a pixel: sample 0 + sample 1 + ..., divided by the sample count, across rounds.
  * In the wavefront, queues are sorted by owner (shadow rays by the ray they light, rays by their
  * camera sample, and within a sample in tree order, since compaction is stable): the first item
  * of each run of equal owners adds the whole run in queue order and is the only writer of that
@@ -39,12 +39,18 @@ __kernel void accumulate_samples(__global const Ray* rays, __global const float4
   sample_colour[sample] += sum;
 }
 
-/* pixels[p] = the mean of its samples (unclamped: clamping happens once, when quantising). */
-__kernel void resolve(__global const float4* sample_colour, uint samples, uint pixel_count,
-                      __global float4* pixels) {
+/* A wave's pixels after one round of their samples (src/render/sample_rounds.hpp): pixels[p]
+ * comes in holding the sum of the samples before first_sample (unless this is the first round)
+ * and leaves holding the sum up to this round's last sample, or, after the last round, the mean
+ * of all total_samples (unclamped: clamping happens once, when quantising). Each sum is sample
+ * 0 + sample 1 + ... in that order, so how the samples are split into rounds never changes a
+ * bit. */
+__kernel void resolve(__global const float4* sample_colour, uint samples, uint first_sample,
+                      uint total_samples, uint pixel_count, __global float4* pixels) {
   const uint p = get_global_id(0);
   if (p >= pixel_count) return;
-  float4 sum = sample_colour[(size_t)p * samples];
-  for (uint k = 1; k < samples; ++k) sum += sample_colour[(size_t)p * samples + k];
-  pixels[p] = sum / (float)samples;
+  const size_t base = (size_t)p * samples;
+  float4 sum = first_sample == 0u ? sample_colour[base] : pixels[p] + sample_colour[base];
+  for (uint k = 1; k < samples; ++k) sum += sample_colour[base + k];
+  pixels[p] = first_sample + samples == total_samples ? sum / (float)total_samples : sum;
 }

@@ -24,8 +24,8 @@
 __kernel void megakernel(SCENE_PARAMS, __global const RenderParams* params,
                          __global const Camera* camera, __global const Material* materials,
                          __global const Light* lights, uint region_x, uint region_y,
-                         uint region_width, uint first_pixel, uint sample_count,
-                         __global float4* sample_colour, __global uint* ray_counts) {
+                         uint region_width, uint first_pixel, uint first_sample,
+                         uint pixel_samples, uint sample_count, __global float4* sample_colour, __global uint* ray_counts) {
   const uint i = get_global_id(0);
   if (i >= sample_count) return;
   const Camera cam = *camera;
@@ -38,7 +38,8 @@ __kernel void megakernel(SCENE_PARAMS, __global const RenderParams* params,
   uint top = 0;
   const SceneTables scene = {SCENE_ARGS};
   WhittedSink sink = stack_sink(scene, params->epsilon, stack, &top, counts);
-  stack[top++] = wave_camera_ray(&cam, region_x, region_y, region_width, first_pixel, i);
+  stack[top++] = wave_camera_ray(&cam, region_x, region_y, region_width, first_pixel,
+                                 first_sample, pixel_samples, i);
   while (top > 0) {
     const Ray ray = stack[--top];
     ++counts[ray.kind];

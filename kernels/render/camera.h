@@ -1,7 +1,9 @@
 /* Camera rays of a wave. A wave is a run of local pixels [first_pixel, ...) of a rectangle of
  * the image (the region) whose top-left pixel is (region_x, region_y) and whose rows are
- * region_width pixels wide; camera sample `index` of the wave is sample index % samples of
- * local pixel first_pixel + index / samples, so a wave's queue starts sorted by sample. */
+ * region_width pixels wide, and a run of each pixel's samples [first_sample, first_sample +
+ * pixel_samples) (a round: src/render/sample_rounds.hpp). Camera ray `index` of the wave is
+ * sample first_sample + index % pixel_samples of local pixel first_pixel + index /
+ * pixel_samples, so a wave's queue starts sorted by pixel and sample. */
 #ifndef CLRT_RENDER_CAMERA_H
 #define CLRT_RENDER_CAMERA_H
 
@@ -12,9 +14,10 @@
  * the camera's grid. The random stream is keyed by the pixel's place in the whole image, never
  * in the region or the wave, so every region of a frame has the full render's bits. */
 CLRT_INLINE Ray wave_camera_ray(const Camera* cam, uint region_x, uint region_y, uint region_width,
-                           uint first_pixel, uint index) {
-  const uint in_region = first_pixel + index / cam->samples;
-  const uint k = index % cam->samples;
+                                uint first_pixel, uint first_sample, uint pixel_samples,
+                                uint index) {
+  const uint in_region = first_pixel + index / pixel_samples;
+  const uint k = first_sample + index % pixel_samples;
   const uint x = region_x + in_region % region_width;
   const uint y = region_y + in_region / region_width;
   const uint path = camera_path(cam->seed, y * cam->width + x, k);

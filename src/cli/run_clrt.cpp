@@ -143,7 +143,7 @@ int render_frames(const CliOptions& cli, Scene& scene, const FramePlan& frames,
     progress.start(frames.animated ? "frame " + std::to_string(frame) + "/" +
                                          std::to_string(frames.frames)
                                    : "rendering",
-                   region.pixel_count());
+                   renderer.render_work(region));
     const AnyImage image = renderer.render(region, eight_bit, &progress);
     progress.phase("writing");
     const auto write_start = Clock::now();

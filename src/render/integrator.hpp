@@ -17,9 +17,9 @@
 #include "render/device_buffer.hpp"
 #include "render/device_frame.hpp"
 #include "render/pixel_rect.hpp"
-#include "render/pixel_store.hpp"
 #include "render/render_options.hpp"
 #include "render/render_stats.hpp"
+#include "render/sample_rounds.hpp"
 #include "render/wave_sizes.hpp"
 
 namespace clrt {
@@ -36,10 +36,11 @@ struct IntegratorConfig {
 class Integrator {
  public:
   virtual ~Integrator() = default;
-  // Renders `rect`, its pixels in row-major order, into `store` from its pixel `first` on.
-  virtual void render(const PixelRect& rect, PixelStore& store, std::uint64_t first) = 0;
-  // Pixels one wave takes: a good size for a piece of work to hand this integrator.
-  virtual std::uint32_t pixels_per_wave() const = 0;
+  // Renders `output`'s round of samples of `rect`, its pixels in row-major order, into
+  // `output` from its pixel `first` on.
+  virtual void render(const PixelRect& rect, RoundOutput& output, std::uint64_t first) = 0;
+  // Pixels one wave takes with `samples` samples each: a good size for a piece of work.
+  virtual std::uint32_t pixels_per_wave(std::uint32_t samples) const = 0;
   // Waits for the device and adds what was rendered since the last call to `stats`.
   virtual void harvest(RenderStats& stats) = 0;
   // Its own buffers on the device (the frame's are counted once by the caller).

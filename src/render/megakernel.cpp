@@ -24,7 +24,7 @@ void check_stack_depth(std::uint32_t max_depth, std::uint32_t stack_depth) {
 
 std::vector<DeviceBuffer> megakernel_buffers(const WaveSizes& s) {
   std::vector<DeviceBuffer> list{CLRT_MEGAKERNEL_BUFFERS(CLRT_BUFFER_DESCRIBE)};
-  for (DeviceBuffer& b : WaveResolver::buffers(s.wave_samples, s.wave_pixels))
+  for (DeviceBuffer& b : WaveResolver::buffers(s.capacity, s.wave_pixels))
     list.push_back(std::move(b));
   return list;
 }
@@ -51,31 +51,37 @@ MegakernelIntegrator::MegakernelIntegrator(DeviceContext& device, const compute:
                                            const IntegratorConfig& config)
     : frame_(frame),
       config_(config),
-      samples_per_pixel_(frame.host.camera.samples),
-      wave_pixels_(static_cast<std::uint32_t>(sizes_of(config, frame).wave_pixels)),
-      resolver_(device, program, wave_pixels_ * samples_per_pixel_, wave_pixels_),
+      wave_rays_(static_cast<std::uint32_t>(sizes_of(config, frame).capacity)),
+      resolver_(device, program, wave_rays_, wave_rays_),
       launcher_(device, config.local_size, config.profile),
       profiler_(launcher_, program, config.profile, 1,
-                wave_pixels_ * samples_per_pixel_ / Profiler::kCountChunk + 1, config.timeline),
+                wave_rays_ / Profiler::kCountChunk + 1, config.timeline),
       megakernel_(program) {
   check_stack_depth(frame.host.params.max_depth, config.megakernel_depth);
   const WaveSizes s = sizes_of(config, frame);
   CLRT_MEGAKERNEL_BUFFERS(CLRT_BUFFER_ALLOCATE)
 }
 
-void MegakernelIntegrator::render(const PixelRect& rect, PixelStore& store, std::uint64_t first) {
+std::uint32_t MegakernelIntegrator::pixels_per_wave(std::uint32_t samples) const {
+  return std::max<std::uint32_t>(1, wave_rays_ / samples);
+}
+
+void MegakernelIntegrator::render(const PixelRect& rect, RoundOutput& output, std::uint64_t first) {
   const std::uint64_t total = rect.pixel_count();
+  const SampleRound& round = output.round();
   for (std::uint64_t done = 0; done < total;) {
-    const auto n = static_cast<std::uint32_t>(std::min<std::uint64_t>(wave_pixels_, total - done));
-    const std::uint32_t samples = n * samples_per_pixel_;
-    const WaveArgs wave{rect.x, rect.y, rect.width, static_cast<std::uint32_t>(done), samples};
+    const auto n = static_cast<std::uint32_t>(
+        std::min<std::uint64_t>(pixels_per_wave(round.count), total - done));
+    const std::uint32_t samples = n * round.count;
+    const WaveArgs wave{rect.x,      rect.y,      rect.width, static_cast<std::uint32_t>(done),
+                        round.first, round.count, samples};
     launcher_.launch(megakernel_,
                      {frame_.geometry.args(), frame_.params, frame_.camera, frame_.materials,
                       frame_.lights, wave, resolver_.sample_colour(), ray_counts_},
                      samples, 0);
     profiler_.count_rows(ray_counts_, samples, 0);
     profiler_.commit_wave();
-    resolver_.resolve(launcher_, samples_per_pixel_, n, store, first + done);
+    resolver_.resolve(launcher_, output, n, first + done);
     profiler_.settle();
     ++waves_;
     done += n;

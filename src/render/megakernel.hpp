@@ -12,7 +12,7 @@ namespace clrt {
 // Its own buffers, X(member, element, length in elements of WaveSizes s, name); the resolver's
 // come with them.
 #define CLRT_MEGAKERNEL_BUFFERS(X) \
-  X(ray_counts_, cl_uint, CLRT_RAY_KINDS * s.wave_samples, "ray count")
+  X(ray_counts_, cl_uint, CLRT_RAY_KINDS * s.capacity, "ray count")
 
 const IntegratorEntry& megakernel_integrator();
 
@@ -21,15 +21,15 @@ class MegakernelIntegrator final : public Integrator {
   MegakernelIntegrator(DeviceContext& device, const compute::program& program,
                        const DeviceFrame& frame, const IntegratorConfig& config);
 
-  void render(const PixelRect& rect, PixelStore& store, std::uint64_t first) override;
-  std::uint32_t pixels_per_wave() const override { return wave_pixels_; }
+  void render(const PixelRect& rect, RoundOutput& output, std::uint64_t first) override;
+  std::uint32_t pixels_per_wave(std::uint32_t samples) const override;
   void harvest(RenderStats& stats) override;
   std::uint64_t device_bytes() const override;
 
  private:
   const DeviceFrame& frame_;
   IntegratorConfig config_;
-  std::uint32_t samples_per_pixel_, wave_pixels_;
+  std::uint32_t wave_rays_;
   WaveResolver resolver_;
   CLRT_MEGAKERNEL_BUFFERS(CLRT_BUFFER_MEMBER)
   Launcher launcher_;

@@ -59,6 +59,7 @@ void Progress::start(const std::string& name, std::uint64_t total) {
   if (!enabled_) return;
   std::lock_guard<std::mutex> lock(mutex_);
   name_ = name;
+  note_.clear();
   total_ = total;
   done_ = first_done_ = 0;
   start_ = clock_();
@@ -76,6 +77,13 @@ void Progress::advance(std::uint64_t done) {
   draw(done_ >= total_);
 }
 
+void Progress::note(const std::string& text) {
+  if (!enabled_) return;
+  std::lock_guard<std::mutex> lock(mutex_);
+  note_ = text;
+  draw(true);
+}
+
 // Redrawing more than ten times a second only costs time.
 void Progress::draw(bool force) {
   const auto now = clock_();
@@ -87,8 +95,10 @@ void Progress::draw(bool force) {
     const double fraction = std::min(1.0, static_cast<double>(done_) / static_cast<double>(total_));
     const double elapsed = std::chrono::duration<double>(now - start_).count();
     char tail[96];
-    std::snprintf(tail, sizeof tail, " %3.0f%% %s", 100 * fraction, duration_text(elapsed).c_str());
+    std::snprintf(tail, sizeof tail, " %3.0f%%", 100 * fraction);
     std::string text = tail;
+    if (!note_.empty()) text += " " + note_;
+    text += " " + duration_text(elapsed);
     const double since_first = std::chrono::duration<double>(now - first_).count();
     if (done_ > first_done_ && done_ < total_ && since_first > 0) {
       const double rate = static_cast<double>(done_ - first_done_) / since_first;

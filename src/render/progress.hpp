@@ -41,6 +41,8 @@ class Progress {
   // A phase with a bar over `total` units ("rendering", "frame 3/24").
   void start(const std::string& name, std::uint64_t total);
   void advance(std::uint64_t done);  // thread-safe
+  // A few words shown after the share done until the next start ("24/64 spp").
+  void note(const std::string& text);
   // Prints `text` on a line of its own above the progress line (or just prints it when no line
   // is drawn: stderr is not a terminal, or --quiet).
   void message(const std::string& text);
@@ -54,7 +56,7 @@ class Progress {
   bool enabled_;
   Output output_;
   Clock clock_;
-  std::string name_;
+  std::string name_, note_;
   std::uint64_t total_ = 0, done_ = 0;
   std::uint64_t first_done_ = 0;  // done when the first piece arrived; 0 before
   bool drawn_ = false;

@@ -13,8 +13,10 @@ namespace clrt {
 namespace {
 
 // Host bytes per pixel: the linear float image (12), its 8-bit copy (4) and the encoded file
-// (up to 12 for PFM).
+// (up to 12 for PFM), and with more than one sample per pixel the running sums between rounds
+// of samples (16: render/sample_rounds.hpp).
 constexpr std::uint64_t kHostBytesPerPixel = 28;
+constexpr std::uint64_t kRoundSumBytesPerPixel = sizeof(dev::f4);
 
 [[noreturn]] void refuse(int exit_code, const std::string& message) {
   throw RenderLimitError(exit_code, message);
@@ -105,7 +107,9 @@ void check_render_limits(const Scene& scene, const RenderOptions& options,
                          const MachineBudget& budget) {
   check_request(scene, options);
   const std::uint64_t geometry = estimated_geometry_bytes(scene);
-  const std::uint64_t image = pixel_count(options) * kHostBytesPerPixel;
+  const std::uint64_t image =
+      pixel_count(options) *
+      (kHostBytesPerPixel + (options.samples > 1 ? kRoundSumBytesPerPixel : 0));
   // The host holds the image and builds the geometry tables (which it keeps while they upload),
   // and gives its memory to every device that has none of its own.
   std::uint64_t host = image + geometry;

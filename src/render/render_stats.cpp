@@ -59,6 +59,7 @@ void RenderStats::merge(const RenderStats& o) {
   }
   waves += o.waves;
   wave_restarts += o.wave_restarts;
+  sample_rounds = std::max(sample_rounds, o.sample_rounds);
   device_bytes += o.device_bytes;
 }
 
@@ -67,7 +68,9 @@ std::string RenderStats::to_text() const {
   out << std::fixed << std::setprecision(3);
   out << "clrt:          " << version << "\n";
   out << "scene:         " << scene << " (" << width << "x" << height << ", " << samples_per_pixel
-      << (samples_per_pixel == 1 ? " sample" : " samples") << " per pixel)\n";
+      << (samples_per_pixel == 1 ? " sample" : " samples") << " per pixel";
+  if (sample_rounds > 1) out << " in " << sample_rounds << " rounds";
+  out << ")\n";
   for (const DeviceReport& d : devices)
     out << "device:        " << d.name << " (" << d.platform << ", driver " << d.driver << ", "
         << d.opencl_c << "; local size " << d.local_size << ", wavefront " << d.wavefront
@@ -118,6 +121,7 @@ nlohmann::json RenderStats::to_json() const {
   j["width"] = width;
   j["height"] = height;
   j["samples_per_pixel"] = samples_per_pixel;
+  j["sample_rounds"] = sample_rounds;
   j["integrator"] = integrator;
   j["devices"] = json::array();
   for (const DeviceReport& d : devices)

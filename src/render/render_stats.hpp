@@ -45,6 +45,7 @@ struct RenderStats {
   std::string scene, integrator, version;
   std::uint64_t width = 0, height = 0;     // the rendered region's size
   std::uint64_t samples_per_pixel = 0;
+  std::uint64_t sample_rounds = 0;  // the most rounds a region took them in (sample_rounds.hpp)
   std::uint64_t frames = 1;
   std::vector<DeviceReport> devices;
   std::array<std::uint64_t, CLRT_RAY_KINDS> rays{};  // by kind, CLRT_RAY_*

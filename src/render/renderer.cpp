@@ -113,6 +113,37 @@ void rethrow_lane_errors(const std::vector<std::exception_ptr>& errors) {
   throw DeviceError(all);
 }
 
+// One round over `region`: its rows dealt out among the lanes, a thread each, all joined
+// before the next round adds to the sums this one leaves.
+void render_round(const PixelRect& region, RoundOutput& output,
+                  const std::vector<Integrator*>& workers, Progress* progress) {
+  RowDealer dealer(region);
+  std::vector<std::exception_ptr> errors(workers.size());
+  const std::uint32_t samples = output.round().count;
+  const auto work = [&](std::size_t i) {
+    try {
+      Integrator& integrator = *workers[i];
+      PixelRect band;
+      while (dealer.next(integrator.pixels_per_wave(samples), band)) {
+        const std::uint64_t offset = std::uint64_t{band.y - region.y} * region.width;
+        integrator.render(band, output, offset);
+        if (progress) progress->advance(band.pixel_count() * samples);
+      }
+    } catch (...) {
+      errors[i] = std::current_exception();
+      dealer.stop();
+    }
+  };
+  if (workers.size() == 1) {
+    work(0);
+  } else {
+    std::vector<std::thread> threads;
+    for (std::size_t i = 0; i < workers.size(); ++i) threads.emplace_back(work, i);
+    for (auto& t : threads) t.join();
+  }
+  rethrow_lane_errors(errors);
+}
+
 }  // namespace
 
 PixelRect render_region(const RenderOptions& options) {
@@ -192,6 +223,7 @@ Renderer::Renderer(const Scene& scene, GeometryData geometry, const RenderSetup&
                             .make(*lane.context, w.program, *w.frame, config);
       w.lanes.push_back(std::move(lane));
     }
+    rays_in_flight_ += std::uint64_t{tuning.wavefront} * tuning.lanes;
     w.report = report_of(entry, tuning);
     devices_->workers.push_back(std::move(w));
   }
@@ -225,32 +257,23 @@ AnyImage Renderer::render(const PixelRect& region, bool eight_bit, Progress* pro
   std::vector<Integrator*> workers;
   for (DeviceWorker& d : devices_->workers)
     for (Lane& lane : d.lanes) workers.push_back(lane.integrator.get());
-  RowDealer dealer(region);
-  std::vector<std::exception_ptr> errors(workers.size());
-  const auto work = [&](std::size_t i) {
-    try {
-      Integrator& integrator = *workers[i];
-      PixelRect band;
-      while (dealer.next(integrator.pixels_per_wave(), band)) {
-        const std::uint64_t offset = std::uint64_t{band.y - region.y} * region.width;
-        integrator.render(band, *store, offset);
-        if (progress) progress->advance(band.pixel_count());
-      }
-    } catch (...) {
-      errors[i] = std::current_exception();
-      dealer.stop();
-    }
-  };
-  if (workers.size() == 1) {
-    work(0);
-  } else {
-    std::vector<std::thread> threads;
-    for (std::size_t i = 0; i < workers.size(); ++i) threads.emplace_back(work, i);
-    for (auto& t : threads) t.join();
+  const std::vector<SampleRound> rounds =
+      sample_rounds(static_cast<std::uint32_t>(options_.samples), region.pixel_count(), rays_in_flight_);
+  std::vector<dev::f4> sums(rounds.size() > 1 ? region.pixel_count() : 0);
+  sample_rounds_ = std::max<std::uint64_t>(sample_rounds_, rounds.size());
+  for (const SampleRound& round : rounds) {
+    RoundOutput output(round, sums, *store);
+    render_round(region, output, workers, progress);
+    if (progress && rounds.size() > 1)
+      progress->note(std::to_string(round.first + round.count) + "/" +
+                     std::to_string(round.total) + " spp");
   }
-  rethrow_lane_errors(errors);
   render_seconds_ += seconds_since(start);
   return image;
+}
+
+std::uint64_t Renderer::render_work(const PixelRect& region) const {
+  return region.pixel_count() * static_cast<std::uint64_t>(options_.samples);
 }
 
 void Renderer::set_camera(const dev::Camera& camera) {
@@ -260,6 +283,8 @@ void Renderer::set_camera(const dev::Camera& camera) {
 void Renderer::report(RenderStats& stats) {
   const auto start = Clock::now();
   RenderStats own;
+  own.sample_rounds = sample_rounds_;
+  sample_rounds_ = 0;
   for (DeviceWorker& w : devices_->workers) {
     own.device_bytes += w.frame->bytes;
     for (Lane& lane : w.lanes) {
@@ -286,7 +311,7 @@ FloatImage render(const Scene& scene, const RenderSetup& setup, RenderStats& sta
   Renderer renderer(scene, setup);
   const PixelRect region = render_region(setup.options);
   Progress progress(setup.progress);
-  progress.start("rendering", region.pixel_count());
+  progress.start("rendering", renderer.render_work(region));
   FloatImage image = std::get<FloatImage>(renderer.render(region, false, &progress));
   progress.finish();
   renderer.report(stats);

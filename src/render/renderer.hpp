@@ -52,10 +52,13 @@ class Renderer {
   Renderer& operator=(const Renderer&) = delete;
 
   // Renders `region` of the image, as linear floats or, `eight_bit`, quantised as the contract
-  // says (for the formats that store 8 bits: a quarter of the memory). The image records its
-  // placement in the frame unless it is the whole frame; every pixel has the bits of the same
-  // pixel of a full render.
+  // says (for the formats that store 8 bits: a quarter of the memory), in rounds of samples
+  // (render/sample_rounds.hpp). The image records its placement in the frame unless it is the
+  // whole frame; every pixel has the bits of the same pixel of a full render. `progress`
+  // advances by render_work(region) in all and shows the samples per pixel done.
   AnyImage render(const PixelRect& region, bool eight_bit, Progress* progress = nullptr);
+  // The units of work of rendering `region`: a camera sample each.
+  std::uint64_t render_work(const PixelRect& region) const;
 
   // The camera of the renders that follow (an animation's next frame).
   void set_camera(const dev::Camera& camera);
@@ -70,6 +73,8 @@ class Renderer {
   const GeometryData geometry_;
   std::unique_ptr<Devices> devices_;
   RenderStats setup_stats_;  // BVH and kernel build, reported once
+  std::uint64_t rays_in_flight_ = 0;  // every lane's wavefront: what a round should keep busy
+  std::uint64_t sample_rounds_ = 0;   // the most rounds a render took since the last report
   double render_seconds_ = 0;
 };
 

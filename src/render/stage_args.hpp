@@ -18,14 +18,17 @@ CLRT_DEVICE_TYPE_NAME(dev::Material, "Material");
 CLRT_DEVICE_TYPE_NAME(dev::Light, "Light");
 CLRT_DEVICE_TYPE_NAME(dev::RenderParams, "RenderParams");
 
-// The pixels of one wave (kernels/render/camera.h): local pixels [first_pixel, ...) of a
-// rectangle of the image whose top-left pixel is (region_x, region_y), rows region_width wide.
+// The camera samples of one wave (kernels/render/camera.h): local pixels [first_pixel, ...) of
+// a rectangle of the image whose top-left pixel is (region_x, region_y), rows region_width
+// wide, and samples [first_sample, first_sample + pixel_samples) of each.
 struct WaveArgs {
   cl_uint region_x = 0, region_y = 0, region_width = 0;
   cl_uint first_pixel = 0;
+  cl_uint first_sample = 0, pixel_samples = 1;
   cl_uint sample_count = 0;  // camera samples in the wave
 
-  CLRT_KERNEL_ARGS(region_x, region_y, region_width, first_pixel, sample_count)
+  CLRT_KERNEL_ARGS(region_x, region_y, region_width, first_pixel, first_sample, pixel_samples,
+                   sample_count)
 };
 
 struct GenerateArgs {
@@ -136,10 +139,10 @@ struct AccumulateSamplesArgs {
 struct ResolveArgs {
   static constexpr const char* kName = "resolve";
   Global<const dev::f4> sample_colour;
-  cl_uint samples = 0, pixel_count = 0;
+  cl_uint samples = 0, first_sample = 0, total_samples = 0, pixel_count = 0;
   Global<dev::f4> pixels;
 
-  CLRT_KERNEL_ARGS(sample_colour, samples, pixel_count, pixels)
+  CLRT_KERNEL_ARGS(sample_colour, samples, first_sample, total_samples, pixel_count, pixels)
 };
 
 struct MegakernelArgs {

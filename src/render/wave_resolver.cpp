@@ -21,13 +21,18 @@ void WaveResolver::clear(std::uint32_t samples) {
                                       sizeof zero * samples);
 }
 
-void WaveResolver::resolve(Launcher& launcher, std::uint32_t samples_per_pixel,
-                           std::uint32_t pixel_count, PixelStore& store, std::uint64_t first) {
-  launcher.launch(resolve_, {sample_colour_, samples_per_pixel, pixel_count, pixels_},
+void WaveResolver::resolve(Launcher& launcher, RoundOutput& output, std::uint32_t pixel_count,
+                           std::uint64_t first) {
+  const SampleRound& round = output.round();
+  if (round.first > 0)
+    device_.queue().enqueue_write_buffer(pixels_.buffer, 0, sizeof(dev::f4) * pixel_count,
+                                         output.sums_before(first));
+  launcher.launch(resolve_,
+                  {sample_colour_, round.count, round.first, round.total, pixel_count, pixels_},
                   pixel_count, 0);
   device_.queue().enqueue_read_buffer(pixels_.buffer, 0, sizeof(dev::f4) * pixel_count,
                                       host_pixels_.data());
-  store.store(first, pixel_count, host_pixels_.data());
+  output.take(first, pixel_count, host_pixels_.data());
 }
 
 }  // namespace clrt

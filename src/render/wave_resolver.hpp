@@ -1,17 +1,18 @@
-// The end of every wave, for both integrators: the camera samples' colours, their mean per pixel
-// (kernels/accumulate.cl, resolve) and the pixels' way back to the host.
+// The end of every wave, for both integrators: the camera samples' colours, their sum or mean
+// per pixel (kernels/accumulate.cl, resolve) and the pixels' way back to the host.
 #pragma once
 
 #include <vector>
 
 #include "render/device_buffer.hpp"
-#include "render/pixel_store.hpp"
+#include "render/sample_rounds.hpp"
 #include "render/launcher.hpp"
 #include "render/stage_args.hpp"
 
 namespace clrt {
 
-// X(member, element, length, name) for waves of `samples` camera samples and `pixels` pixels.
+// X(member, element, length, name) for waves of at most `samples` camera samples and `pixels`
+// pixels.
 #define CLRT_WAVE_RESOLVER_BUFFERS(X)                   \
   X(sample_colour_, dev::f4, samples, "sample colour") \
   X(pixels_, dev::f4, pixels, "pixel")
@@ -27,9 +28,10 @@ class WaveResolver {
   const Global<dev::f4>& sample_colour() const { return sample_colour_; }
   void clear(std::uint32_t samples);
 
-  // Resolves the wave's pixels and stores them as pixels [first, first + pixel_count).
-  void resolve(Launcher& launcher, std::uint32_t samples_per_pixel, std::uint32_t pixel_count,
-               PixelStore& store, std::uint64_t first);
+  // Resolves the wave's pixels after `output`'s round and hands them to it as pixels
+  // [first, first + pixel_count).
+  void resolve(Launcher& launcher, RoundOutput& output, std::uint32_t pixel_count,
+               std::uint64_t first);
 
   std::uint64_t bytes() const { return bytes_; }
 

@@ -11,8 +11,7 @@ struct WaveSizes {
   std::uint64_t capacity = 0;     // rays per queue: the wavefront, at least one pixel's samples
   std::uint64_t shade_chunk = 0;  // rays shaded per launch, so that their shadow slots fit
   std::uint64_t shadow_slots = 0; // shade_chunk * shadow samples per shading point
-  std::uint64_t wave_pixels = 0;  // pixels per wave before any overflow halves it
-  std::uint64_t wave_samples = 0; // camera samples of a whole wave: wave_pixels * samples
+  std::uint64_t wave_pixels = 0;  // the most pixels a wave holds: a round of one sample each
 
   // An OpenCL buffer cannot be empty, so a scene without shadow rays still gets one slot.
   std::uint64_t shadow_buffer_slots() const { return std::max<std::uint64_t>(1, shadow_slots); }

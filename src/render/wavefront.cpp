@@ -39,10 +39,9 @@ WavefrontIntegrator::WavefrontIntegrator(DeviceContext& device, const compute::p
                                          const DeviceFrame& frame, const IntegratorConfig& config)
     : device_(device),
       frame_(frame),
-      samples_per_pixel_(frame.host.camera.samples),
-      wave_pixels_(static_cast<std::uint32_t>(sizes_of(config, frame).wave_pixels)),
       queues_(device, sizes_of(config, frame)),
-      resolver_(device, program, queues_.capacity(), wave_pixels_),
+      wave_rays_(queues_.capacity()),
+      resolver_(device, program, queues_.capacity(), queues_.capacity()),
       launcher_(device, config.local_size, config.profile),
       profiler_(launcher_, program, config.profile, pass_limit(frame),
                 queues_.capacity() / Profiler::kCountChunk + 1, config.timeline),
@@ -63,12 +62,18 @@ std::uint64_t WavefrontIntegrator::device_bytes() const {
   return queues_.bytes() + resolver_.bytes();
 }
 
-void WavefrontIntegrator::render(const PixelRect& rect, PixelStore& store, std::uint64_t first) {
+std::uint32_t WavefrontIntegrator::pixels_per_wave(std::uint32_t samples) const {
+  return std::max<std::uint32_t>(1, wave_rays_ / samples);
+}
+
+void WavefrontIntegrator::render(const PixelRect& rect, RoundOutput& output, std::uint64_t first) {
   const std::uint64_t total = rect.pixel_count();
+  const std::uint32_t samples = output.round().count;
   std::uint64_t done = 0;
   while (done < total) {
-    const auto n = static_cast<std::uint32_t>(std::min<std::uint64_t>(wave_pixels_, total - done));
-    if (render_wave(rect, static_cast<std::uint32_t>(done), n, store, first + done)) {
+    const auto n = static_cast<std::uint32_t>(
+        std::min<std::uint64_t>(pixels_per_wave(samples), total - done));
+    if (render_wave(rect, static_cast<std::uint32_t>(done), n, output, first + done)) {
       done += n;
       continue;
     }
@@ -76,18 +81,19 @@ void WavefrontIntegrator::render(const PixelRect& rect, PixelStore& store, std::
       throw DeviceError("the ray tree of one pixel does not fit in a queue of " +
                         std::to_string(queues_.capacity()) +
                         " rays: raise --wavefront or lower the maximum depth");
-    wave_pixels_ = std::max<std::uint32_t>(1, n / 2);
+    wave_rays_ = std::max<std::uint32_t>(1, n / 2) * samples;
     ++counted_.wave_restarts;
   }
 }
 
 bool WavefrontIntegrator::render_wave(const PixelRect& rect, std::uint32_t first,
-                                      std::uint32_t pixel_count, PixelStore& store,
+                                      std::uint32_t pixel_count, RoundOutput& output,
                                       std::uint64_t stored_at) {
   const std::size_t mark = profiler_.wave_mark();
-  const std::uint32_t samples = pixel_count * samples_per_pixel_;
+  const SampleRound& round = output.round();
+  const std::uint32_t samples = pixel_count * round.count;
   resolver_.clear(samples);
-  const WaveArgs wave{rect.x, rect.y, rect.width, first, samples};
+  const WaveArgs wave{rect.x, rect.y, rect.width, first, round.first, round.count, samples};
   launcher_.launch(generate_, {frame_.camera, wave, queues_.rays}, samples, 0);
 
   std::vector<PassStats> passes;
@@ -116,7 +122,7 @@ bool WavefrontIntegrator::render_wave(const PixelRect& rect, std::uint32_t first
     counted_.passes[p].max_queue = std::max(counted_.passes[p].max_queue, passes[p].max_queue);
   }
   ++counted_.waves;
-  resolver_.resolve(launcher_, samples_per_pixel_, pixel_count, store, stored_at);
+  resolver_.resolve(launcher_, output, pixel_count, stored_at);
   profiler_.settle();
   return true;
 }

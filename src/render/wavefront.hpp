@@ -21,15 +21,15 @@ class WavefrontIntegrator final : public Integrator {
   WavefrontIntegrator(DeviceContext& device, const compute::program& program,
                       const DeviceFrame& frame, const IntegratorConfig& config);
 
-  void render(const PixelRect& rect, PixelStore& store, std::uint64_t first) override;
-  std::uint32_t pixels_per_wave() const override { return wave_pixels_; }
+  void render(const PixelRect& rect, RoundOutput& output, std::uint64_t first) override;
+  std::uint32_t pixels_per_wave(std::uint32_t samples) const override;
   void harvest(RenderStats& stats) override;
   std::uint64_t device_bytes() const override;
 
  private:
   // False when a pass spawned more rays than a queue holds: the caller retries with fewer pixels.
   bool render_wave(const PixelRect& rect, std::uint32_t first, std::uint32_t pixel_count,
-                   PixelStore& store, std::uint64_t stored_at);
+                   RoundOutput& output, std::uint64_t stored_at);
   void run_pass(std::uint32_t pass, std::uint32_t count);
   void shade_chunk(std::uint32_t pass, std::uint32_t first, std::uint32_t count);
   void shade_by_class(std::uint32_t pass, std::uint32_t first, std::uint32_t count);
@@ -40,9 +40,8 @@ class WavefrontIntegrator final : public Integrator {
 
   DeviceContext& device_;
   const DeviceFrame& frame_;
-  std::uint32_t samples_per_pixel_;
-  std::uint32_t wave_pixels_;  // halved after an overflow
   WaveQueues queues_;
+  std::uint32_t wave_rays_;  // camera rays per wave, halved after an overflow
   WaveResolver resolver_;
   Launcher launcher_;
   Profiler profiler_;

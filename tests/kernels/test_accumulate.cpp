@@ -187,7 +187,7 @@ TEST_CASE("resolve is the mean of each pixel's samples", "[accumulate]") {
     for (std::uint32_t i = 0; i < pixels * samples; ++i) sample_colour.push_back(random_colour(rng));
     ResolveArgs args;
     args.sample_colour = test::upload(sample_colour);
-    args.samples = samples;
+    args.samples = args.total_samples = samples;
     args.pixel_count = pixels;
     args.pixels = test::allocate<dev::f4>(pixels);
     test::run(test::renderer_program(), args, pixels);
@@ -201,6 +201,55 @@ TEST_CASE("resolve is the mean of each pixel's samples", "[accumulate]") {
       CHECK(result[p].y == Approx(mean.y).epsilon(1e-6));
       CHECK(result[p].z == Approx(mean.z).epsilon(1e-6));
       if (samples == 1) CHECK(same_rgb(result[p], sample_colour[p]));
+    }
+  }
+}
+
+// A pixel's samples resolved in rounds (src/render/sample_rounds.hpp): each round adds its
+// samples to the sums the previous one left, the last divides, and the result has the bits of
+// one resolve over all samples.
+std::vector<dev::f4> resolve_in_rounds(const std::vector<dev::f4>& sample_colour,
+                                       std::uint32_t pixels, std::uint32_t samples,
+                                       const std::vector<std::uint32_t>& round_sizes) {
+  std::vector<dev::f4> sums(pixels);
+  std::uint32_t first = 0;
+  for (std::uint32_t count : round_sizes) {
+    std::vector<dev::f4> round_colour;  // the wave's layout: pixel by pixel, count samples each
+    for (std::uint32_t p = 0; p < pixels; ++p)
+      for (std::uint32_t k = 0; k < count; ++k) round_colour.push_back(sample_colour[p * samples + first + k]);
+    ResolveArgs args;
+    args.sample_colour = test::upload(round_colour);
+    args.samples = count;
+    args.first_sample = first;
+    args.total_samples = samples;
+    args.pixel_count = pixels;
+    args.pixels = test::upload(sums);
+    test::run(test::renderer_program(), args, pixels);
+    sums = test::download(args.pixels, pixels);
+    first += count;
+  }
+  return sums;
+}
+
+TEST_CASE("resolve in rounds of samples gives the bits of one resolve", "[accumulate]") {
+  std::mt19937 rng(8);
+  const std::uint32_t pixels = 70, samples = 7;
+  std::vector<dev::f4> sample_colour;
+  for (std::uint32_t i = 0; i < pixels * samples; ++i) sample_colour.push_back(random_colour(rng));
+  const std::vector<dev::f4> whole = resolve_in_rounds(sample_colour, pixels, samples, {7});
+  for (const std::vector<std::uint32_t>& rounds :
+       {std::vector<std::uint32_t>{1, 1, 1, 1, 1, 1, 1}, {3, 4}, {2, 2, 2, 1}, {6, 1}}) {
+    const std::vector<dev::f4> split = resolve_in_rounds(sample_colour, pixels, samples, rounds);
+    for (std::uint32_t p = 0; p < pixels; ++p) {
+      INFO("rounds of " << rounds.size() << ", pixel " << p);
+      CHECK(same_rgb(split[p], whole[p]));
+    }
+  }
+  SECTION("the sums between rounds are the samples' sums in order") {
+    std::vector<dev::f4> half = resolve_in_rounds(sample_colour, pixels, samples, {3});
+    for (std::uint32_t p = 0; p < pixels; ++p) {
+      const dev::f4* s = &sample_colour[p * samples];
+      CHECK(same_rgb(half[p], s[0] + s[1] + s[2]));
     }
   }
 }

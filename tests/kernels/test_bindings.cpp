@@ -52,8 +52,8 @@ __kernel void resolve(__global const float4* sample_colour, __global const uint*
 const char* const kRenamedGenerate = R"CL(
 #include "render/common.h"
 __kernel void generate(__global const Camera* camera, uint region_x, uint region_y,
-                       uint region_width, uint first, uint sample_count,
-                       __global const Ray* rays) {}
+                       uint region_width, uint first, uint first_sample,
+                       uint pixel_samples, uint sample_count, __global const Ray* rays) {}
 )CL";
 
 }  // namespace
@@ -91,7 +91,7 @@ TEST_CASE("swapped kernel arguments are reported by name", "[bindings]") {
 TEST_CASE("wrong types, constness and counts are reported", "[bindings]") {
   const std::string report = joined(mismatches<ResolveArgs>(test::test_program(kWrongResolve)));
   INFO(report);
-  CHECK(report.find("the kernel takes 3 arguments, the host structure has 4") != std::string::npos);
+  CHECK(report.find("the kernel takes 3 arguments, the host structure has 6") != std::string::npos);
   CHECK(report.find("'samples' has type uint*, the host binds uint") != std::string::npos);
   CHECK(report.find("'samples': the host binds a value") != std::string::npos);
 

@@ -49,11 +49,15 @@ Vec3 camera_direction(const dev::Camera& cam, double x, double y) {
   return normalize(vec_of(cam.corner) + vec_of(cam.pixel_dx) * x + vec_of(cam.pixel_dy) * y);
 }
 
+// Samples [first_sample, first_sample + pixel_samples) of each pixel from first_pixel on; all
+// of each pixel's samples unless told.
 std::vector<dev::Ray> generate(const dev::Camera& camera, std::uint32_t first_pixel,
-                               std::uint32_t sample_count) {
+                               std::uint32_t sample_count, std::uint32_t first_sample = 0,
+                               std::uint32_t pixel_samples = 0) {
   GenerateArgs args;
   args.camera = test::upload(std::vector<dev::Camera>{camera});
-  args.wave = {0, 0, camera.width, first_pixel, sample_count};
+  args.wave = {0,           0, camera.width, first_pixel, first_sample,
+               pixel_samples ? pixel_samples : camera.samples, sample_count};
   args.rays = test::allocate<dev::Ray>(sample_count);
   test::run(test::renderer_program(), args, sample_count);
   return test::download(args.rays, sample_count);
@@ -201,6 +205,19 @@ TEST_CASE("generate: jitter depends only on pixel, sample and seed", "[generate]
       CHECK(test::same_bits(part[i].dir, whole[first * spp + i].dir));
       CHECK(part[i].path == whole[first * spp + i].path);
     }
+  }
+  SECTION("a round of each pixel's samples gets those samples' rays") {
+    const std::uint32_t first_sample = 1, round = 2;  // samples 1 and 2 of 0..3
+    const std::vector<dev::Ray> part = generate(cam, 0, pixels * round, first_sample, round);
+    for (std::uint32_t p = 0; p < pixels; ++p)
+      for (std::uint32_t k = 0; k < round; ++k) {
+        INFO("pixel " << p << ", sample " << first_sample + k);
+        const dev::Ray& r = part[p * round + k];
+        const dev::Ray& w = whole[p * spp + first_sample + k];
+        CHECK(r.sample == p * round + k);  // its place in the wave
+        CHECK(test::same_bits(r.dir, w.dir));
+        CHECK(r.path == w.path);
+      }
   }
   SECTION("a second launch repeats every bit") {
     const std::vector<dev::Ray> again = generate(cam, 0, pixels * spp);

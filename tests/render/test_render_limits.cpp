@@ -143,7 +143,7 @@ TEST_CASE("queue sizes are computed in 64 bits", "[limits]") {
   CHECK(s.capacity == 16384);
   CHECK(s.shade_chunk == 1);  // one ray's shadow slots fill a queue's worth
   CHECK(s.shadow_slots == 65536);
-  CHECK(s.wave_pixels == 4096);
+  CHECK(s.wave_pixels == 16384);  // a round of one sample per pixel
   const WaveSizes big = wave_sizes(1u << 26, 1, std::uint64_t{1} << 20);
   CHECK(WaveQueues::buffers(big).front().bytes == (std::uint64_t{1} << 26) * 64);  // 4 GiB, no wrap
 }

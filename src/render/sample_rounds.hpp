@@ -1,0 +1,46 @@
+// A render takes each pixel's samples in rounds over its whole region: round r takes samples
+// [first, first + count) of every pixel, so a path-traced picture fills in as it converges and
+// the progress display can count samples per pixel. Between rounds each pixel's running sum is
+// kept on the host (16 bytes a pixel); kernels/accumulate.cl's resolve adds the next round's
+// samples to it in sample order, so the split into rounds never changes a bit of the image.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "render/pixel_store.hpp"
+
+namespace clrt {
+
+struct SampleRound {
+  std::uint32_t first = 0, count = 0;
+  std::uint32_t total = 0;  // samples per pixel of the render
+  bool last() const { return first + count == total; }
+};
+
+// At most kMaxSampleRounds rounds, each of at least enough camera rays to keep
+// `rays_in_flight` (every lane's wavefront) busy several times over, so that the wait for a
+// round's last wave stays small; a render of one sample per pixel is one round.
+constexpr std::uint32_t kMaxSampleRounds = 64;
+std::vector<SampleRound> sample_rounds(std::uint32_t samples, std::uint64_t region_pixels,
+                                       std::uint64_t rays_in_flight);
+
+// Where one round's resolved pixels go: the running sums until the last round, then the store.
+// Lanes write disjoint runs of pixels, so no lock is needed.
+class RoundOutput {
+ public:
+  RoundOutput(const SampleRound& round, std::vector<dev::f4>& sums, PixelStore& store)
+      : round_(round), sums_(sums), store_(store) {}
+
+  const SampleRound& round() const { return round_; }
+  // The sums of the samples before this round for pixels [first, ...); not for the first round.
+  const dev::f4* sums_before(std::uint64_t first) const { return sums_.data() + first; }
+  void take(std::uint64_t first, std::uint32_t count, const dev::f4* pixels);
+
+ private:
+  SampleRound round_;
+  std::vector<dev::f4>& sums_;
+  PixelStore& store_;
+};
+
+}  // namespace clrt
