@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "uv_sphere.hpp"
+
 namespace clrt::bvhtest {
 namespace {
 
@@ -49,24 +51,11 @@ MeshData triangle_mesh_with_normals(const Vec3& n0, const Vec3& n1, const Vec3& 
 }
 
 MeshData ball_mesh(int rings, int segments, bool with_normals) {
+  scenes::TriangleMesh ball = scenes::uv_sphere(rings, segments);
   MeshData mesh;
   mesh.path = "ball";
-  for (int r = 0; r <= rings; ++r) {
-    const double theta = M_PI * r / rings;
-    for (int s = 0; s < segments; ++s) {
-      const double phi = 2 * M_PI * s / segments;
-      mesh.positions.push_back({std::sin(theta) * std::cos(phi), std::cos(theta),
-                                std::sin(theta) * std::sin(phi)});
-    }
-  }
-  const auto vertex = [&](int r, int s) { return static_cast<std::uint32_t>(r * segments + s % segments); };
-  for (int r = 0; r < rings; ++r)
-    for (int s = 0; s < segments; ++s) {
-      // Counter-clockwise seen from outside.
-      for (std::uint32_t v : {vertex(r, s), vertex(r, s + 1), vertex(r + 1, s), vertex(r, s + 1),
-                              vertex(r + 1, s + 1), vertex(r + 1, s)})
-        mesh.corners.push_back(v);
-    }
+  mesh.positions = std::move(ball.positions);
+  mesh.corners = std::move(ball.corners);
   if (with_normals) {
     mesh.normals = mesh.positions;
     mesh.corner_normals = mesh.corners;

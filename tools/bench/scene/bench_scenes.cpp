@@ -3,29 +3,22 @@
 #include <cmath>
 #include <random>
 
+#include "uv_sphere.hpp"
+
 namespace clrt::bench {
 namespace {
 
-// A displaced UV sphere: rings x segments quads, two triangles each.
+// A displaced UV sphere of about `triangles` triangles.
 MeshData lumpy_ball(int triangles) {
   const int segments = std::max(4, static_cast<int>(std::sqrt(triangles)));
   const int rings = std::max(2, triangles / (2 * segments));
+  scenes::TriangleMesh ball = scenes::uv_sphere(rings, segments, [](double theta, double phi) {
+    return 1 + 0.1 * std::sin(7 * theta) * std::cos(5 * phi);
+  });
   MeshData mesh;
   mesh.path = "lumpy-ball";
-  for (int r = 0; r <= rings; ++r) {
-    const double theta = M_PI * r / rings;
-    for (int s = 0; s < segments; ++s) {
-      const double phi = 2 * M_PI * s / segments;
-      const double radius = 1 + 0.1 * std::sin(7 * theta) * std::cos(5 * phi);
-      mesh.positions.push_back(Vec3{std::sin(theta) * std::cos(phi), std::cos(theta),
-                                    std::sin(theta) * std::sin(phi)} * radius);
-    }
-  }
-  const auto v = [&](int r, int s) { return static_cast<std::uint32_t>(r * segments + s % segments); };
-  for (int r = 0; r < rings; ++r)
-    for (int s = 0; s < segments; ++s)
-      for (std::uint32_t c : {v(r, s), v(r, s + 1), v(r + 1, s), v(r, s + 1), v(r + 1, s + 1), v(r + 1, s)})
-        mesh.corners.push_back(c);
+  mesh.positions = std::move(ball.positions);
+  mesh.corners = std::move(ball.corners);
   return mesh;
 }
 
