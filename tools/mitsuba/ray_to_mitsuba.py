@@ -172,10 +172,12 @@ class RayScene:
             self.planes.append((self.material, self.transform))
         elif name == "cube":
             numbers(0)
+            self.check_front()
             self.cubes.append((self.material, self.transform))
         elif name == "mesh":
             if len(args) != 1:
                 raise SceneError("`mesh` takes one path")
+            self.check_front()
             obj = os.path.join(os.path.dirname(self.path), args[0].strip('"'))
             try:
                 triangles = obj_mesh.read_triangles(obj)
@@ -195,6 +197,12 @@ class RayScene:
             self.add_light(args)
         else:
             raise SceneError(f"`{name}` is not supported by the Mitsuba comparison")
+
+    def check_front(self):
+        # clrt maps a mirrored object's normals by (M^-1)^T, keeping its front; Mitsuba takes a
+        # mesh's front from its winding in world space, which the mirror turns inside out.
+        if self.material.glass > 0 and np.linalg.det(self.transform[:3, :3]) < 0:
+            raise SceneError("a glass cube or mesh under a mirroring transform is inside out in Mitsuba")
 
     def materials(self):
         return [m for m, *_ in self.spheres] + [m for m, _ in self.triangles + self.planes + self.cubes]
