@@ -38,7 +38,7 @@ def read_triangles(path):
         with open(path, encoding="utf-8") as f:
             lines = f.read().splitlines()
     except OSError as e:
-        raise MeshError(f"cannot read {path}: {e.strerror}") from None
+        raise MeshError(f"{path}: {e.strerror}") from None
     for number, line in enumerate(lines, 1):
         words = line.split()
         if not words:

@@ -195,6 +195,9 @@ class RayScene:
             self.triangles.append((self.material, world))
         elif name == "light":
             self.add_light(args)
+        elif name in ("cylinder", "cone"):
+            raise SceneError(f"`{name}` has no exact Mitsuba shape (Mitsuba's cylinder has no caps, "
+                             "and it has no cone), so the Mitsuba comparison does not read it")
         else:
             raise SceneError(f"`{name}` is not supported by the Mitsuba comparison")
 
