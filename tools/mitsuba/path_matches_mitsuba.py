@@ -3,10 +3,10 @@
 
 The CTest check path_matches_mitsuba: renders each scene with `clrt --mode path` and with
 Mitsuba 3 (render_reference.py), each as independent sub-renders with their own seeds that
-estimates.py turns into a mean and its per-pixel variance, and compares them (compare.py). Each
-reference is rendered once and kept in DIR under a hash of everything that decides its pixels. Then the same
-comparison against the reference scaled by 1.03 must fail, or the sample counts are too low
-for the check to mean anything. Exit 0 when every scene matches, 1 when one does not, 77
+estimates.py turns into a mean and its per-pixel variance, and compares them (compare.py).
+Each reference is rendered once and kept in DIR under a hash of everything that decides its
+pixels. Then the same comparison against the reference scaled by 1.03 must fail, or the sample
+counts are too low for the check to mean anything. Exit 0 when every scene matches, 1 when one does not, 77
 (skipped) when the Mitsuba venv of tools/mitsuba/install.sh is absent.
 """
 import argparse
