@@ -114,6 +114,7 @@ class RayScene:
         self.resolution, self.samples, self.maxdepth = (500, 300), 1, 5
         self.material, self.transform = DEFAULT_MATERIAL, np.eye(4)
         self.spheres, self.triangles, self.lights, self.planes, self.cubes = [], [], [], [], []
+        self.cylinders = []
         with open(path, encoding="utf-8") as f:
             for number, line in enumerate(f, 1):
                 words = line.split("#", 1)[0].split()
@@ -195,9 +196,11 @@ class RayScene:
             self.triangles.append((self.material, world))
         elif name == "light":
             self.add_light(args)
-        elif name in ("cylinder", "cone"):
-            raise SceneError(f"`{name}` has no exact Mitsuba shape (Mitsuba's cylinder has no caps, "
-                             "and it has no cone), so the Mitsuba comparison does not read it")
+        elif name == "cylinder":
+            numbers(0)
+            self.cylinders.append((self.material, cylinder_placement(self.transform)))
+        elif name == "cone":
+            raise SceneError("`cone` has no Mitsuba shape, so the Mitsuba comparison does not read it")
         else:
             raise SceneError(f"`{name}` is not supported by the Mitsuba comparison")
 
@@ -208,7 +211,7 @@ class RayScene:
             raise SceneError("a glass cube or mesh under a mirroring transform is inside out in Mitsuba")
 
     def materials(self):
-        return [m for m, *_ in self.spheres] + [m for m, _ in self.triangles + self.planes + self.cubes]
+        return [m for m, *_ in self.spheres] + [m for m, _ in self.triangles + self.planes + self.cubes + self.cylinders]
 
     def extent(self):
         """The radius, about the eye, of a ball holding the scene's objects and lights."""
@@ -216,6 +219,7 @@ class RayScene:
         points += [t[:3, 3] for _, t in self.planes + self.cubes] + [v[:3] for k, _, v in self.lights if k != "directional"]
         reach = [np.linalg.norm(p - self.eye) for p in points] + [r for *_, r in self.spheres]
         reach += [np.linalg.norm(t[:3, :3], 2) * np.sqrt(3) for _, t in self.cubes]
+        reach += [np.linalg.norm(c[0] - self.eye) + np.linalg.norm(c[1] - c[0]) + c[2] for _, c in self.cylinders]
         return max(reach) or 1.0
 
     def add_sphere(self, centre, radius):
@@ -252,25 +256,55 @@ def rotation(degrees, axis):
     return m
 
 
+def cylinder_placement(placement):
+    """The ends and radius of clrt's cylinder (radius 1 about y, y in [-1, 1]) placed by
+    `placement`, which Mitsuba's cylinder can follow only without shear and with one radius."""
+    radial_x, axis, radial_z = (placement[:3, i] for i in range(3))
+    radius = np.linalg.norm(radial_x)
+    for u, v in ((radial_x, axis), (radial_z, axis), (radial_x, radial_z)):
+        if abs(u @ v) > 1e-9 * np.linalg.norm(u) * np.linalg.norm(v):
+            raise SceneError("a cylinder under a shear is not round, which the comparison does not read")
+    if not np.isclose(np.linalg.norm(radial_z), radius, rtol=1e-9):
+        raise SceneError("a cylinder scaled differently across its axis is elliptic, which the comparison does not read")
+    return placement[:3, 3] - axis, placement[:3, 3] + axis, radius
+
+
+def cylinder_shapes(material, ends):
+    """Mitsuba's `cylinder`, which has no caps, closed by two `disk`s facing outwards."""
+    bottom, top, radius = ends
+    axis = (top - bottom) / np.linalg.norm(top - bottom)
+    shapes = [{"type": "cylinder", "p0": bottom.tolist(), "p1": top.tolist(), "radius": radius,
+               "bsdf": mitsuba_bsdf(material)}]
+    for centre, normal in ((bottom, -axis), (top, axis)):
+        shapes.append({"type": "disk", "to_world": facing(normal, centre, radius), "bsdf": mitsuba_bsdf(material)})
+    return shapes
+
+
+def facing(normal, centre, size):
+    """The to_world taking Mitsuba's flat shapes (the unit disk or the square [-1, 1]^2 in z = 0,
+    facing +z) to `centre`, facing `normal` (unit), `size` times larger: a rotation and a
+    uniform scale, which Mitsuba inverts accurately in single precision."""
+    helper = np.eye(3)[np.argmin(np.abs(normal))]
+    u = np.cross(helper, normal)
+    u /= np.linalg.norm(u)
+    m = np.eye(4)
+    m[:3, 0], m[:3, 1], m[:3, 2], m[:3, 3] = size * u, size * np.cross(normal, u), size * normal, centre
+    return transform(m)
+
+
 def plane_rectangle(material, placement, eye, extent):
     """clrt's endless plane y = 0 (front +y) placed by `placement` as a wide square."""
     # The placed plane is the world plane through M 0 with normal (M^-1)^T (0, 1, 0). The square
-    # is built from that plane alone, with a rotation and a uniform scale: Mitsuba inverts
-    # to_world in single precision, and the placement times a scale of 1e5 along two axes only
-    # is too ill-conditioned for that (a tilted plane came out displaced, shadowing itself).
+    # is built from that plane alone: the placement times a huge scale along two axes only is
+    # too ill-conditioned for Mitsuba's single precision (a tilted plane came out displaced,
+    # shadowing itself).
     normal = np.linalg.inv(placement[:3, :3]).T @ [0.0, 1.0, 0.0]
     normal /= np.linalg.norm(normal)
     origin = placement[:3, 3]
     # Centred on the point of the plane nearest to the eye.
     foot = eye - ((eye - origin) @ normal) * normal
-    helper = np.eye(3)[np.argmin(np.abs(normal))]
-    u = np.cross(helper, normal)
-    u /= np.linalg.norm(u)
-    m = np.eye(4)
-    # Mitsuba's rectangle is [-1, 1]^2 in z = 0 facing +z.
-    m[:3, 0], m[:3, 1], m[:3, 2], m[:3, 3] = u, np.cross(normal, u), normal, foot
     return {"type": "rectangle", "bsdf": mitsuba_bsdf(material),
-            "to_world": transform(m @ np.diag([extent * PLANE_EXTENT] * 3 + [1.0]))}
+            "to_world": facing(normal, foot, extent * PLANE_EXTENT)}
 
 
 def transform(matrix):
@@ -352,6 +386,9 @@ def to_mitsuba(scene, spp=None, resolution=None, seed=0):
     for i, (material, placement) in enumerate(scene.cubes):
         # Both are the box [-1, 1]^3, its faces flat, with the outside as the front.
         d[f"cube_{i}"] = {"type": "cube", "to_world": transform(placement), "bsdf": mitsuba_bsdf(material)}
+    for i, (material, ends) in enumerate(scene.cylinders):
+        for j, shape in enumerate(cylinder_shapes(material, ends)):
+            d[f"cylinder_{i}_{j}"] = shape
     groups = {}
     for material, corners in scene.triangles:
         groups.setdefault(id(material), (material, []))[1].append(corners)
