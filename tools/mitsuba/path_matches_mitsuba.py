@@ -2,10 +2,11 @@
 """path_matches_mitsuba.py --clrt CLRT --venv VENV --cache DIR --work DIR SCENE.ray...
 
 The CTest check path_matches_mitsuba: renders each scene with `clrt --mode path` and with
-Mitsuba 3 (render_reference.py) and compares them (compare.py). Each reference is rendered
-once and kept in DIR under a hash of everything that decides its pixels. Then the same
-comparison against the reference scaled by 1.03 must fail, or the sample counts are too low
-for the check to mean anything. Exit 0 when every scene matches, 1 when one does not, 77
+Mitsuba 3 (render_reference.py), each as independent sub-renders with their own seeds that
+estimates.py turns into a mean and its per-pixel variance, and compares them (compare.py).
+Each reference is rendered once and kept in DIR under a hash of everything that decides its
+pixels. Then the same comparison against the reference scaled by 1.03 must fail, or the sample
+counts are too low for the check to mean anything. Exit 0 when every scene matches, 1 when one does not, 77
 (skipped) when the Mitsuba venv of tools/mitsuba/install.sh is absent.
 """
 import argparse
@@ -26,20 +27,31 @@ def run(command, **kwargs):
     return subprocess.run(command, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, **kwargs)
 
 
+def meshes(scene):
+    """The OBJ files `scene` names, whose triangles decide its pixels as much as the scene."""
+    with open(scene, encoding="utf-8") as f:
+        words = [line.split("#", 1)[0].split() for line in f]
+    return [os.path.join(os.path.dirname(scene), w[1].strip('"')) for w in words
+            if len(w) == 2 and w[0].lower() == "mesh"]
+
+
 def reference(python, scene, args, mitsuba_version):
     """The cached Mitsuba render of `scene`, rendered first if no cache entry matches."""
     key = hashlib.sha256()
-    for path in (scene, os.path.join(HERE, "ray_to_mitsuba.py"), os.path.join(HERE, "render_reference.py")):
+    code = [os.path.join(HERE, f"{name}.py") for name in ("ray_to_mitsuba", "obj_mesh", "lobes", "render_reference",
+                                                           "estimates")]
+    for path in [scene] + meshes(scene) + code:
         with open(path, "rb") as f:
             key.update(f.read())
-    key.update(f"{mitsuba_version} {args.reference_spp} {args.reference_seed}".encode())
+    key.update(f"{mitsuba_version} {args.reference_spp} {args.splits} {args.reference_seed}".encode())
     name = os.path.splitext(os.path.basename(scene))[0]
     out = os.path.join(args.cache, f"{name}-{key.hexdigest()[:16]}.exr")
     if not os.path.exists(out):
         # A hidden name, so that the clean-up of older references below cannot match it.
         partial = os.path.join(args.cache, f".{name}-{os.getpid()}.exr")
         done = run([python, os.path.join(HERE, "render_reference.py"), scene, partial,
-                    "--spp", str(args.reference_spp), "--seed", str(args.reference_seed)])
+                    "--spp", str(args.reference_spp), "--splits", str(args.splits),
+                    "--seed", str(args.reference_seed)])
         print(done.stdout, end="")
         if done.returncode != 0:
             raise RuntimeError(f"the Mitsuba reference of {scene} failed")
@@ -51,6 +63,26 @@ def reference(python, scene, args, mitsuba_version):
     return out
 
 
+def clrt_estimate(python, scene, name, args):
+    """clrt's estimate of `scene` from `splits` sub-renders, or None (having said why)."""
+    subs = []
+    for k in range(1, args.splits + 1):
+        subs.append(os.path.join(args.work, f"{name}-{k}.exr"))
+        done = run([args.clrt, "--mode", "path", "--spp", str(args.spp // args.splits), "--seed", str(k),
+                    "--exr-pixel", "float", "-q", "-o", subs[-1], scene])
+        if done.returncode != 0:
+            print(done.stdout, end="")
+            print(f"FAIL clrt --mode path exited with {done.returncode}")
+            return None
+    out = os.path.join(args.work, f"{name}.exr")
+    done = run([python, os.path.join(HERE, "estimates.py"), out] + subs)
+    if done.returncode != 0:
+        print(done.stdout, end="")
+        print("FAIL estimates.py could not combine clrt's sub-renders")
+        return None
+    return out
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--clrt", required=True)
@@ -59,6 +91,8 @@ def main():
     parser.add_argument("--work", required=True, help="folder for clrt's renders")
     parser.add_argument("--spp", type=int, default=256, help="clrt's samples per pixel (default 256)")
     parser.add_argument("--reference-spp", type=int, default=512, help="Mitsuba's (default 512)")
+    parser.add_argument("--splits", type=int, default=8,
+                        help="independent sub-renders of each image, for its per-pixel variance (default 8)")
     parser.add_argument("--reference-seed", type=int, default=7)
     parser.add_argument("scenes", nargs="+")
     args = parser.parse_args()
@@ -81,16 +115,12 @@ def main():
             print(f"FAIL {e}")
             failed.append(name)
             continue
-        image = os.path.join(args.work, f"{name}.exr")
         start = time.perf_counter()
-        done = run([args.clrt, "--mode", "path", "--spp", str(args.spp), "--seed", "1", "--exr-pixel", "float",
-                    "-o", image, scene])
-        if done.returncode != 0:
-            print(done.stdout, end="")
-            print(f"FAIL clrt --mode path exited with {done.returncode}")
+        image = clrt_estimate(python, scene, name, args)
+        if image is None:
             failed.append(name)
             continue
-        print(f"clrt --mode path, {args.spp} spp: {time.perf_counter() - start:.1f} s")
+        print(f"clrt --mode path, {args.splits} x {args.spp // args.splits} spp: {time.perf_counter() - start:.1f} s")
         compare = [python, os.path.join(HERE, "compare.py"), image, ref]
         same = run(compare)
         print(same.stdout, end="")

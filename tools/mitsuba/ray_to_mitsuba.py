@@ -9,9 +9,13 @@ against a Mitsuba scene that quietly differs from it. Run with the Mitsuba venv'
 (tools/mitsuba/install.sh); it prints the scene dictionary it built, for a look at the mapping.
 """
 import argparse
+import os
 import sys
 
 import numpy as np
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import obj_mesh  # noqa: E402
 
 # clrt's `maxdepth` counts bounces after the camera ray and still takes next-event estimation
 # at the last vertex, so a path of D bounces carries light over D + 2 segments (camera to the
@@ -19,6 +23,12 @@ import numpy as np
 # only emitters seen directly, 2 is direct lighting. docs/path-tracing.md says how this was
 # checked.
 DEPTH_OFFSET = 2
+
+# Mitsuba has no endless plane: a `plane` becomes a square this many times wider than the
+# scene's extent (its objects, lights and eye), centred under the eye. From inside the scene,
+# the strip of sky it leaves below the horizon is under 1e-3 radians high. Wider squares meet
+# Mitsuba's single precision: at 1e4 a tilted floor shadowed itself.
+PLANE_EXTENT = 1e3
 
 # The two faces of an area light are separate one-sided rectangles; each is pushed this far
 # (relative to the light's size) along its own normal, so that a ray from either side meets
@@ -103,7 +113,8 @@ class RayScene:
         self.fov, self.background = 60.0, np.zeros(3)
         self.resolution, self.samples, self.maxdepth = (500, 300), 1, 5
         self.material, self.transform = DEFAULT_MATERIAL, np.eye(4)
-        self.spheres, self.triangles, self.lights = [], [], []
+        self.spheres, self.triangles, self.lights, self.planes, self.cubes = [], [], [], [], []
+        self.cylinders = []
         with open(path, encoding="utf-8") as f:
             for number, line in enumerate(f, 1):
                 words = line.split("#", 1)[0].split()
@@ -152,6 +163,30 @@ class RayScene:
         elif name == "scale":
             m = np.diag(numbers(3) + [1.0])
             self.transform = m @ self.transform
+        elif name == "rotate":
+            v = numbers(4)
+            self.transform = rotation(v[0], np.array(v[1:])) @ self.transform
+        elif name in ("rotatex", "rotatey", "rotatez"):
+            self.transform = rotation(numbers(1)[0], np.eye(3)["xyz".index(name[-1])]) @ self.transform
+        elif name == "plane":
+            numbers(0)
+            self.planes.append((self.material, self.transform))
+        elif name == "cube":
+            numbers(0)
+            self.check_front()
+            self.cubes.append((self.material, self.transform))
+        elif name == "mesh":
+            if len(args) != 1:
+                raise SceneError("`mesh` takes one path")
+            self.check_front()
+            obj = os.path.join(os.path.dirname(self.path), args[0].strip('"'))
+            try:
+                triangles = obj_mesh.read_triangles(obj)
+            except obj_mesh.MeshError as e:
+                raise SceneError(f"bad mesh file {e}") from None
+            for corners in triangles:
+                world = (self.transform @ np.c_[corners, np.ones(3)].T).T[:, :3]
+                self.triangles.append((self.material, world))
         elif name == "sphere":
             v = numbers(0, 4) or [0.0, 0.0, 0.0, 1.0]
             self.add_sphere(np.array(v[:3]), v[3])
@@ -161,11 +196,31 @@ class RayScene:
             self.triangles.append((self.material, world))
         elif name == "light":
             self.add_light(args)
+        elif name == "cylinder":
+            numbers(0)
+            self.cylinders.append((self.material, cylinder_placement(self.transform)))
+        elif name == "cone":
+            raise SceneError("`cone` has no Mitsuba shape, so the Mitsuba comparison does not read it")
         else:
             raise SceneError(f"`{name}` is not supported by the Mitsuba comparison")
 
+    def check_front(self):
+        # clrt maps a mirrored object's normals by (M^-1)^T, keeping its front; Mitsuba takes a
+        # mesh's front from its winding in world space, which the mirror turns inside out.
+        if self.material.glass > 0 and np.linalg.det(self.transform[:3, :3]) < 0:
+            raise SceneError("a glass cube or mesh under a mirroring transform is inside out in Mitsuba")
+
     def materials(self):
-        return [m for m, *_ in self.spheres] + [m for m, _ in self.triangles]
+        return [m for m, *_ in self.spheres] + [m for m, _ in self.triangles + self.planes + self.cubes + self.cylinders]
+
+    def extent(self):
+        """The radius, about the eye, of a ball holding the scene's objects and lights."""
+        points = [self.eye] + [c for _, c, _ in self.spheres] + [p for _, t in self.triangles for p in t]
+        points += [t[:3, 3] for _, t in self.planes + self.cubes] + [v[:3] for k, _, v in self.lights if k != "directional"]
+        reach = [np.linalg.norm(p - self.eye) for p in points] + [r for *_, r in self.spheres]
+        reach += [np.linalg.norm(t[:3, :3], 2) * np.sqrt(3) for _, t in self.cubes]
+        reach += [np.linalg.norm(c[0] - self.eye) + np.linalg.norm(c[1] - c[0]) + c[2] for _, c in self.cylinders]
+        return max(reach) or 1.0
 
     def add_sphere(self, centre, radius):
         linear = self.transform[:3, :3]
@@ -187,6 +242,69 @@ class RayScene:
             print(f"{self.path}: note: ambient lights are not used in path mode", file=sys.stderr)
             return
         self.lights.append((kind, color, np.array(v[:9])))
+
+
+def rotation(degrees, axis):
+    """The 4x4 matrix turning by `degrees` about `axis`, counter-clockwise (right-hand rule)."""
+    if not np.any(axis):
+        raise SceneError("the rotation axis must not be zero")
+    x, y, z = axis / np.linalg.norm(axis)
+    c, s = np.cos(np.radians(degrees)), np.sin(np.radians(degrees))
+    cross = np.array([[0, -z, y], [z, 0, -x], [-y, x, 0]])
+    m = np.eye(4)
+    m[:3, :3] = c * np.eye(3) + s * cross + (1 - c) * np.outer([x, y, z], [x, y, z])
+    return m
+
+
+def cylinder_placement(placement):
+    """The ends and radius of clrt's cylinder (radius 1 about y, y in [-1, 1]) placed by
+    `placement`, which Mitsuba's cylinder can follow only without shear and with one radius."""
+    radial_x, axis, radial_z = (placement[:3, i] for i in range(3))
+    radius = np.linalg.norm(radial_x)
+    for u, v in ((radial_x, axis), (radial_z, axis), (radial_x, radial_z)):
+        if abs(u @ v) > 1e-9 * np.linalg.norm(u) * np.linalg.norm(v):
+            raise SceneError("a cylinder under a shear is not round, which the comparison does not read")
+    if not np.isclose(np.linalg.norm(radial_z), radius, rtol=1e-9):
+        raise SceneError("a cylinder scaled differently across its axis is elliptic, which the comparison does not read")
+    return placement[:3, 3] - axis, placement[:3, 3] + axis, radius
+
+
+def cylinder_shapes(material, ends):
+    """Mitsuba's `cylinder`, which has no caps, closed by two `disk`s facing outwards."""
+    bottom, top, radius = ends
+    axis = (top - bottom) / np.linalg.norm(top - bottom)
+    shapes = [{"type": "cylinder", "p0": bottom.tolist(), "p1": top.tolist(), "radius": radius,
+               "bsdf": mitsuba_bsdf(material)}]
+    for centre, normal in ((bottom, -axis), (top, axis)):
+        shapes.append({"type": "disk", "to_world": facing(normal, centre, radius), "bsdf": mitsuba_bsdf(material)})
+    return shapes
+
+
+def facing(normal, centre, size):
+    """The to_world taking Mitsuba's flat shapes (the unit disk or the square [-1, 1]^2 in z = 0,
+    facing +z) to `centre`, facing `normal` (unit), `size` times larger: a rotation and a
+    uniform scale, which Mitsuba inverts accurately in single precision."""
+    helper = np.eye(3)[np.argmin(np.abs(normal))]
+    u = np.cross(helper, normal)
+    u /= np.linalg.norm(u)
+    m = np.eye(4)
+    m[:3, 0], m[:3, 1], m[:3, 2], m[:3, 3] = size * u, size * np.cross(normal, u), size * normal, centre
+    return transform(m)
+
+
+def plane_rectangle(material, placement, eye, extent):
+    """clrt's endless plane y = 0 (front +y) placed by `placement` as a wide square."""
+    # The placed plane is the world plane through M 0 with normal (M^-1)^T (0, 1, 0). The square
+    # is built from that plane alone: the placement times a huge scale along two axes only is
+    # too ill-conditioned for Mitsuba's single precision (a tilted plane came out displaced,
+    # shadowing itself).
+    normal = np.linalg.inv(placement[:3, :3]).T @ [0.0, 1.0, 0.0]
+    normal /= np.linalg.norm(normal)
+    origin = placement[:3, 3]
+    # Centred on the point of the plane nearest to the eye.
+    foot = eye - ((eye - origin) @ normal) * normal
+    return {"type": "rectangle", "bsdf": mitsuba_bsdf(material),
+            "to_world": facing(normal, foot, extent * PLANE_EXTENT)}
 
 
 def transform(matrix):
@@ -263,6 +381,14 @@ def to_mitsuba(scene, spp=None, resolution=None, seed=0):
     for i, (material, centre, radius) in enumerate(scene.spheres):
         d[f"sphere_{i}"] = {"type": "sphere", "center": centre.tolist(), "radius": radius,
                             "bsdf": mitsuba_bsdf(material)}
+    for i, (material, placement) in enumerate(scene.planes):
+        d[f"plane_{i}"] = plane_rectangle(material, placement, scene.eye, scene.extent())
+    for i, (material, placement) in enumerate(scene.cubes):
+        # Both are the box [-1, 1]^3, its faces flat, with the outside as the front.
+        d[f"cube_{i}"] = {"type": "cube", "to_world": transform(placement), "bsdf": mitsuba_bsdf(material)}
+    for i, (material, ends) in enumerate(scene.cylinders):
+        for j, shape in enumerate(cylinder_shapes(material, ends)):
+            d[f"cylinder_{i}_{j}"] = shape
     groups = {}
     for material, corners in scene.triangles:
         groups.setdefault(id(material), (material, []))[1].append(corners)

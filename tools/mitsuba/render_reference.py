@@ -1,16 +1,20 @@
 #!/usr/bin/env python3
-"""render_reference.py SCENE.ray OUT.exr [--spp N] [--seed S] [--resolution WxH]
+"""render_reference.py SCENE.ray OUT.exr [--spp N] [--splits K] [--seed S] [--resolution WxH]
 
-Renders a clrt `.ray` scene with Mitsuba 3 (converted by ray_to_mitsuba.py) into a 32-bit float
-EXR, the reference that `clrt --mode path` is compared with (compare.py). Run it with the
-python of the venv tools/mitsuba/install.sh makes.
+Renders a clrt `.ray` scene with Mitsuba 3 (converted by ray_to_mitsuba.py) as K sub-renders of
+N / K samples per pixel, each with its own seed, into an estimate (estimates.py: the mean and
+its variance, as a 32-bit float EXR), the reference that `clrt --mode path` is compared with
+(compare.py). Run it with the python of the venv tools/mitsuba/install.sh makes.
 """
 import argparse
 import os
 import sys
 import time
 
+import numpy as np
+
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import estimates  # noqa: E402
 import ray_to_mitsuba  # noqa: E402
 
 
@@ -19,6 +23,7 @@ def main():
     parser.add_argument("scene")
     parser.add_argument("out", help="an .exr file")
     parser.add_argument("--spp", type=int, help="samples per pixel (default: the scene's `samples`)")
+    parser.add_argument("--splits", type=int, default=8, help="independent sub-renders (default 8)")
     parser.add_argument("--seed", type=int, default=0)
     parser.add_argument("--resolution", help="WxH (default: the scene's `resolution`)")
     parser.add_argument("--variant", default="scalar_rgb",
@@ -31,15 +36,20 @@ def main():
     # Two threads: the machine's share. One is not an option: the Phong plugin's Python code
     # then waits forever for the interpreter lock the render holds.
     dr.set_thread_count(2)
+    if args.splits < 2:
+        sys.exit("render_reference.py: error: --splits must be 2 or more")
     try:
         scene = ray_to_mitsuba.RayScene(args.scene)
-        d = ray_to_mitsuba.to_mitsuba(scene, args.spp, ray_to_mitsuba.parse_resolution(args.resolution), args.seed)
+        spp = -(-(args.spp or scene.samples) // args.splits)
+        d = ray_to_mitsuba.to_mitsuba(scene, spp, ray_to_mitsuba.parse_resolution(args.resolution), args.seed)
     except ray_to_mitsuba.SceneError as e:
         sys.exit(str(e))
     start = time.perf_counter()
-    image = mi.render(mi.load_dict(d), seed=args.seed)
-    mi.Bitmap(image).write(args.out)
-    print(f"{args.out}: Mitsuba {mi.__version__} {args.variant}, {d['sensor']['sampler']['sample_count']} spp, "
+    loaded = mi.load_dict(d)
+    # Seeds far apart, so that no two references' sub-renders share one.
+    subs = [np.array(mi.render(loaded, seed=args.seed * 1000 + k), dtype=np.float64) for k in range(args.splits)]
+    estimates.write(args.out, *estimates.combine(subs))
+    print(f"{args.out}: Mitsuba {mi.__version__} {args.variant}, {args.splits} x {spp} spp, "
           f"{time.perf_counter() - start:.1f} s")
 
 
