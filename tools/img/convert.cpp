@@ -52,8 +52,8 @@ int convert(const ConvertOptions& options) {
   // A pattern's first name stands for all of them: they differ in the number alone.
   const ImageOutput output = output_argument(
       numbered ? frame_file_name(options.output, 1) : options.output, options.format);
-  const WriteOptions write_options{
-      exr_pixel_for(options.exr_pixel, holds_float32(options.input, input))};
+  const WriteOptions write_options =
+      write_options_for(options.exr_pixel, holds_float32(options.input, input));
   check_convert_memory(options, output, write_options.exr_pixel);
   AnyImage image = read_any_image(options.input);
   if (numbered) {

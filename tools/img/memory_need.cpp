@@ -18,19 +18,11 @@ std::uint64_t product(std::uint64_t a, std::uint64_t b) {
 // Bytes a pixel takes in memory: RGBA bytes, or RGB floats.
 std::uint64_t held_bytes_per_pixel(bool held_float) { return held_float ? 12 : 4; }
 
+// What the encoder holds whole: PNG its compressed bands, EXR its file (reserved at the raw
+// samples' size); FSF, PPM and PFM are written row by row.
 std::uint64_t encoded_bytes_per_pixel(ImageFormat format, ExrPixel exr_pixel) {
-  switch (format) {
-    case ImageFormat::Exr:
-      return exr_pixel == ExrPixel::Float ? 12 : 6;
-    case ImageFormat::Pfm:
-      return 12;
-    case ImageFormat::Fsf:
-    case ImageFormat::Png:
-      return 4;
-    case ImageFormat::Ppm:
-      break;
-  }
-  return 3;
+  if (format == ImageFormat::Exr) return exr_pixel == ExrPixel::Float ? 12 : 6;
+  return format == ImageFormat::Png ? 4 : 0;
 }
 
 }  // namespace
@@ -53,9 +45,9 @@ void MemoryNeed::add_read(const std::string& path, const ImageInfo& info) {
 
 void MemoryNeed::add_write(std::uint64_t pixels, std::uint64_t frames, bool held_float,
                            ImageFormat written, ExrPixel exr_pixel) {
-  const bool written_float = reads_as_float(written);
-  if (written_float != held_float)
-    add_pixels(pixels, frames, held_bytes_per_pixel(written_float));
+  // An 8-bit image is copied whole as floats for PFM and EXR; a float one is quantised a row at
+  // a time for the others.
+  if (!held_float && reads_as_float(written)) add_pixels(pixels, frames, held_bytes_per_pixel(true));
   add_pixels(pixels, frames, encoded_bytes_per_pixel(written, exr_pixel));
 }
 

@@ -18,9 +18,9 @@ class MemoryNeed {
   void add_pixels(std::uint64_t pixels, std::uint64_t frames, std::uint64_t bytes_per_pixel);
   // Reading `path`: the file itself, held while it is decoded, and its pixels decoded.
   void add_read(const std::string& path, const ImageInfo& info);
-  // Writing `pixels` of `frames` frames held in `held` (a float or an 8-bit image) as `written`:
-  // the image converted to the output's precision when it differs, and the encoded bytes,
-  // counted at the raw samples' size (what a compressed format reserves).
+  // Writing `pixels` of `frames` frames, held as floats or 8-bit, as `written`: a copy as
+  // floats for a float format, and what the encoder holds whole, counted at the raw samples'
+  // size.
   void add_write(std::uint64_t pixels, std::uint64_t frames, bool held_float,
                  ImageFormat written, ExrPixel exr_pixel);
   std::uint64_t bytes() const { return bytes_; }

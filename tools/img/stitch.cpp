@@ -68,7 +68,7 @@ int stitch(const StitchOptions& options) {
     tiles.push_back({options.tiles[i], read_any_image(options.tiles[i])});
     float32 = float32 || holds_float32(options.tiles[i], formats[i]);
   }
-  const WriteOptions write_options{exr_pixel_for(options.exr_pixel, float32)};
+  const WriteOptions write_options = write_options_for(options.exr_pixel, float32);
   std::visit([&](const auto& image) { write_image(output, image, write_options); },
              stitch_tiles(tiles));
   return 0;
