@@ -16,6 +16,7 @@
 #include "device/device_select.hpp"
 #include "geometry/geometry_data.hpp"
 #include "image/fsf_animation.hpp"
+#include "cli/image_write_options.hpp"
 #include "cli/out_of_memory.hpp"
 #include "image/output_target.hpp"
 #include "render/frame_setup.hpp"
@@ -152,7 +153,8 @@ int render_frames(const CliOptions& cli, Scene& scene, const FramePlan& frames,
           if (animation)
             animation->add_frame(pixels);
           else if (!writes_nothing(output))
-            write_image(frame_output(output, frames, frame), pixels, {cli.exr_pixel});
+            write_image(frame_output(output, frames, frame), pixels,
+                        image_write_options(cli.exr_pixel, "clrt"));
         },
         image);
     stats.write_seconds += seconds_since(write_start);

@@ -18,6 +18,9 @@ void encode_png(const EightBitRows& rows, const PngEncoding& encoding, ByteSink&
 void check_png_encoding(const PngEncoding& encoding);
 void encode_ppm(const EightBitRows& rows, ByteSink& sink);  // frame 0
 void encode_pfm(const FloatImage& image, ByteSink& sink);
-void encode_exr(const FloatImage& image, ExrPixel pixel, ByteSink& sink);  // and the placement
+// Where an encoder says what its format could not hold (WriteOptions::warn).
+using Warn = std::function<void(const std::string&)>;
+void encode_exr(const FloatImage& image, ExrPixel pixel, const Warn& warn,
+                ByteSink& sink);  // and the placement
 
 }  // namespace clrt::image_detail

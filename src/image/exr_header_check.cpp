@@ -4,17 +4,13 @@
 #include <cstring>
 
 #include "image/image.hpp"
+#include "image/image_limits.hpp"
 
 namespace clrt::image_detail {
 namespace {
 
 // More lines than this share a chunk in no OpenEXR compression (DWAB: 256).
 constexpr std::int64_t kMostLinesPerChunk = 256;
-// As many pixels, and as long a side, as clrt renders at most (scene/limits.hpp), in any image
-// it reads: OpenEXR's decoders allocate whole chunks of lines (16 for ZIP), so a forged
-// 6-million-pixel line in a 389-byte file made it ask for 1.1 GB.
-constexpr std::int64_t kMostPixels = std::int64_t{1} << 28;
-constexpr std::int64_t kMostSide = 65536;
 // The version field's flags (OpenEXR's file layout): names of up to 255 bytes rather than 31,
 // and several parts, each with its header.
 constexpr std::uint32_t kLongNames = 0x400;
@@ -166,7 +162,9 @@ void check_part(const Part& part, std::size_t file_bytes, const std::string& pat
   if (part.x_sampling > part.width || part.y_sampling > part.height)
     throw ImageError(path + ": not a readable OpenEXR file: a channel's sampling does not fit its " +
                      std::to_string(part.width) + "x" + std::to_string(part.height) + " data window");
-  if (part.width > kMostSide || part.height > kMostSide || part.width * part.height > kMostPixels)
+  // OpenEXR's decoders allocate whole chunks of lines (16 for ZIP): a forged 6-million-pixel line
+  // in a 389-byte file made it ask for 1.1 GB.
+  if (!within_image_limits(part.width, part.height))
     throw ImageError(path + ": the OpenEXR data window of " + std::to_string(part.width) + "x" +
                      std::to_string(part.height) + " pixels is larger than clrt reads");
   const std::int64_t chunks =

@@ -9,6 +9,9 @@
 #include <OpenEXR/ImfOutputFile.h>
 
 #include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <string>
 #include <vector>
 
 #include "image/encoders.hpp"
@@ -37,23 +40,36 @@ Imf::FrameBuffer interleaved(Imf::PixelType type, const void* samples, std::size
   return frame_buffer;
 }
 
-void write_half_strips(Imf::OutputFile& file, const FloatImage& image, Imath::V2i origin) {
+// Returns how many finite samples became infinities: beyond 65504, the largest half (from
+// 65520 up, as rounding to nearest makes it).
+std::uint64_t write_half_strips(Imf::OutputFile& file, const FloatImage& image,
+                                Imath::V2i origin) {
   const std::size_t row_samples = 3 * static_cast<std::size_t>(image.width);
   std::vector<Imath::half> strip(row_samples * kStripRows);
+  std::uint64_t overflowed = 0;
   for (int y = 0; y < image.height; y += kStripRows) {
     const int rows = std::min(kStripRows, image.height - y);
     const float* in = image.rgb.data() + row_samples * static_cast<std::size_t>(y);
-    for (std::size_t i = 0; i < row_samples * static_cast<std::size_t>(rows); ++i)
+    for (std::size_t i = 0; i < row_samples * static_cast<std::size_t>(rows); ++i) {
       strip[i] = Imath::half(in[i]);
+      overflowed += strip[i].isInfinity() && std::isfinite(in[i]);
+    }
     file.setFrameBuffer(interleaved(Imf::HALF, strip.data(), sizeof(Imath::half),
                                     Imath::V2i(origin.x, origin.y + y), image.width, rows));
     file.writePixels(rows);
   }
+  return overflowed;
+}
+
+std::string overflow_warning(std::uint64_t overflowed, std::uint64_t samples) {
+  return std::to_string(overflowed) + " of the " + std::to_string(samples) +
+         " samples are beyond 65504, the largest half float, and are stored as infinity "
+         "(--exr-pixel float keeps them)";
 }
 
 }  // namespace
 
-void encode_exr(const FloatImage& image, ExrPixel pixel, ByteSink& sink) {
+void encode_exr(const FloatImage& image, ExrPixel pixel, const Warn& warn, ByteSink& sink) {
   const Placement placement = image.placement.value_or(Placement{0, 0, image.width, image.height});
   const Imath::Box2i data_window = window(placement.x, placement.y, image.width, image.height);
   Imf::Header header(window(0, 0, placement.full_width, placement.full_height), data_window);
@@ -65,11 +81,12 @@ void encode_exr(const FloatImage& image, ExrPixel pixel, ByteSink& sink) {
                           static_cast<std::size_t>(image.height) * (type == Imf::HALF ? 2 : 4);
   const std::size_t blocks = static_cast<std::size_t>(image.height / kStripRows + 1);
   MemoryOStream stream(raw + 16 * blocks + (std::size_t{1} << 16));
+  std::uint64_t overflowed = 0;
   try {
     // The file's destructor writes the offset table; in memory that cannot fail.
     Imf::OutputFile file(stream, header);
     if (type == Imf::HALF) {
-      write_half_strips(file, image, data_window.min);
+      overflowed = write_half_strips(file, image, data_window.min);
     } else {
       file.setFrameBuffer(interleaved(Imf::FLOAT, image.rgb.data(), sizeof(float),
                                       data_window.min, image.width, image.height));
@@ -79,6 +96,7 @@ void encode_exr(const FloatImage& image, ExrPixel pixel, ByteSink& sink) {
     throw ImageError(std::string("OpenEXR encoding failed: ") + error.what());
   }
   sink.write(stream.bytes().data(), stream.bytes().size());
+  if (overflowed && warn) warn(overflow_warning(overflowed, image.rgb.size()));
 }
 
 }  // namespace clrt::image_detail

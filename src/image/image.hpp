@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -87,6 +88,9 @@ struct WriteOptions {
 
   ExrPixel exr_pixel;
   PngEncoding png;  // a level outside 0-9 is an ImageError before anything is written
+  // Told, once per image, what its format could not hold ("out.exr: 12 of the 300 samples ...":
+  // finite values beyond a half float's range); nothing: not told.
+  std::function<void(const std::string&)> warn;
 };
 
 // Writes `image` in the format its extension names (PNG for a device or FIFO without one). PFM

@@ -10,16 +10,13 @@
 #include <new>
 
 #include "image/decoders.hpp"
+#include "image/image_limits.hpp"
 #include "image/input_file.hpp"
 #include "image/placement.hpp"
 #include "image/png_errors.hpp"
 
 namespace clrt {
 namespace {
-
-// As long a side and as many pixels as clrt renders (scene/limits.hpp), in any image it reads.
-constexpr png_uint_32 kMostSide = 65536;
-constexpr std::uint64_t kMostPixels = std::uint64_t{1} << 28;
 
 using image_detail::PngErrors;
 using image_detail::png_guarded;
@@ -108,7 +105,7 @@ class PngDecoder {
       png_set_crc_action(png, PNG_CRC_ERROR_QUIT, PNG_CRC_ERROR_QUIT);
       // The sides clrt renders: a forged IHDR in a file of a few bytes would otherwise have the
       // image allocated (and zeroed) at whatever size it names before any pixel is decoded.
-      png_set_user_limits(png, kMostSide, kMostSide);
+      png_set_user_limits(png, image_detail::kMostSide, image_detail::kMostSide);
       png_read_info(png, info);
       png_get_IHDR(png, info, &width_, &height_, &bit_depth_, &colour_type_, &interlace_, nullptr,
                    nullptr);
@@ -117,7 +114,7 @@ class PngDecoder {
       png_get_text(png, info, &texts, &text_count);
     });
     if (!ok) fail();
-    if (std::uint64_t{width_} * height_ > kMostPixels)
+    if (!image_detail::within_image_limits(width_, height_))
       throw ImageError(path_ + ": the PNG's " + std::to_string(width_) + "x" +
                        std::to_string(height_) + " pixels are more than clrt reads");
     for (int i = 0; i < text_count; ++i) {

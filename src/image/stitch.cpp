@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "image/image_checks.hpp"
+#include "image/image_limits.hpp"
 
 namespace clrt {
 namespace {
@@ -21,17 +22,14 @@ std::string rect_text(const Rect& r) {
          std::to_string(r.y0) + ", " + std::to_string(r.y1) + ")";
 }
 
-struct Frame {
-  int width = 0, height = 0;
-};
-
-template <typename Image>
-Placement placement_of(const Image& image) {
-  return image.placement.value_or(Placement{0, 0, image.width, image.height});
+Placement placement_of(const TileExtent& tile) {
+  return tile.placement.value_or(Placement{0, 0, tile.width, tile.height});
 }
 
-Placement placement_of(const AnyImage& image) {
-  return std::visit([](const auto& i) { return placement_of(i); }, image);
+TileExtent extent_of(const TileImage& tile) {
+  return std::visit(
+      [&](const auto& i) { return TileExtent{tile.name, i.width, i.height, i.placement}; },
+      tile.image);
 }
 
 void check_tile(const TileImage& tile) {
@@ -41,14 +39,12 @@ void check_tile(const TileImage& tile) {
                      std::to_string(rgba->frames.size()));
 }
 
-Rect rect_of(const AnyImage& image) {
-  const Placement p = placement_of(image);
-  const auto [width, height] =
-      std::visit([](const auto& i) { return std::pair{i.width, i.height}; }, image);
-  return {p.x, p.x + width, p.y, p.y + height};
+Rect rect_of(const TileExtent& tile) {
+  const Placement p = placement_of(tile);
+  return {p.x, p.x + tile.width, p.y, p.y + tile.height};
 }
 
-void check_overlaps(const std::vector<TileImage>& tiles, const std::vector<Rect>& rects) {
+void check_overlaps(const std::vector<TileExtent>& tiles, const std::vector<Rect>& rects) {
   for (std::size_t i = 0; i < rects.size(); ++i)
     for (std::size_t j = i + 1; j < rects.size(); ++j) {
       const Rect shared{std::max(rects[i].x0, rects[j].x0), std::min(rects[i].x1, rects[j].x1),
@@ -62,7 +58,7 @@ void check_overlaps(const std::vector<TileImage>& tiles, const std::vector<Rect>
 // Without overlaps, the tiles cover the frame exactly when their areas add up to it. Otherwise
 // the gaps are found on the grid of every tile edge: each cell of it is covered whole or not at
 // all, so the uncovered cells, merged along rows, are the gaps.
-void check_gaps(const std::vector<Rect>& rects, Frame frame) {
+void check_gaps(const std::vector<Rect>& rects, StitchedFrame frame) {
   std::int64_t covered = 0;
   for (const Rect& r : rects) covered += r.pixels();
   const std::int64_t all = std::int64_t{frame.width} * frame.height;
@@ -106,22 +102,36 @@ void check_gaps(const std::vector<Rect>& rects, Frame frame) {
                    " frame's pixels uncovered: " + listed);
 }
 
-Frame check_tiling(const std::vector<TileImage>& tiles, const std::vector<Rect>& rects) {
+}  // namespace
+
+StitchedFrame stitched_frame(const std::vector<TileExtent>& tiles) {
   if (tiles.empty()) throw ImageError("no tiles to stitch");
-  const Placement first = placement_of(tiles.front().image);
-  const Frame frame{first.full_width, first.full_height};
-  for (const TileImage& tile : tiles) {
-    const Placement p = placement_of(tile.image);
+  const Placement first = placement_of(tiles.front());
+  const StitchedFrame frame{first.full_width, first.full_height};
+  for (const TileExtent& tile : tiles) {
+    const Placement p = placement_of(tile);
     if (p.full_width != frame.width || p.full_height != frame.height)
       throw ImageError(tile.name + " belongs to a " + std::to_string(p.full_width) + "x" +
                        std::to_string(p.full_height) + " frame, " + tiles.front().name +
                        " to a " + std::to_string(frame.width) + "x" +
                        std::to_string(frame.height) + " one");
   }
+  // The frame would be written, and then refused by every reader of clrt's, itself included.
+  if (!image_detail::within_image_limits(frame.width, frame.height))
+    throw ImageError("the tiles belong to a " + std::to_string(frame.width) + "x" +
+                     std::to_string(frame.height) + " frame (" +
+                     std::to_string(std::int64_t{frame.width} * frame.height) +
+                     " pixels), beyond the " + std::to_string(image_detail::kMostSide) +
+                     " pixels a side and " + std::to_string(image_detail::kMostPixels) +
+                     " pixels clrt reads");
+  std::vector<Rect> rects;
+  for (const TileExtent& tile : tiles) rects.push_back(rect_of(tile));
   check_overlaps(tiles, rects);
   check_gaps(rects, frame);
   return frame;
 }
+
+namespace {
 
 // Rows of `channels` samples per pixel from the tile into the frame.
 template <typename Sample>
@@ -136,12 +146,14 @@ void copy_rows(const Sample* tile, const Rect& r, std::size_t channels, Sample* 
 }  // namespace
 
 AnyImage stitch_tiles(const std::vector<TileImage>& tiles) {
-  std::vector<Rect> rects;
+  std::vector<TileExtent> extents;
   for (const TileImage& tile : tiles) {
     check_tile(tile);
-    rects.push_back(rect_of(tile.image));
+    extents.push_back(extent_of(tile));
   }
-  const Frame frame = check_tiling(tiles, rects);
+  const StitchedFrame frame = stitched_frame(extents);
+  std::vector<Rect> rects;
+  for (const TileExtent& extent : extents) rects.push_back(rect_of(extent));
   const std::size_t pixels = static_cast<std::size_t>(frame.width) * frame.height;
   const bool all_8bit = std::all_of(tiles.begin(), tiles.end(), [](const TileImage& tile) {
     return std::holds_alternative<Rgba8Image>(tile.image);

@@ -28,16 +28,20 @@ void encode(ImageFormat format, const Image& image, const WriteOptions& options,
     case ImageFormat::Pfm:
       return image_detail::encode_pfm(as_float(image), sink);
     case ImageFormat::Exr:
-      return image_detail::encode_exr(as_float(image), options.exr_pixel, sink);
+      return image_detail::encode_exr(as_float(image), options.exr_pixel, options.warn, sink);
   }
 }
 
-// An encoder's error gets the output's name; a failing output's error already has it.
+// An encoder's error and warnings get the output's name; a failing output's error already has
+// it.
 template <typename Image>
 void encode_into(ByteSink& sink, const std::string& name, ImageFormat format, const Image& image,
                  const WriteOptions& options) {
+  WriteOptions named = options;
+  if (options.warn)
+    named.warn = [&](const std::string& message) { options.warn(name + ": " + message); };
   try {
-    encode(format, image, options, sink);
+    encode(format, image, named, sink);
   } catch (const image_detail::SinkError&) {
     throw;
   } catch (const ImageError& error) {

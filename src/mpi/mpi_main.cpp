@@ -9,6 +9,7 @@
 #include <optional>
 
 #include "cli/heap_policy.hpp"
+#include "cli/image_write_options.hpp"
 #include "cli/options.hpp"
 #include "cli/run_clrt.hpp"
 #include "image/interrupt_cleanup.hpp"
@@ -114,7 +115,8 @@ int run(const mpi::Session& session, const CliOptions& cli, const mpi::TileSize&
           if (region.pixel_count() != std::uint64_t(setup.options.width) * setup.options.height)
             pixels.placement = Placement{static_cast<int>(region.x), static_cast<int>(region.y),
                                          setup.options.width, setup.options.height};
-          if (!writes_nothing(output)) write_image(output, pixels, {cli.exr_pixel});
+          if (!writes_nothing(output))
+            write_image(output, pixels, image_write_options(cli.exr_pixel, "clrt-mpi"));
         },
         image);
   });

@@ -42,7 +42,7 @@ std::unique_ptr<FileBytes> MemoryFiles::open(const std::string& path, std::uint6
   const auto it = files_.find(path);
   if (it == files_.end()) throw InputFileError("it is not among the scene's files");
   if (it->second.size() > max_bytes)
-    throw InputFileError("it is larger than " + std::to_string(max_bytes >> 20) + " MiB");
+    throw InputFileError("it is larger than " + size_limit_text(max_bytes));
   return std::make_unique<BorrowedBytes>(it->second);
 }
 

@@ -7,8 +7,11 @@ void check_input_status(const struct stat& info, std::uint64_t max_bytes) {
   if (!S_ISREG(info.st_mode)) throw InputFileError("it is not a regular file");
   if (static_cast<std::uint64_t>(info.st_size) > max_bytes)
     throw InputFileError("it is " + std::to_string(info.st_size) +
-                         " bytes, more than the limit of " + std::to_string(max_bytes >> 20) +
-                         " MiB");
+                         " bytes, more than the limit of " + size_limit_text(max_bytes));
+}
+
+std::string size_limit_text(std::uint64_t max_bytes) {
+  return std::to_string(max_bytes >> 20) + " MiB";
 }
 
 std::string_view without_byte_order_mark(std::string_view text) {

@@ -26,6 +26,9 @@ class FileChangedError : public InputFileError {
 // /dev/zero, or a pipe) of at most `max_bytes`.
 void check_input_status(const struct stat& info, std::uint64_t max_bytes);
 
+// A file size limit as every message states it: "256 MiB".
+std::string size_limit_text(std::uint64_t max_bytes);
+
 // `text` without the UTF-8 byte order mark that some editors write at a file's start, which
 // would otherwise be three invisible bytes in front of the first word.
 std::string_view without_byte_order_mark(std::string_view text);

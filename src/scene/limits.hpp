@@ -10,10 +10,12 @@
 namespace clrt::limits {
 
 // Input files are read whole into memory. The largest scenes shipped are a few MiB of text (100k
-// spheres: 4 MiB) and a million-triangle OBJ is about 80 MiB. A mesh file stays below 2 GiB so
-// that every line and column number fits the int of a SourceLocation.
+// spheres: 4 MiB) and a million-triangle OBJ is about 80 MiB. A mesh file stays below 2^31 bytes
+// so that every line and column number fits the int of a SourceLocation. Both are whole MiB, the
+// unit every message and document states them in.
 constexpr std::uint64_t kMaxSceneFileBytes = std::uint64_t{256} << 20;
-constexpr std::uint64_t kMaxMeshFileBytes = INT32_MAX;
+constexpr std::uint64_t kMaxMeshFileBytes = std::uint64_t{2047} << 20;
+static_assert(kMaxMeshFileBytes <= INT32_MAX);
 
 // The longest .ray command (a triangle or material at full precision) is under 300 bytes, and a
 // quoted mesh path at most PATH_MAX (4096): a longer line is not a scene.

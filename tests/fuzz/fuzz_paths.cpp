@@ -1,7 +1,6 @@
 #include "fuzz_paths.hpp"
 
-#include <stdexcept>
-
+#include "fuzz_require.hpp"
 #include "geometry/geometry_data.hpp"
 #include "image/image.hpp"
 #include "render/frame_setup.hpp"
@@ -9,13 +8,6 @@
 #include "scene/scene.hpp"
 
 namespace clrt::fuzz {
-namespace {
-
-void require(bool promise, const char* what) {
-  if (!promise) throw std::logic_error(what);
-}
-
-}  // namespace
 
 Outcome ray_scene(const std::string& path) {
   Scene scene;

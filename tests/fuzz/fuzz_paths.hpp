@@ -18,5 +18,17 @@ Outcome ray_scene(const std::string& path);
 Outcome obj_mesh(const std::string& path);
 // An image through read_image(), which picks the reader by the path's extension.
 Outcome image(const std::string& path);
+// The next three write their files in input_dir().
+// A program cache entry: the file read through ProgramCache::load(), then the file's bytes
+// stored as a payload and loaded back whole, and not at all once cut short by a byte.
+Outcome program_cache_entry(const std::string& path);
+// Tiles for `clrt-img stitch`: each line of the file is a placement text ("X,Y WxH of FWxFH");
+// each tile is written as a PNG, its header read back, the frame checked from the headers, and
+// the tiles read and stitched; every pixel of the frame must be its tile's.
+Outcome stitch_tiles(const std::string& path);
+// A polygon for the NFF and OBJ triangulator: after a first byte that picks flat (even) or not,
+// every 2 bytes of the file a corner in the plane z = 0, or every 3 one anywhere. Accepted triangles index corners, have area and
+// face the polygon's way; for a simple planar polygon their areas add up to its own.
+Outcome polygon(const std::string& path);
 
 }  // namespace clrt::fuzz

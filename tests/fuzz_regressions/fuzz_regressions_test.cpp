@@ -30,7 +30,9 @@ std::set<fs::path> inputs_of(const std::string& target) {
 TEST_CASE("every fuzz target's folder of found inputs is one this test replays", "[fuzz]") {
   const std::set<std::string> replayed = {"fuzz_ray_scene", "fuzz_nff_scene", "fuzz_obj_mesh",
                                           "fuzz_image_fsf", "fuzz_image_ppm", "fuzz_image_png",
-                                          "fuzz_image_pfm", "fuzz_image_exr", "open"};
+                                          "fuzz_image_pfm", "fuzz_image_exr",
+                                          "fuzz_program_cache", "fuzz_stitch_tiles",
+                                          "fuzz_polygon", "open"};
   for (const auto& entry : fs::directory_iterator(kRegressions))
     if (entry.is_directory()) CHECK(replayed.count(entry.path().filename().string()) == 1);
 }
@@ -55,4 +57,22 @@ TEST_CASE("meshes and images the fuzzer found are rejected or read consistently"
       else
         CHECK_NOTHROW(clrt::fuzz::image(file.string()));
     }
+}
+
+TEST_CASE("cache entries, tiles and polygons, found or seeded, keep every promise", "[fuzz]") {
+  // Their seeds too: each seed is a case the path must accept (or refuse) as it says.
+  const std::pair<const char*, Outcome (*)(const std::string&)> targets[] = {
+      {"fuzz_program_cache", clrt::fuzz::program_cache_entry},
+      {"fuzz_stitch_tiles", clrt::fuzz::stitch_tiles},
+      {"fuzz_polygon", clrt::fuzz::polygon}};
+  const fs::path seeds = fs::path(CLRT_SOURCE_DIR) / "tests" / "fuzz" / "seeds";
+  for (const auto& [target, path] : targets) {
+    std::set<fs::path> files = inputs_of(target);
+    for (const auto& entry : fs::directory_iterator(seeds / target)) files.insert(entry.path());
+    for (const fs::path& file : files) {
+      INFO(file);
+      const Outcome expected = file.filename() == "overlap.txt" ? Outcome::Rejected : Outcome::Accepted;
+      CHECK(path(file.string()) == expected);
+    }
+  }
 }

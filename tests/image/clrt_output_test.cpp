@@ -5,6 +5,7 @@
 #include <sys/sysmacros.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <filesystem>
 #include <string>
@@ -72,6 +73,25 @@ TEST_CASE("clrt writes half EXR by default and float EXR with --exr-pixel float"
   clrt::write_image(reference, rendered);
   CHECK(read_bytes(half) == read_bytes(reference));
   CHECK(clrt::read_image_info(half).samples == "16-bit float (half)");
+}
+
+TEST_CASE("clrt warns once when a half EXR stores values beyond the largest half as infinity",
+          "[cli][output]") {
+  // A red background of 1e5: every pixel the sphere leaves uncovered overflows in R alone.
+  ScratchDir dir;
+  const std::string scene = dir.file("bright.ray"), half = dir.file("h.exr");
+  write_bytes(scene, bytes_of("eye 0 0 5\nlookat 0 0 0\nup 0 1 0\nfov 60\n"
+                              "background 100000 0 0\nsphere\nlight 1 1 1 ambient\n"));
+  const ToolResult result =
+      run_tool(dir, CLRT_EXE, quoted(scene) + " -q --resolution 8x8 -o " + quoted(half));
+  REQUIRE(result.status == 0);
+  CHECK_THAT(result.err, Contains("clrt: warning: " + half + ": ") &&
+                             Contains(" of the 192 samples are beyond 65504, the largest half float"));
+  CHECK(std::count(result.err.begin(), result.err.end(), '\n') == 1);
+  const ToolResult full = run_tool(
+      dir, CLRT_EXE, quoted(scene) + " -q --resolution 8x8 --exr-pixel float -o " + quoted(half));
+  REQUIRE(full.status == 0);
+  CHECK(full.err.empty());
 }
 
 TEST_CASE("clrt refuses -o - without --format and a --format its extension contradicts, at once",

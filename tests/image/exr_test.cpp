@@ -70,6 +70,34 @@ TEST_CASE("EXR is half by default: each float rounds once, to the nearest half, 
   check_samples(path, "16-bit float (half)", false);
 }
 
+TEST_CASE("a half EXR says once how many finite samples it stored as infinity", "[image][exr]") {
+  // 65519 rounds down to 65504, 65520 up to infinity; infinities and NaNs were never finite.
+  ScratchDir dir;
+  const std::string path = dir.file("bright.exr");
+  const FloatImage image{2, 2, {65504.0f, 65519.0f, 65520.0f, -1e6f, kInf, std::nanf(""), 3e38f,
+                                1.0f, -65520.0f, 0.5f, 2.0f, 4.0f}};
+  std::vector<std::string> warnings;
+  clrt::WriteOptions options;
+  options.warn = [&](const std::string& message) { warnings.push_back(message); };
+  clrt::write_image(path, image, options);
+  REQUIRE(warnings.size() == 1);
+  CHECK(warnings.front() == path + ": 4 of the 12 samples are beyond 65504, the largest half "
+                                   "float, and are stored as infinity (--exr-pixel float keeps them)");
+  const FloatImage back = clrt::read_exr(path);
+  CHECK(back.rgb[1] == 65504.0f);
+  CHECK(back.rgb[2] == kInf);
+  CHECK(back.rgb[3] == -kInf);
+
+  warnings.clear();
+  clrt::write_image(path, FloatImage{1, 1, {65519.0f, -65519.0f, kInf}}, options);
+  clrt::write_image(path, image, [&] {
+    clrt::WriteOptions float_options{clrt::ExrPixel::Float};
+    float_options.warn = options.warn;
+    return float_options;
+  }());
+  CHECK(warnings.empty());
+}
+
 TEST_CASE("EXR with --exr-pixel float keeps every float's bits", "[image][exr]") {
   ScratchDir dir;
   const std::string path = dir.file("a.exr");

@@ -129,6 +129,21 @@ TEST_CASE("convert: PFM and EXR are read, and float to 8-bit quantises as clrt d
   CHECK(read_bytes(eight_png) == read_bytes(direct));
 }
 
+TEST_CASE("convert: into a half EXR, samples beyond the largest half are counted in a warning",
+          "[img][convert]") {
+  ScratchDir dir;
+  const std::string pfm = dir.file("bright.pfm"), half = dir.file("h.exr");
+  clrt::write_image(pfm, FloatImage(2, 1, {1e5f, 0.5f, 0.25f, 65504.0f, 2.0f, 7e4f}));
+  const ToolResult result = convert(dir, pfm, half, " --exr-pixel half");
+  REQUIRE(result.status == 0);
+  CHECK(result.err == "clrt-img: warning: " + half +
+                          ": 2 of the 6 samples are beyond 65504, the largest half float, and are "
+                          "stored as infinity (--exr-pixel float keeps them)\n");
+  const ToolResult kept = convert(dir, pfm, dir.file("f.exr"));
+  REQUIRE(kept.status == 0);
+  CHECK(kept.err.empty());
+}
+
 TEST_CASE("convert: a tile keeps its placement into PNG and EXR, with a warning elsewhere",
           "[img][convert][placement]") {
   ScratchDir dir;

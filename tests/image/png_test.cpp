@@ -5,6 +5,7 @@
 
 #include "image/image.hpp"
 #include "image/image_info.hpp"
+#include "png_chunks.hpp"
 #include "test_files.hpp"
 
 using clrt::ImageError;
@@ -102,26 +103,6 @@ TEST_CASE("PNG reader rejects a file that is not a PNG or is cut short, naming i
 }
 
 namespace {
-
-// CRC-32 as PNG defines it (ISO 3309, reflected 0xedb88320), bit by bit.
-std::uint32_t png_crc(const Bytes& bytes) {
-  std::uint32_t crc = 0xffffffffu;
-  for (std::uint8_t byte : bytes) {
-    crc ^= byte;
-    for (int bit = 0; bit < 8; ++bit) crc = crc & 1 ? (crc >> 1) ^ 0xedb88320u : crc >> 1;
-  }
-  return crc ^ 0xffffffffu;
-}
-
-Bytes u32_be(std::uint32_t v) {
-  return {Bytes::value_type(v >> 24), Bytes::value_type(v >> 16), Bytes::value_type(v >> 8),
-          Bytes::value_type(v)};
-}
-
-Bytes text_chunk(const std::string& key, const std::string& text) {
-  const Bytes body = concat({bytes_of("tEXt" + key), {0}, bytes_of(text)});
-  return concat({u32_be(static_cast<std::uint32_t>(body.size() - 4)), body, u32_be(png_crc(body))});
-}
 
 constexpr std::size_t kAfterIhdr = 8 + 25;  // signature, then IHDR's length, type, 13 bytes, CRC
 

@@ -110,6 +110,16 @@ TEST_CASE("a scene file over the size limit is refused without reading it", "[sc
              Catch::Contains("it is 268435457 bytes, more than the limit of 256 MiB"));
 }
 
+TEST_CASE("a mesh file over the size limit is refused at its command, in the documented unit",
+          "[scene][limits]") {
+  ScratchDir dir;
+  const std::string mesh = dir.write("huge.obj", "v 0 0 0\n");
+  REQUIRE(::truncate(mesh.c_str(), static_cast<off_t>(limits::kMaxMeshFileBytes + 1)) == 0);
+  const SceneError e = load_error_of_file(dir.write("s.ray", "sphere\nmesh huge.obj\n"));
+  CHECK(e.where().line == 2);
+  CHECK_THAT(e.message(), Catch::Contains("it is 2146435073 bytes, more than the limit of 2047 MiB"));
+}
+
 TEST_CASE("a mesh that is not a regular file is refused at its command", "[scene][limits]") {
   ScratchDir dir;
   const SceneError e = load_error_of_file(dir.write("s.ray", "sphere\nmesh /dev/zero\n"));

@@ -82,6 +82,12 @@ ExrPixel exr_pixel_for(std::optional<ExrPixel> option, bool float32) {
   return option.value_or(float32 ? ExrPixel::Float : ExrPixel::Half);
 }
 
+WriteOptions write_options_for(std::optional<ExrPixel> option, bool float32) {
+  WriteOptions options{exr_pixel_for(option, float32)};
+  options.warn = warn;
+  return options;
+}
+
 void warn(const std::string& message) { std::cerr << "clrt-img: warning: " << message << "\n"; }
 
 }  // namespace clrt::img

@@ -55,6 +55,8 @@ bool holds_float32(const std::string& path, ImageFormat format);
 // The EXR pixel type an output gets: --exr-pixel, else float when `float32` (an input held
 // 32-bit floats), else half.
 ExrPixel exr_pixel_for(std::optional<ExrPixel> option, bool float32);
+// What an output is written with: that EXR pixel type, and warnings through warn().
+WriteOptions write_options_for(std::optional<ExrPixel> option, bool float32);
 
 // "clrt-img: warning: MESSAGE" on standard error.
 void warn(const std::string& message);

@@ -1,0 +1,14 @@
+// How clrt and clrt-mpi write their images.
+#pragma once
+
+#include <string>
+
+#include "image/image.hpp"
+
+namespace clrt {
+
+// The EXR pixel type asked for; what the format could not hold as "PROGRAM: warning: ..." on
+// standard error.
+WriteOptions image_write_options(ExrPixel exr_pixel, const std::string& program);
+
+}  // namespace clrt
