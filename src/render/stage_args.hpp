@@ -98,11 +98,12 @@ struct ClassifyHitsArgs {
   static constexpr const char* kName = "classify_hits";
   Global<const dev::Material> materials;
   Global<const dev::Hit> hits;
-  cl_uint first = 0, count = 0, wanted = 0;
+  cl_uint first = 0, count = 0;
+  cl_uint stride = 0;  // between the classes' flag sets, in flags
   Global<cl_uint4> indices;
   Global<cl_uint> flags;
 
-  CLRT_KERNEL_ARGS(materials, hits, first, count, wanted, indices, flags)
+  CLRT_KERNEL_ARGS(materials, hits, first, count, stride, indices, flags)
 };
 
 struct ShadowArgs {

@@ -9,6 +9,8 @@ WaveSizes wave_sizes(std::uint64_t wavefront, std::uint64_t samples, std::uint64
   s.shade_chunk =
       shadow_samples == 0 ? s.capacity : std::max<std::uint64_t>(1, s.capacity / shadow_samples);
   s.shadow_slots = s.shade_chunk * shadow_samples;
+  s.class_flag_stride =
+      (s.shade_chunk + kClassFlagAlignment - 1) / kClassFlagAlignment * kClassFlagAlignment;
   s.wave_pixels = s.capacity;
   return s;
 }

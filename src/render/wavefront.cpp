@@ -147,14 +147,15 @@ ShadeOutputs WavefrontIntegrator::shade_outputs() const {
 
 void WavefrontIntegrator::shade_by_class(std::uint32_t pass, std::uint32_t first,
                                          std::uint32_t count) {
-  // One class at a time: flag it, compact its indices, shade them; its count stays on the device.
-  for (cl_uint c = 0; c < CLRT_SHADE_CLASSES; ++c) {
-    launcher_.launch(classify_,
-                     {frame_.materials, queues_.hits, first, count, c, queues_.shade_indices,
-                      queues_.shade_flags},
-                     count, pass);
-    compactor_.enqueue(launcher_, queues_.shade_indices, queues_.shade_flags, count,
-                       queues_.shade_order, count, pass);
+  // One launch flags every class; then one class at a time: compact its indices, shade them.
+  // Its count stays on the device.
+  launcher_.launch(classify_,
+                   {frame_.materials, queues_.hits, first, count, queues_.class_flag_stride(),
+                    queues_.shade_indices, queues_.shade_flags},
+                   count, pass);
+  for (const Global<cl_uint>& flags : queues_.class_flags) {
+    compactor_.enqueue(launcher_, queues_.shade_indices, flags, count, queues_.shade_order, count,
+                       pass);
     launcher_.launch(shade_sorted_,
                      {shade_inputs(), first, queues_.shade_order, compactor_.total(), shade_outputs()},
                      count, pass);

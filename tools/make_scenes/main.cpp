@@ -1,26 +1,35 @@
-// clrt-make-scenes OUTDIR [--scale S]: writes the large benchmark scenes (README.md).
+// clrt-make-scenes OUTDIR [--scale S] [--family large|knob]: writes the large benchmark scenes or
+// the material knob (README.md).
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <exception>
 #include <string>
 
 #include "cli/tool_command_line.hpp"
+#include "knob_scenes.hpp"
 #include "large_scenes.hpp"
 
 int main(int argc, char** argv) {
-  CLI::App app{"Writes clrt's large procedural benchmark scenes and their meshes.",
+  CLI::App app{"Writes clrt's large procedural benchmark scenes and their meshes, or the material knob.",
                "clrt-make-scenes"};
   clrt::identify_tool(app);
   std::string folder = "build/scenes-large";
   double scale = 1;
   app.add_option("OUTDIR", folder, "folder to write into (created if missing)")
       ->capture_default_str();
+  std::string family = "large";
   app.add_option("--scale", scale, "multiplies every sphere, triangle and instance count")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
+  app.add_option("--family", family,
+                 "large: the large scenes; knob: 1 to 16 materials of rising shading cost")
+      ->check(CLI::IsMember({"large", "knob"}))
+      ->capture_default_str();
   if (const auto status = clrt::parse_tool_arguments(app, argc, argv)) return *status;
   try {
-    for (const std::string& path : clrt::scenes::write_large_scenes(folder, scale))
+    const auto paths = family == "knob" ? clrt::scenes::write_knob_scenes(folder, scale)
+                                        : clrt::scenes::write_large_scenes(folder, scale);
+    for (const std::string& path : paths)
       std::printf("%s\n", path.c_str());
   } catch (const std::exception& e) {
     std::fprintf(stderr, "clrt-make-scenes: error: %s\n", e.what());

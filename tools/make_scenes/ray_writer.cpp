@@ -18,9 +18,21 @@ void RayWriter::point_light(const Vec3& colour, const Vec3& position) {
              position.y, position.z);
 }
 
+void RayWriter::area_light(const Vec3& colour, const Vec3& corner, const Vec3& u, const Vec3& v,
+                           int samples) {
+  out_.print("light %g %g %g area %g %g %g %g %g %g %g %g %g %d\n", colour.x, colour.y, colour.z,
+             corner.x, corner.y, corner.z, u.x, u.y, u.z, v.x, v.y, v.z, samples);
+}
+
+void RayWriter::depth_and_samples(int max_depth, int samples) {
+  out_.print("maxdepth %d\nsamples %d\n", max_depth, samples);
+}
+
 void RayWriter::material(const Look& look) {
-  out_.print("material %g %g %g %g %g %g %g %g %g\n", look.colour.x, look.colour.y, look.colour.z,
+  out_.print("material %g %g %g %g %g %g %g %g %g", look.colour.x, look.colour.y, look.colour.z,
              look.ka, look.kd, look.ks, look.shininess, look.kr, look.kt);
+  if (look.ior != 1) out_.print(" %g", look.ior);
+  out_.print("\n");
 }
 
 void RayWriter::floor_plane() { out_.print("reset\nplane\n"); }

@@ -14,10 +14,10 @@ struct Shot {
   int width = 512, height = 512;
 };
 
-// `material r g b ka kd ks n kr kt`.
+// `material r g b ka kd ks n kr kt [ior]` (the ior is written only when it is not 1).
 struct Look {
   Vec3 colour;
-  double ka = 0.1, kd = 0.8, ks = 0.3, shininess = 30, kr = 0, kt = 0;
+  double ka = 0.1, kd = 0.8, ks = 0.3, shininess = 30, kr = 0, kt = 0, ior = 1;
 };
 
 // Where an instance of a model goes: scaled uniformly, tilted about x, turned about y, moved.
@@ -34,6 +34,8 @@ class RayWriter {
 
   void camera(const Shot& shot, const Vec3& background);
   void point_light(const Vec3& colour, const Vec3& position);
+  void area_light(const Vec3& colour, const Vec3& corner, const Vec3& u, const Vec3& v, int samples);
+  void depth_and_samples(int max_depth, int samples);
   void material(const Look& look);
   void floor_plane();
   void sphere(const Vec3& centre, double radius);

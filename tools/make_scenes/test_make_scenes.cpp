@@ -1,14 +1,19 @@
 // The generator at scale 0.001: every scene loads with clrt's own loader and holds the counts
 // worked out by hand below; the knot is a closed, consistently wound tube; output is
 // deterministic.
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <set>
 #include <sstream>
+#include <tuple>
 #include <utility>
 
+#include "knob_scenes.hpp"
 #include "large_scenes.hpp"
 #include "scene/scene.hpp"
 #include "torus_knot.hpp"
@@ -113,5 +118,80 @@ TEST_CASE("the same scale writes the same bytes") {
   for (const auto& entry : fs::directory_iterator(first)) {
     INFO(entry.path().filename());
     CHECK(contents(entry.path()) == contents(again / entry.path().filename()));
+  }
+}
+
+namespace {
+
+// The lobe subset a knob material reads as in path mode (docs/path-tracing.md, "Materials"):
+// a lobe is present when its weight is not zero, and each present one carries 0.9 / present.
+unsigned lobes_of(const clrt::MaterialSpec& m) {
+  using namespace clrt::scenes;
+  const double share = std::max(0.0, 1 - m.kr - m.kt);
+  const double colour = std::max({m.color.x, m.color.y, m.color.z});
+  const double weights[4] = {share * m.kd * colour, share * m.ks, m.kr, m.kt};
+  const unsigned bits[4] = {kLambert, kPhong, kMirror, kDielectric};
+  unsigned lobes = 0;
+  int present = 0;
+  for (int l = 0; l < 4; ++l) present += weights[l] > 0;
+  for (int l = 0; l < 4; ++l) {
+    if (weights[l] == 0) continue;
+    lobes |= bits[l];
+    CHECK(std::abs(weights[l] - 0.9 / present) < 1e-6);
+  }
+  if (m.kt > 0) CHECK(m.ior == 1.5);
+  return lobes;
+}
+
+std::vector<clrt::Vec3> sphere_centres(const clrt::Scene& scene) {
+  std::vector<clrt::Vec3> centres;
+  for (const clrt::InstanceSpec& i : scene.instances)
+    if (i.shape == clrt::ShapeKind::Sphere) centres.push_back(i.transform.transform_point({}));
+  std::sort(centres.begin(), centres.end(), [](const clrt::Vec3& a, const clrt::Vec3& b) {
+    return std::tie(a.x, a.z) < std::tie(b.x, b.z);
+  });
+  return centres;
+}
+
+}  // namespace
+
+TEST_CASE("knob scene k spreads the k cheapest lobe subsets in equal shares over one grid") {
+  const fs::path folder = fs::path(CLRT_BINARY_DIR) / "make-scenes-test" / "knob";
+  fs::remove_all(folder);
+  const std::vector<std::string> files = clrt::scenes::write_knob_scenes(folder.string(), 0.05);
+  CHECK(files.size() == 32);
+  const std::vector<unsigned>& order = clrt::scenes::knob_lobe_order();
+  REQUIRE(order.size() == 16);
+  CHECK(std::set<unsigned>(order.begin(), order.end()).size() == 16);  // every subset once
+  // 0.05 of 576 spheres is 28.8, a 6 x 6 grid.
+  REQUIRE(clrt::scenes::knob_grid_side(0.05) == 6);
+  const std::vector<clrt::Vec3> grid = sphere_centres(load(folder, "knob-01.ray"));
+  REQUIRE(grid.size() == 36);
+  for (std::size_t k = 1; k <= 16; ++k) {
+    char name[32];
+    std::snprintf(name, sizeof name, "knob-%02zu.ray", k);
+    INFO(name);
+    const clrt::Scene scene = load(folder, name);
+    CHECK(sphere_centres(scene) == grid);
+    CHECK(count_shapes(scene, clrt::ShapeKind::Plane) == 1);
+    std::map<unsigned, int> spheres_of;
+    for (const clrt::InstanceSpec& i : scene.instances)
+      if (i.shape == clrt::ShapeKind::Sphere) ++spheres_of[lobes_of(scene.materials.at(i.material))];
+    CHECK(spheres_of.size() == k);
+    for (std::size_t m = 0; m < k; ++m) {
+      INFO("subset " << clrt::scenes::lobe_letters(order[m]));
+      CHECK(spheres_of.count(order[m]) == 1);
+      // 36 spheres in k shares: each share is 36 / k rounded down or up.
+      CHECK(spheres_of[order[m]] >= static_cast<int>(36 / k));
+      CHECK(spheres_of[order[m]] <= static_cast<int>((36 + k - 1) / k));
+    }
+  }
+  for (const unsigned lobes : order) {
+    const std::string name = "knob-lobes-" + clrt::scenes::lobe_letters(lobes) + ".ray";
+    INFO(name);
+    const clrt::Scene scene = load(folder, name);
+    CHECK(sphere_centres(scene) == grid);
+    for (const clrt::InstanceSpec& i : scene.instances)
+      if (i.shape == clrt::ShapeKind::Sphere) CHECK(lobes_of(scene.materials.at(i.material)) == lobes);
   }
 }
