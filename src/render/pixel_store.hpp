@@ -26,6 +26,20 @@ class FloatPixelStore final : public PixelStore {
   FloatImage& image_;
 };
 
+// Stores into `first`, then hands the same pixels to `second`.
+class TeePixelStore final : public PixelStore {
+ public:
+  TeePixelStore(PixelStore& first, PixelStore& second) : first_(first), second_(second) {}
+  void store(std::uint64_t first, std::uint32_t count, const dev::f4* pixels) override {
+    first_.store(first, count, pixels);
+    second_.store(first, count, pixels);
+  }
+
+ private:
+  PixelStore& first_;
+  PixelStore& second_;
+};
+
 class BytePixelStore final : public PixelStore {
  public:
   explicit BytePixelStore(Rgba8Image& image) : image_(image) {}  // frame 0

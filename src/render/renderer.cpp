@@ -5,6 +5,7 @@
 #include <exception>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <thread>
 
@@ -202,7 +203,8 @@ Renderer::Renderer(const Scene& scene, GeometryData geometry, const RenderSetup&
 
 Renderer::~Renderer() = default;
 
-AnyImage Renderer::render(const PixelRect& region, bool eight_bit, Progress* progress) {
+AnyImage Renderer::render(const PixelRect& region, bool eight_bit, Progress* progress,
+                          PixelStore* watcher) {
   const auto start = Clock::now();
   std::optional<Placement> placement;
   if (region.width != static_cast<std::uint32_t>(options_.width) ||
@@ -222,6 +224,9 @@ AnyImage Renderer::render(const PixelRect& region, bool eight_bit, Progress* pro
         width, height, std::vector<float>(3 * region.pixel_count()), placement);
     store = std::make_unique<FloatPixelStore>(floats);
   }
+  std::optional<TeePixelStore> tee;
+  if (watcher) tee.emplace(*store, *watcher);
+  PixelStore& target = tee ? static_cast<PixelStore&>(*tee) : *store;
   std::vector<Integrator*> workers;
   for (DeviceWorker& d : devices_->workers)
     for (Lane& lane : d.lanes) workers.push_back(lane.integrator.get());
@@ -233,7 +238,7 @@ AnyImage Renderer::render(const PixelRect& region, bool eight_bit, Progress* pro
       PixelRect band;
       while (dealer.next(integrator.pixels_per_wave(), band)) {
         const std::uint64_t offset = std::uint64_t{band.y - region.y} * region.width;
-        integrator.render(band, *store, offset);
+        integrator.render(band, target, offset);
         if (progress) progress->advance(band.pixel_count());
       }
     } catch (...) {

@@ -11,6 +11,7 @@
 #include "image/image.hpp"
 #include "render/device_preparation.hpp"
 #include "render/pixel_rect.hpp"
+#include "render/pixel_store.hpp"
 #include "render/progress.hpp"
 #include "render/render_options.hpp"
 #include "render/render_stats.hpp"
@@ -54,8 +55,10 @@ class Renderer {
   // Renders `region` of the image, as linear floats or, `eight_bit`, quantised as the contract
   // says (for the formats that store 8 bits: a quarter of the memory). The image records its
   // placement in the frame unless it is the whole frame; every pixel has the bits of the same
-  // pixel of a full render.
-  AnyImage render(const PixelRect& region, bool eight_bit, Progress* progress = nullptr);
+  // pixel of a full render. `watcher`, when given, is handed every band's pixels as well, as
+  // they are stored (clrt --preview); the image is the same with or without it.
+  AnyImage render(const PixelRect& region, bool eight_bit, Progress* progress = nullptr,
+                  PixelStore* watcher = nullptr);
 
   // The camera of the renders that follow (an animation's next frame).
   void set_camera(const dev::Camera& camera);

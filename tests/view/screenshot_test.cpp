@@ -4,6 +4,7 @@
 
 #include <catch2/catch.hpp>
 #include <chrono>
+#include <cstdlib>
 #include <cmath>
 #include <fstream>
 #include <iterator>
@@ -153,4 +154,51 @@ TEST_CASE("clrt-view compares two images side by side with their difference",
   const int difference_x = 2 * (48 + kGap);
   CHECK(window.pixels[difference_x] == 0xff0000U);  // red of pixel 0 moved by 0.125
   CHECK(window.pixels[difference_x + 3] == 0x000000U);
+}
+
+TEST_CASE("clrt --preview shows the render in clrt-view as it fills in, and the same image is "
+          "written",
+          "[view][screenshot][preview]") {
+  if (!XScreen::available()) CLRT_SKIP_TEST("Xvfb is not installed");
+  ScratchDir dir;
+  const std::string png = dir.file("reflect.png"), plain = dir.file("plain.png");
+  const std::string scene = std::string(CLRT_SOURCE_DIR) + "/scenes/reflect.ray";
+  XScreen screen;
+  const std::string log = dir.file("clrt.log");
+  const pid_t clrt =
+      screen.start({CLRT_EXE, scene, "--resolution", "24x18", "--preview", "-q", "-o", png}, log);
+  REQUIRE(screen.wait(clrt) == 0);
+  CHECK(text_of(log).find("warning") == std::string::npos);
+  const pid_t without = screen.start({CLRT_EXE, scene, "--resolution", "24x18", "-q", "-o", plain},
+                                     dir.file("plain.log"));
+  REQUIRE(screen.wait(without) == 0);
+  const std::vector<std::uint8_t> bytes = read_png(png).frames[0];
+  CHECK(bytes == read_png(plain).frames[0]);
+
+  // The window holds the finished render: the PNG's bytes, magnified.
+  const int zoom = fitting_zoom(24, 18, 1);
+  Canvas expected{24 * zoom, 18 * zoom, {}};
+  for (int y = 0; y < expected.height; ++y)
+    for (int x = 0; x < expected.width; ++x) {
+      const std::uint8_t* p = &bytes[4 * ((y / zoom) * 24 + x / zoom)];
+      expected.pixels.push_back(std::uint32_t{p[0]} << 16 | p[1] << 8 | p[2]);
+    }
+  const WindowPixels window = shown(screen, expected);
+  check_shows(window, expected, log);
+  CHECK(window.title.find("render complete") != std::string::npos);
+}
+
+TEST_CASE("clrt --preview without a display says so and renders anyway",
+          "[view][preview]") {
+  ScratchDir dir;
+  const std::string png = dir.file("out.png");
+  const std::string scene = std::string(CLRT_SOURCE_DIR) + "/scenes/reflect.ray";
+  const std::string command = "env -u DISPLAY -u WAYLAND_DISPLAY SDL_VIDEODRIVER=x11 '" +
+                              std::string(CLRT_EXE) + "' '" + scene +
+                              "' --resolution 8x6 --preview -q -o '" + png + "' 2>'" +
+                              dir.file("err.txt") + "'";
+  CHECK(std::system(command.c_str()) == 0);
+  CHECK(read_png(png).width == 8);
+  CHECK(text_of(dir.file("err.txt")).find("clrt: warning: --preview: clrt-view could not open a "
+                                          "window; rendering without it") != std::string::npos);
 }

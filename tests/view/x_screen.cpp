@@ -8,6 +8,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <stdexcept>
 
@@ -93,6 +94,13 @@ pid_t XScreen::start(const std::vector<std::string>& argv, const std::string& lo
   }
   programs_.push_back(pid);
   return pid;
+}
+
+int XScreen::wait(pid_t pid) {
+  int status = 0;
+  waitpid(pid, &status, 0);
+  programs_.erase(std::remove(programs_.begin(), programs_.end(), pid), programs_.end());
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
 
 std::optional<WindowPixels> XScreen::grab(const std::string& prefix) const {

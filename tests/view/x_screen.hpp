@@ -33,6 +33,8 @@ class XScreen {
   // Runs `argv` with DISPLAY set to this screen (and SDL on its X11 driver); its output goes
   // to `log`.
   pid_t start(const std::vector<std::string>& argv, const std::string& log);
+  // Waits for a program start() started to exit; its exit status (-1 if a signal ended it).
+  int wait(pid_t pid);
   // The first top-level window whose title starts with `prefix`, if one is mapped.
   std::optional<WindowPixels> grab(const std::string& prefix) const;
 

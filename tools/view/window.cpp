@@ -34,6 +34,13 @@ class Window {
   // the screen's edge.
   Window(int width, int height) {
     if (SDL_Init(SDL_INIT_VIDEO) != 0) throw std::runtime_error(SDL_GetError());
+    // Without a display SDL falls back to drivers that draw nowhere: a window nobody sees would
+    // keep clrt --preview streaming into it, and the user waiting for it.
+    const std::string driver = SDL_GetCurrentVideoDriver();
+    if (driver == "offscreen" || driver == "dummy" || driver == "evdev") {
+      SDL_Quit();
+      throw std::runtime_error("no display (SDL found only its " + driver + " video driver)");
+    }
     window_ = SDL_CreateWindow("clrt-view", SDL_WINDOWPOS_UNDEFINED, SDL_WINDOWPOS_UNDEFINED,
                                width, height, 0);
     if (!window_) {
