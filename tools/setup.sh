@@ -28,6 +28,8 @@ test_packages=(
   catch2                         # the test framework (2.13 on Debian 12)
   python3-matplotlib             # the plots of clrt-experiment (and its test)
   libopenmpi-dev openmpi-bin     # clrt-mpi: one image across the ranks of an MPI job (and mpirun for its tests)
+  libsdl2-dev                    # clrt-view's window (optional: built only when found; clrt never needs it)
+  xvfb                           # the X server clrt-view's screenshot tests start (libsdl2-dev brings libx11-dev, which they read it with)
 )
 
 with_tests=0
