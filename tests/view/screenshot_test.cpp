@@ -13,8 +13,11 @@
 #include "image/image.hpp"
 #include "scratch_dir.hpp"
 #include "skip_test.hpp"
-#include "view_layout.hpp"
+#include "controls.hpp"
 #include "x_screen.hpp"
+
+#include <X11/Xlib.h>
+#include <X11/keysym.h>
 
 using namespace clrt;
 using namespace clrt::view;
@@ -39,15 +42,17 @@ std::size_t differing(const WindowPixels& window, const Canvas& expected) {
   return count;
 }
 
-// Grabs the viewer's window until it shows `expected` (it may take a moment to map and draw),
-// for at most ten seconds; the last grab when it never does.
-WindowPixels shown(const XScreen& screen, const Canvas& expected) {
+// Grabs the viewer's window until it shows `expected` with `title_part` in its title (it may
+// take a moment to map and draw), for at most ten seconds; the last grab when it never does.
+WindowPixels shown(const XScreen& screen, const Canvas& expected,
+                   const std::string& title_part = "") {
   WindowPixels last;
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(10);
   while (std::chrono::steady_clock::now() < deadline) {
     if (auto window = screen.grab("clrt-view")) {
       last = std::move(*window);
-      if (differing(last, expected) == 0) break;
+      if (differing(last, expected) == 0 && last.title.find(title_part) != std::string::npos)
+        break;
     }
     std::this_thread::sleep_for(std::chrono::milliseconds(50));
   }
@@ -156,6 +161,44 @@ TEST_CASE("clrt-view compares two images side by side with their difference",
   CHECK(window.pixels[difference_x + 3] == 0x000000U);
 }
 
+TEST_CASE("clrt-view's keys, sent through the X server, flip, show the difference and change "
+          "the tone",
+          "[view][screenshot][keys]") {
+  if (!XScreen::available()) CLRT_SKIP_TEST("Xvfb is not installed");
+  ScratchDir dir;
+  const std::string a = dir.file("a.pfm"), b = dir.file("b.pfm");
+  FloatImage other = hdr_ramp();
+  for (float& value : other.rgb) value *= 0.5f;
+  write_image(a, hdr_ramp());
+  write_image(b, other);
+  XScreen screen;
+  const std::string log = dir.file("view.log");
+  screen.start({CLRT_VIEW, a, b, "--zoom", "2"}, log);
+  const AnyImage any_b = other;
+  const ViewSources sources = make_sources(hdr_ramp(), &any_b);
+  ViewState state;
+  state.zoom = 2;
+  const auto check_state = [&] {
+    const Canvas expected = compose(layout_view(state, sources), state, sources);
+    check_shows(shown(screen, expected), expected, log);
+  };
+  check_state();
+  // Each key, then the picture it should lead to.
+  const std::pair<unsigned long, void (*)(ViewState&)> steps[] = {
+      {XK_Tab, [](ViewState& s) { s.flipped = Picture::B; }},
+      {XK_g, [](ViewState& s) { s.tone.gamma = kDisplayGamma; }},
+      {XK_equal, [](ViewState& s) { s.tone.exposure = kExposureStep; }},
+      {XK_d, [](ViewState& s) { s.show_difference = true; }},
+      {XK_s, [](ViewState& s) { s.side_by_side = true; }},
+  };
+  for (const auto& [key, change] : steps) {
+    INFO("after key " << XKeysymToString(key));
+    REQUIRE(screen.press("clrt-view", key));
+    change(state);
+    check_state();
+  }
+}
+
 TEST_CASE("clrt --preview shows the render in clrt-view as it fills in, and the same image is "
           "written",
           "[view][screenshot][preview]") {
@@ -183,7 +226,7 @@ TEST_CASE("clrt --preview shows the render in clrt-view as it fills in, and the 
       const std::uint8_t* p = &bytes[4 * ((y / zoom) * 24 + x / zoom)];
       expected.pixels.push_back(std::uint32_t{p[0]} << 16 | p[1] << 8 | p[2]);
     }
-  const WindowPixels window = shown(screen, expected);
+  const WindowPixels window = shown(screen, expected, "render complete");
   check_shows(window, expected, log);
   CHECK(window.title.find("render complete") != std::string::npos);
 }

@@ -103,31 +103,69 @@ int XScreen::wait(pid_t pid) {
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
 
-std::optional<WindowPixels> XScreen::grab(const std::string& prefix) const {
-  XSetErrorHandler(ignore_error);
-  Display* display = XOpenDisplay(display_.c_str());
-  if (!display) return std::nullopt;
-  std::optional<WindowPixels> found;
+namespace {
+
+// The first mapped top-level window whose title starts with `prefix`, and its size and title.
+std::optional<std::pair<Window, WindowPixels>> find_window(Display* display,
+                                                           const std::string& prefix) {
+  std::optional<std::pair<Window, WindowPixels>> found;
   Window root = 0, parent = 0, *children = nullptr;
   unsigned count = 0;
   XQueryTree(display, DefaultRootWindow(display), &root, &parent, &children, &count);
   for (unsigned i = 0; i < count && !found; ++i) {
     XWindowAttributes attributes{};
     const std::string title = window_title(display, children[i]);
-    if (title.rfind(prefix, 0) != 0 || !XGetWindowAttributes(display, children[i], &attributes) ||
-        attributes.map_state != IsViewable)
-      continue;
-    XImage* image = XGetImage(display, children[i], 0, 0, static_cast<unsigned>(attributes.width),
-                              static_cast<unsigned>(attributes.height), AllPlanes, ZPixmap);
-    if (!image) continue;
-    WindowPixels pixels{attributes.width, attributes.height, {}, title};
-    for (int y = 0; y < attributes.height; ++y)
-      for (int x = 0; x < attributes.width; ++x)
-        pixels.pixels.push_back(static_cast<std::uint32_t>(XGetPixel(image, x, y)) & 0xffffff);
-    XDestroyImage(image);
-    found = std::move(pixels);
+    if (title.rfind(prefix, 0) == 0 && XGetWindowAttributes(display, children[i], &attributes) &&
+        attributes.map_state == IsViewable)
+      found.emplace(children[i], WindowPixels{attributes.width, attributes.height, {}, title});
   }
   if (children) XFree(children);
+  return found;
+}
+
+}  // namespace
+
+bool XScreen::press(const std::string& prefix, unsigned long keysym) const {
+  XSetErrorHandler(ignore_error);
+  Display* display = XOpenDisplay(display_.c_str());
+  if (!display) return false;
+  const auto window = find_window(display, prefix);
+  if (window) {
+    XSetInputFocus(display, window->first, RevertToParent, CurrentTime);
+    XKeyEvent key{};
+    key.display = display;
+    key.window = window->first;
+    key.root = DefaultRootWindow(display);
+    key.same_screen = True;
+    key.keycode = XKeysymToKeycode(display, keysym);
+    for (int type : {KeyPress, KeyRelease}) {
+      key.type = type;
+      XSendEvent(display, window->first, True,
+                 type == KeyPress ? KeyPressMask : KeyReleaseMask, reinterpret_cast<XEvent*>(&key));
+    }
+    XSync(display, False);
+  }
+  XCloseDisplay(display);
+  return window.has_value();
+}
+
+std::optional<WindowPixels> XScreen::grab(const std::string& prefix) const {
+  XSetErrorHandler(ignore_error);
+  Display* display = XOpenDisplay(display_.c_str());
+  if (!display) return std::nullopt;
+  std::optional<WindowPixels> found;
+  if (auto window = find_window(display, prefix)) {
+    WindowPixels& pixels = window->second;
+    XImage* image = XGetImage(display, window->first, 0, 0, static_cast<unsigned>(pixels.width),
+                              static_cast<unsigned>(pixels.height), AllPlanes, ZPixmap);
+    if (image) {
+      for (int y = 0; y < pixels.height; ++y)
+        for (int x = 0; x < pixels.width; ++x)
+          pixels.pixels.push_back(static_cast<std::uint32_t>(XGetPixel(image, x, y)) & 0xffffff);
+      XDestroyImage(image);
+      found = std::move(pixels);
+    }
+  }
   XCloseDisplay(display);
   return found;
 }

@@ -35,6 +35,9 @@ class XScreen {
   pid_t start(const std::vector<std::string>& argv, const std::string& log);
   // Waits for a program start() started to exit; its exit status (-1 if a signal ended it).
   int wait(pid_t pid);
+  // Gives the window whose title starts with `prefix` the keyboard focus and sends it a press
+  // and release of the key `keysym` (XK_g, XK_Tab...); false when no such window is mapped.
+  bool press(const std::string& prefix, unsigned long keysym) const;
   // The first top-level window whose title starts with `prefix`, if one is mapped.
   std::optional<WindowPixels> grab(const std::string& prefix) const;
 
