@@ -1,5 +1,6 @@
 // clrt-view under Xvfb: the window's pixels, read back from the X server, against the picture
 // the viewer's own functions compose on the host, and against values worked out by hand.
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <catch2/catch.hpp>
@@ -244,4 +245,26 @@ TEST_CASE("clrt --preview without a display says so and renders anyway",
   CHECK(read_png(png).width == 8);
   CHECK(text_of(dir.file("err.txt")).find("clrt: warning: --preview: clrt-view could not open a "
                                           "window; rendering without it") != std::string::npos);
+}
+
+TEST_CASE("clrt-view's usage errors exit 2 and an unreadable image 1, before any window",
+          "[view][usage]") {
+  ScratchDir dir;
+  const auto status = [&](const std::string& args) {
+    const std::string command = "env -u DISPLAY '" + std::string(CLRT_VIEW) + "' " + args +
+                                " 2>'" + dir.file("err.txt") + "'";
+    const int raw = std::system(command.c_str());
+    return WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+  };
+  CHECK(status("") == 2);
+  CHECK(text_of(dir.file("err.txt")) == "clrt-view: error: name an image to show\n");
+  CHECK(status("--preview a.png") == 2);
+  CHECK(status("--gamma 0 a.png") == 2);
+  CHECK(status("'" + dir.file("missing.pfm") + "'") == 1);
+  CHECK(text_of(dir.file("err.txt")).rfind("clrt-view: error: ", 0) == 0);
+  write_image(dir.file("a.pfm"), hdr_ramp());
+  write_image(dir.file("b.pfm"), FloatImage(1, 1, {0, 0, 0}));
+  CHECK(status("'" + dir.file("a.pfm") + "' '" + dir.file("b.pfm") + "'") == 1);
+  CHECK(text_of(dir.file("err.txt")) ==
+        "clrt-view: error: the images differ in size: 16x12 against 1x1\n");
 }
