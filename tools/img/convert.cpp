@@ -39,7 +39,7 @@ const char kHowToPick[] =
 int convert_to_gif(const ConvertOptions& options) {
   if (options.format)
     throw UsageError("--format does not apply to a GIF output, which its name chooses");
-  input_format(options.input);
+  input_format(options.input);  // an input no reader takes is a usage error, as below
   AnyImage image = read_any_image(options.input);
   if (options.frame) image = pick_frame(image, options.frame, options.input, kHowToPick);
   const Rgba8Image* rgba = std::get_if<Rgba8Image>(&image);
