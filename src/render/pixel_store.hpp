@@ -26,18 +26,18 @@ class FloatPixelStore final : public PixelStore {
   FloatImage& image_;
 };
 
-// Stores into `first`, then hands the same pixels to `second`.
+// Stores into `image`, then hands the same pixels to `watcher` (clrt --preview).
 class TeePixelStore final : public PixelStore {
  public:
-  TeePixelStore(PixelStore& first, PixelStore& second) : first_(first), second_(second) {}
+  TeePixelStore(PixelStore& image, PixelStore& watcher) : image_(image), watcher_(watcher) {}
   void store(std::uint64_t first, std::uint32_t count, const dev::f4* pixels) override {
-    first_.store(first, count, pixels);
-    second_.store(first, count, pixels);
+    image_.store(first, count, pixels);
+    watcher_.store(first, count, pixels);
   }
 
  private:
-  PixelStore& first_;
-  PixelStore& second_;
+  PixelStore& image_;
+  PixelStore& watcher_;
 };
 
 class BytePixelStore final : public PixelStore {
