@@ -101,7 +101,7 @@ TEST_CASE("the readout names the pictures, the frame, the tone and the values un
         "turn.fsf | frame 2/3 paused | exposure +0.0 gamma 1.0");
 }
 
-TEST_CASE("playback advances by the frame rate and loops; a step by hand pauses it",
+TEST_CASE("playback advances by the frame rate and loops, a step by hand pauses it",
           "[view][controls]") {
   Playback playback;
   playback.fps = 10;
