@@ -60,6 +60,18 @@ WindowPixels shown(const XScreen& screen, const Canvas& expected,
   return last;
 }
 
+// 8-bit RGBA pixels as the window should hold them, each a zoom x zoom square: worked out here
+// rather than by the viewer's compose(), to check its identity at exposure 0 and gamma 1.
+Canvas magnified(const std::vector<std::uint8_t>& rgba, int width, int height, int zoom) {
+  Canvas canvas{width * zoom, height * zoom, {}};
+  for (int y = 0; y < canvas.height; ++y)
+    for (int x = 0; x < canvas.width; ++x) {
+      const std::uint8_t* p = &rgba[4 * (std::size_t(y / zoom) * width + x / zoom)];
+      canvas.pixels.push_back(std::uint32_t{p[0]} << 16 | std::uint32_t{p[1]} << 8 | p[2]);
+    }
+  return canvas;
+}
+
 // A 16x12 HDR image: a ramp in red past 1, green in steps, blue fixed at 0.25.
 FloatImage hdr_ramp() {
   std::vector<float> rgb;
@@ -121,12 +133,7 @@ TEST_CASE("clrt-view shows the frame of an FSF animation it is asked for, paused
   screen.start({CLRT_VIEW, fsf, "--frame", "2", "--pause", "--zoom", "4"}, log);
 
   // 8-bit pixels are shown as they are: frame 2's bytes, each a 4x4 square.
-  Canvas expected{64, 48, std::vector<std::uint32_t>(64 * 48)};
-  for (int y = 0; y < 48; ++y)
-    for (int x = 0; x < 64; ++x) {
-      const std::uint8_t* p = &frames[1][4 * ((y / 4) * 16 + x / 4)];
-      expected.pixels[std::size_t(y) * 64 + x] = std::uint32_t{p[0]} << 16 | p[1] << 8 | p[2];
-    }
+  const Canvas expected = magnified(frames[1], 16, 12, 4);
   const WindowPixels window = shown(screen, expected);
   check_shows(window, expected, log);
   CHECK(window.title.find("frame 2/3 paused") != std::string::npos);
@@ -220,13 +227,7 @@ TEST_CASE("clrt --preview shows the render in clrt-view as it fills in, and the 
   CHECK(bytes == read_png(plain).frames[0]);
 
   // The window holds the finished render: the PNG's bytes, magnified.
-  const int zoom = fitting_zoom(24, 18, 1);
-  Canvas expected{24 * zoom, 18 * zoom, {}};
-  for (int y = 0; y < expected.height; ++y)
-    for (int x = 0; x < expected.width; ++x) {
-      const std::uint8_t* p = &bytes[4 * ((y / zoom) * 24 + x / zoom)];
-      expected.pixels.push_back(std::uint32_t{p[0]} << 16 | p[1] << 8 | p[2]);
-    }
+  const Canvas expected = magnified(bytes, 24, 18, fitting_zoom(24, 18, 1));
   const WindowPixels window = shown(screen, expected, "render complete");
   check_shows(window, expected, log);
   CHECK(window.title.find("render complete") != std::string::npos);
