@@ -21,12 +21,15 @@ packages=(
   zlib1g-dev                     # the PNG writer's compression, on every core (libpng-dev pulls it in too)
   libopenexr-dev                 # OpenEXR output and input (half or 32-bit float HDR, tiles' data windows)
   nlohmann-json3-dev             # JSON for --stats=json and the experiment records
+  libgif-dev                     # giflib: clrt-img convert's animated GIFs (the tree's configure needs it)
 )
 # What the tests and the other programs add (--tests).
 test_packages=(
   catch2                         # the test framework (2.13 on Debian 12)
   python3-matplotlib             # the plots of clrt-experiment (and its test)
   libopenmpi-dev openmpi-bin     # clrt-mpi: one image across the ranks of an MPI job (and mpirun for its tests)
+  libsdl2-dev                    # clrt-view's window (optional: built only when found; clrt never needs it)
+  xvfb                           # the X server clrt-view's screenshot tests start (libsdl2-dev brings libx11-dev, which they read it with)
 )
 
 with_tests=0

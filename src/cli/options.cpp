@@ -158,6 +158,10 @@ ParseResult parse_arguments(std::vector<std::string> args, bool print,
     app.option_defaults()->group(group);
     add(app, o);
   }
+  if (program.preview)
+    app.add_flag("--preview", o.preview,
+                 "show the render as it fills in, in a clrt-view window (docs/viewer.md)")
+        ->group("Output");
   if (program.add_own_options) {
     app.option_defaults()->group(program.name);
     program.add_own_options(app);

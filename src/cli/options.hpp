@@ -40,6 +40,7 @@ struct CliOptions {
   bool list_devices = false;
   StatsFormat stats = StatsFormat::None;
   bool quiet = false;
+  bool preview = false;  // --preview: a clrt-view window shows the render as it fills in
 };
 
 // What parsing decided: run with the options, or exit now with a code (after --help,
@@ -54,6 +55,7 @@ struct ParseResult {
 struct ProgramOptions {
   std::string name = "clrt";
   bool animation = true;  // --frames, --orbit, --frame-range
+  bool preview = true;    // --preview
   std::function<void(CLI::App&)> add_own_options;  // e.g. clrt-mpi's --tile
 };
 

@@ -18,6 +18,7 @@
 #include "image/fsf_animation.hpp"
 #include "cli/image_write_options.hpp"
 #include "cli/out_of_memory.hpp"
+#include "cli/preview_window.hpp"
 #include "image/output_target.hpp"
 #include "render/frame_setup.hpp"
 #include "render/orbit.hpp"
@@ -121,6 +122,14 @@ struct Devices {
   double seconds = 0;
 };
 
+// --preview's window, or a warning and nothing: the render goes on without it.
+std::unique_ptr<PreviewWindow> open_preview(const PixelRect& region, Progress& progress) {
+  std::string why;
+  std::unique_ptr<PreviewWindow> window = PreviewWindow::open(region.width, region.height, why);
+  if (!window) progress.message("clrt: warning: --preview: " + why + "; rendering without it");
+  return window;
+}
+
 int render_frames(const CliOptions& cli, Scene& scene, const FramePlan& frames,
                   const ImageOutput& output, RenderStats& stats, Progress& progress,
                   Devices& devices, Clock::time_point start) {
@@ -129,6 +138,8 @@ int render_frames(const CliOptions& cli, Scene& scene, const FramePlan& frames,
     for (const DeviceEntry& d : setup.devices) progress.message("device " + describe_device(d));
   const PixelRect region = render_region(setup.options);
   check_output_space(output, frames, region);
+  const std::unique_ptr<PreviewWindow> preview =
+      cli.preview ? open_preview(region, progress) : nullptr;
   Renderer renderer(scene, built_geometry(scene, progress), setup, std::move(devices.prepared),
                     &progress);
   const bool eight_bit = !holds_floats(output.format);
@@ -145,7 +156,7 @@ int render_frames(const CliOptions& cli, Scene& scene, const FramePlan& frames,
                                          std::to_string(frames.frames)
                                    : "rendering",
                    renderer.render_work(region));
-    const AnyImage image = renderer.render(region, eight_bit, &progress);
+    const AnyImage image = renderer.render(region, eight_bit, &progress, preview.get());
     progress.phase("writing");
     const auto write_start = Clock::now();
     std::visit(

@@ -10,6 +10,7 @@ ProgramOptions mpi_program_options(TileSize& tile) {
   ProgramOptions program;
   program.name = "clrt-mpi";
   program.animation = false;
+  program.preview = false;
   program.add_own_options = [&tile](CLI::App& app) {
     app.add_option_function<std::string>(
         "--tile",

@@ -26,6 +26,7 @@ class FloatPixelStore final : public PixelStore {
   FloatImage& image_;
 };
 
+// Stores into `image`, then hands the same pixels to `watcher` (clrt --preview).
 class BytePixelStore final : public PixelStore {
  public:
   explicit BytePixelStore(Rgba8Image& image) : image_(image) {}  // frame 0

@@ -5,6 +5,7 @@
 #include <exception>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <thread>
 
@@ -234,7 +235,8 @@ Renderer::Renderer(const Scene& scene, GeometryData geometry, const RenderSetup&
 
 Renderer::~Renderer() = default;
 
-AnyImage Renderer::render(const PixelRect& region, bool eight_bit, Progress* progress) {
+AnyImage Renderer::render(const PixelRect& region, bool eight_bit, Progress* progress,
+                          PixelStore* watcher) {
   const auto start = Clock::now();
   std::optional<Placement> placement;
   if (region.width != static_cast<std::uint32_t>(options_.width) ||
@@ -262,7 +264,7 @@ AnyImage Renderer::render(const PixelRect& region, bool eight_bit, Progress* pro
   std::vector<dev::f4> sums(rounds.size() > 1 ? region.pixel_count() : 0);
   sample_rounds_ = std::max<std::uint64_t>(sample_rounds_, rounds.size());
   for (const SampleRound& round : rounds) {
-    RoundOutput output(round, sums, *store);
+    RoundOutput output(round, sums, *store, watcher);
     render_round(region, output, workers, progress);
     if (progress && rounds.size() > 1)
       progress->note(std::to_string(round.first + round.count) + "/" +

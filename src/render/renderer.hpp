@@ -11,6 +11,7 @@
 #include "image/image.hpp"
 #include "render/device_preparation.hpp"
 #include "render/pixel_rect.hpp"
+#include "render/pixel_store.hpp"
 #include "render/progress.hpp"
 #include "render/render_options.hpp"
 #include "render/render_stats.hpp"
@@ -55,8 +56,11 @@ class Renderer {
   // says (for the formats that store 8 bits: a quarter of the memory), in rounds of samples
   // (render/sample_rounds.hpp). The image records its placement in the frame unless it is the
   // whole frame; every pixel has the bits of the same pixel of a full render. `progress`
-  // advances by render_work(region) in all and shows the samples per pixel done.
-  AnyImage render(const PixelRect& region, bool eight_bit, Progress* progress = nullptr);
+  // advances by render_work(region) in all and shows the samples per pixel done. `watcher`,
+  // when given, is handed every band's pixels as well (after each round but the last their
+  // mean so far), as they are stored (clrt --preview); the image is the same with or without it.
+  AnyImage render(const PixelRect& region, bool eight_bit, Progress* progress = nullptr,
+                  PixelStore* watcher = nullptr);
   // The units of work of rendering `region`: a camera sample each.
   std::uint64_t render_work(const PixelRect& region) const;
 

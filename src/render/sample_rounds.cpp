@@ -1,6 +1,7 @@
 #include "render/sample_rounds.hpp"
 
 #include <algorithm>
+#include <vector>
 
 namespace clrt {
 namespace {
@@ -28,10 +29,17 @@ std::vector<SampleRound> sample_rounds(std::uint32_t samples, std::uint64_t regi
 }
 
 void RoundOutput::take(std::uint64_t first, std::uint32_t count, const dev::f4* pixels) {
-  if (round_.last())
+  if (round_.last()) {
     store_.store(first, count, pixels);
-  else
-    std::copy(pixels, pixels + count, sums_.begin() + static_cast<std::ptrdiff_t>(first));
+    if (watcher_) watcher_->store(first, count, pixels);
+    return;
+  }
+  std::copy(pixels, pixels + count, sums_.begin() + static_cast<std::ptrdiff_t>(first));
+  if (!watcher_) return;
+  const float done = static_cast<float>(round_.first + round_.count);
+  std::vector<dev::f4> mean(pixels, pixels + count);
+  for (dev::f4& p : mean) p = {p.x / done, p.y / done, p.z / done, p.w / done};
+  watcher_->store(first, count, mean.data());
 }
 
 }  // namespace clrt

@@ -25,12 +25,14 @@ constexpr std::uint32_t kMaxSampleRounds = 64;
 std::vector<SampleRound> sample_rounds(std::uint32_t samples, std::uint64_t region_pixels,
                                        std::uint64_t rays_in_flight);
 
-// Where one round's resolved pixels go: the running sums until the last round, then the store.
-// Lanes write disjoint runs of pixels, so no lock is needed.
+// Where one round's resolved pixels go: the running sums until the last round, then the store;
+// and, when there is one, to a watcher (clrt --preview), which is shown the mean so far after
+// each round. Lanes write disjoint runs of pixels, so no lock is needed.
 class RoundOutput {
  public:
-  RoundOutput(const SampleRound& round, std::vector<dev::f4>& sums, PixelStore& store)
-      : round_(round), sums_(sums), store_(store) {}
+  RoundOutput(const SampleRound& round, std::vector<dev::f4>& sums, PixelStore& store,
+              PixelStore* watcher = nullptr)
+      : round_(round), sums_(sums), store_(store), watcher_(watcher) {}
 
   const SampleRound& round() const { return round_; }
   // The sums of the samples before this round for pixels [first, ...); not for the first round.
@@ -41,6 +43,7 @@ class RoundOutput {
   SampleRound round_;
   std::vector<dev::f4>& sums_;
   PixelStore& store_;
+  PixelStore* watcher_;
 };
 
 }  // namespace clrt

@@ -1,11 +1,14 @@
 // clrt-img convert IN OUT: any format clrt reads into any it writes. 8-bit to 8-bit and float
 // to float keep every value; float to 8-bit quantises as clrt does; 8-bit to float gives
 // value / 255. All frames of an FSF go into an FSF, or into one file each through a pattern
-// such as turn-%04d.png; other outputs take the frame --frame names.
+// such as turn-%04d.png, or into an animated GIF at --fps frames per second; other outputs take
+// the frame --frame names.
+#include <cmath>
 #include <memory>
 
 #include "command_line.hpp"
 #include "frame_pattern.hpp"
+#include "gif_writer.hpp"
 #include "image/image_info.hpp"
 #include "memory_need.hpp"
 
@@ -17,6 +20,7 @@ struct ConvertOptions {
   std::optional<int> frame;
   std::optional<ImageFormat> format;
   std::optional<ExrPixel> exr_pixel;
+  double fps = 25;
 };
 
 void write_converted(const std::string& path, const ImageOutput& output, const AnyImage& image,
@@ -34,19 +38,35 @@ const char kHowToPick[] =
 
 // From the input's header, before any pixel is decoded: a 783 KB PNG declaring 16384x16384
 // pixels took 4.2 GB to convert.
-void check_convert_memory(const ConvertOptions& options, const ImageOutput& output,
+// `every_frame`: the output holds all the input's frames at once (an FSF or GIF animation).
+void check_convert_memory(const ConvertOptions& options, ImageFormat written, bool every_frame,
                           ExrPixel exr_pixel) {
   const ImageInfo info = read_image_info(options.input);
   MemoryNeed need;
   need.add_read(options.input, info);
-  const bool every_frame = output.format == ImageFormat::Fsf && !options.frame &&
-                           !is_frame_pattern(options.output);
   need.add_write(pixels_of(info), every_frame ? info.frames : 1, reads_as_float(info.format),
-                 output.format, exr_pixel);
+                 written, exr_pixel);
   check_memory(need, "converting " + options.input);
 }
 
+// GIF counts delays in hundredths of a second: 25 frames per second is 4 exactly.
+int convert_to_gif(const ConvertOptions& options) {
+  if (options.format)
+    throw UsageError("--format does not apply to a GIF output, which its name chooses");
+  input_format(options.input);  // an input no reader takes is a usage error, as below
+  // The GIF's indexed frames are held whole as a PNG's rows are, at a byte a pixel or less.
+  check_convert_memory(options, ImageFormat::Png, !options.frame, ExrPixel::Half);
+  AnyImage image = read_any_image(options.input);
+  if (options.frame) image = pick_frame(image, options.frame, options.input, kHowToPick);
+  const Rgba8Image* rgba = std::get_if<Rgba8Image>(&image);
+  const Rgba8Image quantized = rgba ? Rgba8Image{} : quantize(std::get<FloatImage>(image));
+  const int delay_cs = static_cast<int>(std::lround(100 / options.fps));
+  write_gif(options.output, rgba ? *rgba : quantized, delay_cs);
+  return 0;
+}
+
 int convert(const ConvertOptions& options) {
+  if (is_gif_path(options.output)) return convert_to_gif(options);
   const ImageFormat input = input_format(options.input);
   const bool numbered = is_frame_pattern(options.output);
   // A pattern's first name stands for all of them: they differ in the number alone.
@@ -54,7 +74,9 @@ int convert(const ConvertOptions& options) {
       numbered ? frame_file_name(options.output, 1) : options.output, options.format);
   const WriteOptions write_options =
       write_options_for(options.exr_pixel, holds_float32(options.input, input));
-  check_convert_memory(options, output, write_options.exr_pixel);
+  check_convert_memory(options, output.format,
+                       output.format == ImageFormat::Fsf && !options.frame && !numbered,
+                       write_options.exr_pixel);
   AnyImage image = read_any_image(options.input);
   if (numbered) {
     const int first = options.frame.value_or(1);
@@ -79,7 +101,8 @@ void add_convert(CLI::App& app, Command& command) {
   CLI::App* sub = app.add_subcommand("convert", "convert an image to another format");
   sub->add_option("input", options->input, "image to read: .fsf .png .ppm .pfm .exr")->required();
   sub->add_option("output", options->output,
-                  "image to write, its format by extension or --format; - for standard output; "
+                  "image to write, its format by extension or --format (.gif: an animated GIF); - for "
+                  "standard output; "
                   "a name with %04d (or %d) writes every frame, one file each: turn-%04d.png")
       ->required();
   add_frame_option(*sub, "--frame", options->frame,
@@ -87,6 +110,10 @@ void add_convert(CLI::App& app, Command& command) {
                    "name; another single-frame output needs it for an animation)");
   add_format_option(*sub, options->format);
   add_exr_pixel_option(*sub, options->exr_pixel);
+  sub->add_option("--fps", options->fps,
+                  "frames per second of a GIF animation (default 25; GIF keeps hundredths of a "
+                  "second, so the delay is rounded to one)")
+      ->check(CLI::Range(0.1, 100.0));
   sub->callback([&command, options] { command = [options] { return convert(*options); }; });
 }
 

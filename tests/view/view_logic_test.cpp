@@ -1,0 +1,156 @@
+// clrt-view's logic without a window: tone mapping, layout and the pixel under the mouse, the
+// readout, playback and the keys.
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <limits>
+
+#include "controls.hpp"
+#include "readout.hpp"
+
+using namespace clrt;
+using namespace clrt::view;
+
+namespace {
+
+const FloatImage kTwoByOne{2, 1, {0.25f, 0.5f, 1.5f, -1.0f, 0.0f, 0.75f}};
+
+}  // namespace
+
+TEST_CASE("tone mapping at exposure 0 and gamma 1 gives the bytes clrt's PNG holds",
+          "[view][tone]") {
+  const FloatImage image{4, 1, {0.0f, 0.001f, 0.5f, 0.999f, 1.0f, 7.0f, -3.0f,
+                                std::numeric_limits<float>::quiet_NaN(),
+                                std::numeric_limits<float>::infinity(), 0.3f, 0.6f, 0.9f}};
+  const Rgba8Image bytes = quantize(image);
+  for (int i = 0; i < 4; ++i) {
+    const std::uint32_t pixel = tone_map_pixel(&image.rgb[3 * i], {});
+    CHECK((pixel >> 16) == bytes.frames[0][4 * i]);
+    CHECK(((pixel >> 8) & 0xff) == bytes.frames[0][4 * i + 1]);
+    CHECK((pixel & 0xff) == bytes.frames[0][4 * i + 2]);
+  }
+}
+
+TEST_CASE("exposure doubles per stop and gamma encodes, worked by hand", "[view][tone]") {
+  CHECK(tone_map_channel(0.25f, {1, 1}) == 128);       // 0.5 * 255 = 127.5, rounded up
+  CHECK(tone_map_channel(0.25f, {-1, 1}) == 32);       // 0.125 * 255 = 31.9
+  CHECK(tone_map_channel(0.5f, {0, 2.2}) == 186);      // 0.5^(1/2.2) = 0.7297
+  CHECK(tone_map_channel(0.25f, {1, 2.2}) == 186);
+  CHECK(tone_map_channel(3.0f, {0, 2.2}) == 255);      // clamped before the power
+  CHECK(tone_map_channel(-0.5f, {2, 2.2}) == 0);
+  CHECK(tone_map_channel(std::nanf(""), {1, 2.2}) == 0);
+}
+
+TEST_CASE("layout: one picture, or A and B side by side with their difference, and the pixel "
+          "under a point",
+          "[view][layout]") {
+  const AnyImage b = FloatImage{2, 1, {0.25f, 0.5f, 1.0f, -1.0f, 0.0f, 0.75f}};
+  const ViewSources sources = make_sources(kTwoByOne, &b);
+  ViewState state;
+  state.zoom = 10;
+  Layout layout = layout_view(state, sources);
+  CHECK(layout.width == 20);
+  CHECK(layout.height == 10);
+  REQUIRE(layout.places.size() == 1);
+  CHECK(layout.places[0].picture == Picture::A);
+
+  state.side_by_side = state.show_difference = true;
+  layout = layout_view(state, sources);
+  CHECK(layout.width == 3 * 20 + 2 * kGap);
+  REQUIRE(layout.places.size() == 3);
+  CHECK(layout.places[2].picture == Picture::Difference);
+  CHECK(layout.places[2].x == 2 * (20 + kGap));
+
+  const auto hit = hit_pixel(layout, 20 + kGap + 15, 9);
+  REQUIRE(hit);
+  CHECK(hit->picture == Picture::B);
+  CHECK(hit->x == 1);
+  CHECK(hit->y == 0);
+  CHECK_FALSE(hit_pixel(layout, 20, 5));  // the gap
+  CHECK_FALSE(hit_pixel(layout, 5, 10));  // below
+
+  const Canvas canvas = compose(layout, state, sources);
+  CHECK(canvas.at(20, 0) == kBackground);
+  CHECK(canvas.at(2 * (20 + kGap), 0) == 0x0000ffU);  // only blue of pixel 0 differs: 1 after scaling
+  CHECK(canvas.at(2 * (20 + kGap) + 10, 0) == 0x000000U);
+  CHECK(fitting_zoom(16, 12, 1) == 64);
+  CHECK(fitting_zoom(1920, 1080, 1) == 1);
+}
+
+TEST_CASE("images of different sizes cannot be compared", "[view][layout]") {
+  const AnyImage b = FloatImage{1, 1, {0, 0, 0}};
+  CHECK_THROWS_AS(make_sources(kTwoByOne, &b), ImageError);
+}
+
+TEST_CASE("the readout names the pictures, the frame, the tone and the values under the mouse",
+          "[view][readout]") {
+  const AnyImage b = FloatImage{2, 1, {0.25f, 0.5f, 1.0f, -1.0f, 0.0f, 0.75f}};
+  const ViewSources sources = make_sources(kTwoByOne, &b);
+  ViewState state;
+  state.tone = {1.5, 2.2};
+  CHECK(readout_text({"a.pfm", "b.pfm"}, sources, state, true, std::nullopt) ==
+        "A: a.pfm | exposure +1.5 gamma 2.2");
+  state.flipped = Picture::B;
+  CHECK(readout_text({"a.pfm", "b.pfm"}, sources, state, true, PixelHit{Picture::B, 0, 0}) ==
+        "B: b.pfm | exposure +1.5 gamma 2.2 | (0, 0) A 0.25 0.5 1.5 B 0.25 0.5 1 diff 0 0 1");
+
+  const Rgba8Image animation{1, 1, {{0, 0, 0, 255}, {255, 0, 0, 255}, {0, 0, 255, 255}}};
+  const ViewSources frames = make_sources(animation, nullptr);
+  state = {};
+  state.frame = 1;
+  CHECK(readout_text({"turn.fsf", ""}, frames, state, false, std::nullopt) ==
+        "turn.fsf | frame 2/3 paused | exposure +0.0 gamma 1.0");
+}
+
+TEST_CASE("playback advances by the frame rate and loops, a step by hand pauses it",
+          "[view][controls]") {
+  Playback playback;
+  playback.fps = 10;
+  int frame = 0;
+  frame = playback.advance(frame, 3, 0.05);
+  CHECK(frame == 0);
+  frame = playback.advance(frame, 3, 0.06);  // 0.11 s: one period
+  CHECK(frame == 1);
+  frame = playback.advance(frame, 3, 0.2);   // two more: past the last, back to 0
+  CHECK(frame == 0);
+
+  const Rgba8Image animation{1, 1, {{0, 0, 0, 255}, {255, 0, 0, 255}, {0, 0, 255, 255}}};
+  const ViewSources sources = make_sources(animation, nullptr);
+  ViewState state;
+  CHECK(apply_key(Key::PreviousFrame, state, playback, sources));
+  CHECK(state.frame == 2);
+  CHECK_FALSE(playback.playing);
+  CHECK(playback.advance(state.frame, 3, 1.0) == 2);
+  apply_key(Key::NextFrame, state, playback, sources);
+  CHECK(state.frame == 0);
+  apply_key(Key::PlayPause, state, playback, sources);
+  CHECK(playback.playing);
+}
+
+TEST_CASE("keys: exposure, gamma, flip, difference, side by side, zoom, quit", "[view][controls]") {
+  const AnyImage b = kTwoByOne;
+  const ViewSources two = make_sources(kTwoByOne, &b), one = make_sources(kTwoByOne, nullptr);
+  ViewState state;
+  Playback playback;
+  apply_key(Key::ExposureUp, state, playback, two);
+  apply_key(Key::ExposureUp, state, playback, two);
+  apply_key(Key::ExposureDown, state, playback, two);
+  CHECK(state.tone.exposure == kExposureStep);
+  apply_key(Key::Gamma, state, playback, two);
+  CHECK(state.tone.gamma == kDisplayGamma);
+  apply_key(Key::ExposureReset, state, playback, two);
+  CHECK((state.tone.exposure == 0 && state.tone.gamma == 1));
+  apply_key(Key::Flip, state, playback, two);
+  CHECK(state.flipped == Picture::B);
+  apply_key(Key::Difference, state, playback, two);
+  apply_key(Key::SideBySide, state, playback, two);
+  CHECK((state.show_difference && state.side_by_side));
+  ViewState alone;
+  apply_key(Key::Flip, alone, playback, one);
+  apply_key(Key::SideBySide, alone, playback, one);
+  CHECK((alone.flipped == Picture::A && !alone.side_by_side));  // nothing to compare with
+  apply_key(Key::ZoomOut, alone, playback, one);
+  CHECK(alone.zoom == 1);
+  apply_key(Key::ZoomIn, alone, playback, one);
+  CHECK(alone.zoom == 2);
+  CHECK_FALSE(apply_key(Key::Quit, alone, playback, one));
+}

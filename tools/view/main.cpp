@@ -1,0 +1,102 @@
+// clrt-view: a window on the images clrt writes, or on a render as it fills in
+// (docs/viewer.md). Exit status: 0 when the window is closed, 1 an image that cannot be read or
+// a window that cannot be opened, 2 a usage error.
+#include <CLI/CLI.hpp>
+
+#include <iostream>
+#include <optional>
+
+#include "cli/tool_command_line.hpp"
+#include "window.hpp"
+
+namespace {
+
+struct ViewOptions {
+  std::string a, b;
+  double exposure = 0, gamma = 1, fps = 25;
+  int frame = 1;
+  std::optional<int> zoom;
+  bool pause = false, side_by_side = false, difference = false, show_b = false, preview = false;
+};
+
+void add_options(CLI::App& app, ViewOptions& options) {
+  app.add_option("image", options.a, "image to show: .fsf .png .ppm .pfm .exr");
+  app.add_option("other", options.b, "a second image of the same size, to compare with the first");
+  app.add_option("--exposure", options.exposure, "stops to scale the values by (default 0)");
+  app.add_option("--gamma", options.gamma,
+                 "show value^(1/gamma) (default 1: the bytes clrt's PNG holds)")
+      ->check(CLI::Range(0.1, 10.0));
+  app.add_option("--frame", options.frame, "the frame to start at, from 1")
+      ->check(CLI::PositiveNumber);
+  app.add_option("--fps", options.fps, "frames per second of an animation (default 25)")
+      ->check(CLI::Range(0.1, 1000.0));
+  app.add_flag("--pause", options.pause, "start an animation paused");
+  app.add_option("--zoom", options.zoom,
+                 "screen pixels per image pixel (default: the most that fit 1024x768)")
+      ->check(CLI::Range(1, 256));
+  app.add_flag("--side-by-side", options.side_by_side, "two images: show them side by side");
+  app.add_flag("--difference", options.difference, "two images: show their difference");
+  app.add_flag("--flip", options.show_b, "two images: start on the second");
+  app.add_flag("--preview", options.preview,
+               "show the render clrt --preview streams on standard input");
+}
+
+int view(const ViewOptions& options) {
+  using namespace clrt::view;
+  if (options.preview != options.a.empty())
+    throw CLI::ValidationError(options.preview ? "--preview reads standard input: name no image"
+                                               : "name an image to show");
+  if (!options.b.empty() && options.preview)
+    throw CLI::ValidationError("--preview shows one render: name no image");
+  std::optional<PreviewFeed> feed;
+  ViewSources sources;
+  if (options.preview) {
+    feed.emplace(0);
+    sources.width = feed->width();
+    sources.height = feed->height();
+    sources.a.emplace_back(sources.width, sources.height,
+                           std::vector<float>(3 * std::size_t(sources.width) * sources.height));
+  } else {
+    const clrt::AnyImage a = clrt::read_any_image(options.a);
+    if (options.b.empty()) {
+      sources = make_sources(a, nullptr);
+    } else {
+      const clrt::AnyImage b = clrt::read_any_image(options.b);
+      sources = make_sources(a, &b);
+    }
+  }
+  ViewState state;
+  state.tone = {options.exposure, options.gamma};
+  state.side_by_side = options.side_by_side;
+  state.show_difference = options.difference;
+  state.flipped = options.show_b ? Picture::B : Picture::A;
+  state.frame = std::min(options.frame, sources.frame_count()) - 1;
+  const int pictures = state.side_by_side ? (state.show_difference ? 3 : 2) : 1;
+  state.zoom = options.zoom.value_or(fitting_zoom(sources.width, sources.height, pictures));
+  Playback playback;
+  playback.fps = options.fps;
+  playback.playing = !options.pause;
+  const ViewNames names{options.preview ? "clrt --preview" : options.a, options.b};
+  return run_window(sources, names, state, playback, feed ? &*feed : nullptr);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"Show the images clrt writes (FSF animations, PNG, PPM, PFM, OpenEXR), compare two, "
+               "or watch a render fill in (clrt --preview).",
+               "clrt-view"};
+  clrt::identify_tool(app);
+  ViewOptions options;
+  add_options(app, options);
+  if (const auto status = clrt::parse_tool_arguments(app, argc, argv)) return *status;
+  try {
+    return view(options);
+  } catch (const CLI::ValidationError& error) {
+    std::cerr << "clrt-view: error: " << error.what() << "\n";
+    return 2;
+  } catch (const std::exception& error) {
+    std::cerr << "clrt-view: error: " << error.what() << "\n";
+    return 1;
+  }
+}

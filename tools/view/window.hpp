@@ -1,0 +1,16 @@
+// The SDL window: the only code of clrt-view that talks to SDL. It maps keys and the mouse onto
+// controls.hpp and shows what view_layout.hpp composes.
+#pragma once
+
+#include "controls.hpp"
+#include "preview_feed.hpp"
+#include "readout.hpp"
+
+namespace clrt::view {
+
+// Runs until the window is closed or q is pressed; `feed`, when given, fills picture A as the
+// render comes. Returns the exit status (1 when no window could be opened, said on stderr).
+int run_window(ViewSources& sources, const ViewNames& names, ViewState state, Playback playback,
+               PreviewFeed* feed);
+
+}  // namespace clrt::view
