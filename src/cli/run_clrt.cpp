@@ -258,6 +258,10 @@ int run_clrt(const CliOptions& cli) {
   }
   if (device_error) std::rethrow_exception(device_error);
   check_outputs_are_not_inputs(output, frames, scene);
+  // An empty scene is a valid one (a background, a test of the camera), but more often a scene
+  // whose objects went missing: rendered, with a word.
+  if (!cli.quiet && scene.instances.empty() && scene.triangles.empty())
+    progress.message("clrt: warning: " + cli.scene + " has no objects: the image is its background");
   return naming_out_of_memory("building the scene's geometry or rendering", [&] {
     return render_frames(cli, scene, frames, output, stats, progress, devices, start);
   });

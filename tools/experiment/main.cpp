@@ -13,6 +13,7 @@
 #include <map>
 #include <thread>
 
+#include "scene/limits.hpp"
 #include "cli/tool_command_line.hpp"
 #include "cli/whole_number.hpp"
 #include "device/opencl.hpp"
@@ -130,7 +131,8 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   app.add_option("--resolution", plan.resolution, "WxH for every scene; `scene` keeps each scene's")
       ->capture_default_str();
-  app.add_option("--spp", plan.spp, "samples per pixel for every scene (default: each scene's)");
+  app.add_option("--spp", plan.spp, "samples per pixel for every scene (default: each scene's)")
+      ->transform(clrt::whole_number(1, clrt::limits::kMaxSamples));
   app.add_option("--mode", plan.mode, "clrt's --mode for every run: trace (default), cast or path")
       ->check(CLI::IsMember({"trace", "cast", "path"}));
   app.add_option("--format", plan.format, "image format clrt writes and the runner compares")

@@ -4,6 +4,7 @@
 #include <exception>
 #include <string>
 
+#include "cli/decimal_number.hpp"
 #include "cli/tool_command_line.hpp"
 #include "large_scenes.hpp"
 
@@ -16,7 +17,7 @@ int main(int argc, char** argv) {
   app.add_option("OUTDIR", folder, "folder to write into (created if missing)")
       ->capture_default_str();
   app.add_option("--scale", scale, "multiplies every sphere, triangle and instance count")
-      ->check(CLI::PositiveNumber)
+      ->check(clrt::positive_decimal_number())
       ->capture_default_str();
   if (const auto status = clrt::parse_tool_arguments(app, argc, argv)) return *status;
   try {
