@@ -6,6 +6,7 @@
 // the terminal and names its phases.
 #include <catch2/catch.hpp>
 
+#include <regex>
 #include <sstream>
 #include <string>
 #include <tuple>
@@ -266,4 +267,40 @@ TEST_CASE("on a terminal the progress line names its phases, fits the width and 
     ++redrawn;
   }
   CHECK(redrawn >= 3);
+}
+
+TEST_CASE("the kernel build is named as a phase when the program cache does not hold it",
+          "[cli][usage]") {
+  ScratchDir dir;
+  const std::string command = "stty cols 80; CLRT_CACHE_DIR=" + dir.file("cache") + " '" +
+                              std::string(CLRT_EXE) + "' " + quoted(test_scene("test2.ray")) +
+                              " --resolution 20x12 -o " + dir.file("out.png");
+  const auto run = [&] { return run_program("script", "-qec " + quoted(command) + " /dev/null"); };
+  const CommandResult cold = run();
+  INFO(cold.output);
+  REQUIRE(cold.exit_code == 0);
+  CHECK(cold.output.find("building kernels (first run on this device)") != std::string::npos);
+  const CommandResult warm = run();
+  REQUIRE(warm.exit_code == 0);
+  CHECK(warm.output.find("building kernels") == std::string::npos);
+}
+
+TEST_CASE("redirected, clrt prints its device in 80 columns and a line per image written",
+          "[cli][usage]") {
+  ScratchDir dir;
+  const std::string scene = quoted(test_scene("test2.ray")) + " --resolution 20x12 -o ";
+  const CommandResult still = run_clrt(scene + dir.file("out.png"));
+  INFO(still.output);
+  REQUIRE(still.exit_code == 0);
+  const std::string device_line = still.output.substr(0, still.output.find('\n'));
+  CHECK(device_line.rfind("device 0:", 0) == 0);
+  CHECK(device_line.size() <= 80);
+  CHECK(std::regex_search(still.output, std::regex("\nclrt: wrote " + dir.file("out.png") +
+                                                   " \\(20x12, [0-9.]+ s\\)\n$")));
+  const CommandResult turn = run_clrt(scene + dir.file("turn.png") + " --frames 2");
+  INFO(turn.output);
+  REQUIRE(turn.exit_code == 0);
+  CHECK(turn.output.find("clrt: wrote " + dir.file("turn-0001.png") + " (20x12, ") != std::string::npos);
+  CHECK(turn.output.find("clrt: wrote " + dir.file("turn-0002.png") + " (20x12, ") != std::string::npos);
+  CHECK(turn.output.find("clrt: wrote 2 frames as ") != std::string::npos);
 }
