@@ -3,12 +3,14 @@
 #include <cstdint>
 #include <filesystem>
 #include <map>
+#include <memory>
 #include <regex>
 #include <sstream>
 #include <tuple>
 #include <utility>
 
 #include "cli/argument_words.hpp"
+#include "cli/decimal_number.hpp"
 #include "cli/tool_command_line.hpp"
 #include "cli/whole_number.hpp"
 #include "render/integrator.hpp"
@@ -86,7 +88,7 @@ void add_shading_options(CLI::App& app, CliOptions& o) {
          "(Monte Carlo path tracing: indirect light, docs/path-tracing.md)")
       ->check(CLI::IsMember(modes, CLI::ignore_case));
   app.add_option("--seed", o.seed, "seed of the random numbers (jitter, area lights)")
-      ->transform(whole_number(0, UINT32_MAX))
+      ->transform(seed_number())
       ->capture_default_str();
 }
 
@@ -95,7 +97,8 @@ void add_animation_options(CLI::App& app, CliOptions& o) {
                  "render N frames of a turntable around lookat (FSF: one file; else name-0001.png...)")
       ->transform(whole_number(1, 1 << 24));
   app.add_option("--orbit", o.animation.orbit_degrees,
-                 "degrees the camera turns over all the frames (default 360)");
+                 "degrees the camera turns over all the frames (default 360)")
+      ->check(decimal_number());
   app.add_option("--frame-range", o.animation.frame_range,
                  "render frames FIRST:LAST only (from 1, inclusive), e.g. a farm's share");
 }
@@ -139,14 +142,12 @@ ParseResult parse_command_line(int argc, char** argv) {
   return parse_arguments({argv + 1, argv + argc}, true);
 }
 
-ParseResult parse_arguments(std::vector<std::string> args, bool print,
-                            const ProgramOptions& program) {
-  ParseResult result;
-  CliOptions& o = result.options;
-  CLI::App app{program.name + ": a wavefront OpenCL ray tracer for .ray and .nff scenes",
-               program.name};
-  identify_tool(app);
-  app.add_option("scene", o.scene, "the .ray or .nff scene to render");
+std::unique_ptr<CLI::App> clrt_command_line(CliOptions& o, StatsRequest& stats,
+                                            const ProgramOptions& program) {
+  auto app = std::make_unique<CLI::App>(
+      program.name + ": a wavefront OpenCL ray tracer for .ray and .nff scenes", program.name);
+  identify_tool(*app);
+  app->add_option("scene", o.scene, "the .ray or .nff scene to render");
   // --help lists the options in groups, in the order a render is set up.
   using AddOptions = void (*)(CLI::App&, CliOptions&);
   std::vector<std::pair<const char*, AddOptions>> groups = {{"Scene and image", add_image_options},
@@ -155,33 +156,40 @@ ParseResult parse_arguments(std::vector<std::string> args, bool print,
                                                             {"Output", add_output_options}};
   if (program.animation) groups.emplace_back("Animation", add_animation_options);
   for (const auto& [group, add] : groups) {
-    app.option_defaults()->group(group);
-    add(app, o);
+    app->option_defaults()->group(group);
+    add(*app, o);
   }
   if (program.preview)
     app.add_flag("--preview", o.preview,
                  "show the render as it fills in, in a clrt-view window (docs/viewer.md)")
         ->group("Output");
   if (program.add_own_options) {
-    app.option_defaults()->group(program.name);
-    program.add_own_options(app);
+    app->option_defaults()->group(program.name);
+    program.add_own_options(*app);
   }
-  app.option_defaults()->group("Diagnostics");
-  app.footer("Every option, its defaults and its pbrt spelling: docs/cli.md");
-  bool stats = false;
-  std::string stats_format = "text";
-  app.add_flag("--stats", stats,
-               "print rays by kind, times and queue sizes to stdout (--stats=json: as JSON)");
-  app.add_option("--stats-format", stats_format, "text or json")
+  app->option_defaults()->group("Diagnostics");
+  app->footer("Every option, its defaults and its pbrt spelling: docs/cli.md");
+  app->add_flag("--stats", stats.flag,
+                "print rays by kind, times and queue sizes to stdout (--stats=json: as JSON)");
+  app->add_option("--stats-format", stats.format, "text or json")
       ->check(CLI::IsMember({"text", "json"}));
-  app.add_flag("-q,--quiet", o.quiet, "print nothing but errors (no device line, no progress)");
+  app->add_flag("-q,--quiet", o.quiet, "print nothing but errors (no device line, no progress)");
+  return app;
+}
 
+ParseResult parse_arguments(std::vector<std::string> args, bool print,
+                            const ProgramOptions& program) {
+  ParseResult result;
+  CliOptions& o = result.options;
+  StatsRequest stats;
+  const std::unique_ptr<CLI::App> command_line = clrt_command_line(o, stats, program);
+  CLI::App& app = *command_line;
   result.exit_code =
       parse_tool_arguments(app, regular_argument_words(std::move(args)), print);
   if (result.exit_code) return result;
   try {
-    if (stats || app.count("--stats-format"))
-      o.stats = stats_format == "json" ? StatsFormat::Json : StatsFormat::Text;
+    if (stats.flag || app.count("--stats-format"))
+      o.stats = stats.format == "json" ? StatsFormat::Json : StatsFormat::Text;
     if (o.scene.empty() && !o.list_devices) throw CLI::RequiredError("scene");
     if (app.count("--outfile") && o.outfile.empty())
       throw CLI::ValidationError("-o", "the output's name is empty; -o none writes nothing");

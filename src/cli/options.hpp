@@ -2,6 +2,7 @@
 #pragma once
 
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -58,6 +59,17 @@ struct ProgramOptions {
   bool preview = true;    // --preview
   std::function<void(CLI::App&)> add_own_options;  // e.g. clrt-mpi's --tile
 };
+
+// --stats and --stats-format as given, before they are read into CliOptions::stats.
+struct StatsRequest {
+  bool flag = false;
+  std::string format = "text";
+};
+
+// The parser itself, filling `o` and `stats` when it parses: what --help lists, and what the
+// man page and the shell completion are generated from (tools/cli_docs/).
+std::unique_ptr<CLI::App> clrt_command_line(CliOptions& o, StatsRequest& stats,
+                                            const ProgramOptions& program = {});
 
 ParseResult parse_command_line(int argc, char** argv);
 // The words after the program's name; `print` false: no message (the MPI ranks but the first,

@@ -39,6 +39,13 @@ double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
+std::string seconds_text(double seconds) {
+  std::ostringstream text;
+  text.precision(2);
+  text << std::fixed << seconds << " s";
+  return text.str();
+}
+
 // Where frame `frame` goes: the output itself for a still or an FSF animation, else a numbered
 // file beside it.
 ImageOutput frame_output(const ImageOutput& output, const FramePlan& frames, std::uint32_t frame) {
@@ -135,7 +142,7 @@ int render_frames(const CliOptions& cli, Scene& scene, const FramePlan& frames,
                   Devices& devices, Clock::time_point start) {
   const RenderSetup setup = checked_render_setup(cli, scene, devices.entries);
   if (!cli.quiet)
-    for (const DeviceEntry& d : setup.devices) progress.message("device " + describe_device(d));
+    for (const DeviceEntry& d : setup.devices) progress.message(device_line(d));
   const PixelRect region = render_region(setup.options);
   check_output_space(output, frames, region);
   const std::unique_ptr<PreviewWindow> preview =
@@ -148,6 +155,8 @@ int render_frames(const CliOptions& cli, Scene& scene, const FramePlan& frames,
     animation = std::make_unique<FsfAnimationWriter>(output, static_cast<int>(region.width),
                                                      static_cast<int>(region.height),
                                                      frames.count());
+  const std::string size = std::to_string(region.width) + "x" + std::to_string(region.height);
+  if (frames.animated) progress.frames(frames.count());
   for (std::uint32_t frame = frames.first; frame <= frames.last; ++frame) {
     if (frames.animated)
       renderer.set_camera(make_camera(
@@ -169,6 +178,9 @@ int render_frames(const CliOptions& cli, Scene& scene, const FramePlan& frames,
         },
         image);
     stats.write_seconds += seconds_since(write_start);
+    if (frames.animated && !animation && !writes_nothing(output))
+      progress.log("clrt: wrote " + frame_output(output, frames, frame).path + " (" + size + ", " +
+                   seconds_text(seconds_since(start)) + ")");
   }
   if (animation) animation->finish();
   renderer.report(stats);
@@ -180,10 +192,8 @@ int render_frames(const CliOptions& cli, Scene& scene, const FramePlan& frames,
   struct rusage usage {};
   getrusage(RUSAGE_SELF, &usage);
   stats.peak_host_bytes = static_cast<std::uint64_t>(usage.ru_maxrss) * 1024;
-  std::ostringstream done;
-  done.precision(2);
-  done << std::fixed << describe_written(output, frames) << " (" << stats.total_seconds << " s)";
-  progress.finish(done.str());
+  progress.finish("clrt: " + describe_written(output, frames) + " (" + size + ", " +
+                  seconds_text(stats.total_seconds) + ")");
   print_stats(cli, stats, output);
   return 0;
 }
@@ -254,8 +264,11 @@ int run_clrt(const CliOptions& cli) {
     const auto prepare_start = Clock::now();
     naming_out_of_memory("starting the devices", [&] {
       devices.entries = select_devices(cli.device);
-      devices.prepared = prepare_devices(devices.entries);
+      devices.prepared = prepare_devices(
+          devices.entries, [&] { progress.phase("building kernels (first run on this device)"); });
     });
+    if (loading.wait_for(std::chrono::seconds(0)) != std::future_status::ready)
+      progress.phase("loading " + cli.scene);
     devices.seconds = seconds_since(prepare_start);
   } catch (...) {
     device_error = std::current_exception();
@@ -271,6 +284,10 @@ int run_clrt(const CliOptions& cli) {
   }
   if (device_error) std::rethrow_exception(device_error);
   check_outputs_are_not_inputs(output, frames, scene);
+  // An empty scene is a valid one (a background, a test of the camera), but more often a scene
+  // whose objects went missing: rendered, with a word.
+  if (!cli.quiet && scene.instances.empty() && scene.triangles.empty())
+    progress.message("clrt: warning: " + cli.scene + " has no objects: the image is its background");
   return naming_out_of_memory("building the scene's geometry or rendering", [&] {
     return render_frames(cli, scene, frames, output, stats, progress, devices, start);
   });

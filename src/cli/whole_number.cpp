@@ -1,6 +1,7 @@
 #include "cli/whole_number.hpp"
 
 #include <cstdlib>
+#include <limits>
 
 namespace clrt {
 
@@ -12,17 +13,34 @@ std::optional<std::int64_t> parse_whole_number(const std::string& text) {
   return static_cast<std::int64_t>(std::strtoll(text.c_str(), nullptr, 10));
 }
 
-CLI::Validator whole_number(std::int64_t min, std::int64_t max) {
-  const std::string range = std::to_string(min) + " to " + std::to_string(max);
+namespace {
+
+// `not_number` and `outside` follow the word the user gave.
+CLI::Validator whole_number_worded(std::int64_t min, std::int64_t max, std::string not_number,
+                                   std::string outside) {
   return CLI::Validator(
-      [min, max, range](std::string& text) {
+      [=](std::string& text) {
         const std::optional<std::int64_t> value = parse_whole_number(text);
-        if (!value) return text + " is not a whole number";
-        if (*value < min || *value > max) return text + " is not in the range " + range;
+        if (!value) return text + not_number;
+        if (*value < min || *value > max) return text + outside;
         text = std::to_string(*value);
         return std::string();
       },
-      range);
+      std::to_string(min) + " to " + std::to_string(max));
+}
+
+}  // namespace
+
+CLI::Validator whole_number(std::int64_t min, std::int64_t max) {
+  return whole_number_worded(min, max, " is not a whole number",
+                             " is not in the range " + std::to_string(min) + " to " +
+                                 std::to_string(max));
+}
+
+CLI::Validator seed_number() {
+  const std::string accepted = " is not a seed: seeds are the whole numbers 0 to " +
+                               std::to_string(std::numeric_limits<std::uint32_t>::max());
+  return whole_number_worded(0, std::numeric_limits<std::uint32_t>::max(), accepted, accepted);
 }
 
 }  // namespace clrt

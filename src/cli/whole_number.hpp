@@ -20,4 +20,8 @@ std::optional<std::int64_t> parse_whole_number(const std::string& text);
 // would read 010 as octal 8 and 0x10 as 16.
 CLI::Validator whole_number(std::int64_t min, std::int64_t max);
 
+// A seed of the random numbers: 0 to 2^32 - 1, whatever the word's fault, said as
+// "-1 is not a seed: seeds are the whole numbers 0 to 4294967295".
+CLI::Validator seed_number();
+
 }  // namespace clrt

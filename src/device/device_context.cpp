@@ -102,7 +102,8 @@ std::string device_program_options(const compute::device& device) {
   return out;
 }
 
-compute::program DeviceContext::build(const std::string& source, const std::string& options) const {
+compute::program DeviceContext::build(const std::string& source, const std::string& options,
+                                      const std::function<void()>& compiling) const {
   const std::string all_options = std::string(kProgramOptions) + device_program_options(entry_.device) +
                                   (options.empty() ? "" : " " + options);
   std::optional<ProgramCache> cache;
@@ -110,6 +111,7 @@ compute::program DeviceContext::build(const std::string& source, const std::stri
     cache.emplace(*folder, program_identity(entry_.device, source, all_options));
   if (cache)
     if (auto program = build_cached(*cache, context_, entry_.device, all_options)) return *program;
+  if (compiling) compiling();
   compute::program program = compute::program::create_with_source(source, context_);
   const cl_int status = clBuildProgram(program.get(), 1, &entry_.device.get(), all_options.c_str(),
                                        nullptr, nullptr);

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
 #include <string>
 
 #include "device/device_select.hpp"
@@ -24,9 +25,11 @@ class DeviceContext {
   compute::command_queue& queue() { return queue_; }
   std::string name() const { return entry_.device.name(); }
 
-  // Builds `source` (already assembled, see kernel_source.hpp). A failure throws DeviceError
-  // with the device's whole build log.
-  compute::program build(const std::string& source, const std::string& options = "") const;
+  // Builds `source` (already assembled, see kernel_source.hpp), from the program cache when it
+  // holds it; else `compiling` is called first, since compiling takes seconds where loading
+  // takes milliseconds. A failure throws DeviceError with the device's whole build log.
+  compute::program build(const std::string& source, const std::string& options = "",
+                         const std::function<void()>& compiling = {}) const;
 
   // A device buffer of `bytes`; `what` names it in the error when the device refuses.
   compute::buffer allocate(std::size_t bytes, const std::string& what) const;

@@ -108,6 +108,36 @@ std::string describe_device(const DeviceEntry& e) {
   return out.str();
 }
 
+namespace {
+
+// `text` cut to `width` characters, the cut shown by "...".
+std::string shortened(const std::string& text, std::size_t width) {
+  if (text.size() <= width) return text;
+  return width > 3 ? text.substr(0, width - 3) + "..." : text.substr(0, width);
+}
+
+}  // namespace
+
+std::string device_line(const DeviceEntry& e, std::size_t columns) {
+  const compute::device& d = e.device;
+  std::ostringstream details;
+  details.precision(1);
+  details << std::fixed << " (" << type_name(d) << ", " << d.compute_units() << " units, "
+          << static_cast<double>(d.global_memory_size()) / (1 << 30) << " GiB) on ";
+  const std::string head = "device " + std::to_string(e.platform_index) + ":" +
+                           std::to_string(e.device_index) + " ";
+  const std::size_t fixed_part = head.size() + details.str().size();
+  const std::size_t room = columns > fixed_part ? columns - fixed_part : 0;
+  // The device's name matters most; the platform gives way first, to no less than 12 characters.
+  const std::string name = d.name(), platform = d.platform().name();
+  const std::size_t platform_room =
+      name.size() + platform.size() <= room ? platform.size()
+                                            : std::max<std::size_t>(12, room > name.size() ? room - name.size() : 0);
+  const std::string short_platform = shortened(platform, platform_room);
+  const std::size_t name_room = room > short_platform.size() ? room - short_platform.size() : 0;
+  return (head + shortened(name, name_room) + details.str() + short_platform).substr(0, columns);
+}
+
 std::string device_table(const std::vector<DeviceEntry>& devices) {
   std::string out;
   for (const DeviceEntry& e : devices) out += "  " + describe_device(e) + "\n";

@@ -26,6 +26,10 @@ std::vector<DeviceEntry> select_devices(const std::string& spec);
 // "P:D  NAME (TYPE, N compute units, M MiB, OpenCL C X) on PLATFORM"
 std::string describe_device(const DeviceEntry& entry);
 
+// The line a render names its device with, at most `columns` wide: "device P:D NAME (TYPE, N
+// units, M GiB) on PLATFORM", the device's name cut short ("...") when the line would be wider.
+std::string device_line(const DeviceEntry& entry, std::size_t columns = 80);
+
 // The --list-devices table.
 std::string device_table(const std::vector<DeviceEntry>& devices);
 

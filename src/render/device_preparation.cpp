@@ -4,12 +4,13 @@
 
 namespace clrt {
 
-std::vector<PreparedDevice> prepare_devices(const std::vector<DeviceEntry>& devices) {
+std::vector<PreparedDevice> prepare_devices(const std::vector<DeviceEntry>& devices,
+                                            const std::function<void()>& compiling) {
   std::vector<PreparedDevice> prepared;
   for (const DeviceEntry& entry : devices) {
     PreparedDevice d;
     d.context = std::make_unique<DeviceContext>(entry);
-    d.program = build_renderer_program(*d.context);
+    d.program = build_renderer_program(*d.context, compiling);
     prepared.push_back(std::move(d));
   }
   return prepared;

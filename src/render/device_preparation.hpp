@@ -3,6 +3,7 @@
 // 25 ms) and the build (about 30 ms from a warm kernel cache) can run while the scene loads.
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -16,7 +17,9 @@ struct PreparedDevice {
   compute::program program;
 };
 
-// Throws DeviceError with the build log of a program that does not build.
-std::vector<PreparedDevice> prepare_devices(const std::vector<DeviceEntry>& devices);
+// Throws DeviceError with the build log of a program that does not build. `compiling` is called
+// before a device's program is compiled from source (the program cache does not hold it).
+std::vector<PreparedDevice> prepare_devices(const std::vector<DeviceEntry>& devices,
+                                            const std::function<void()>& compiling = {});
 
 }  // namespace clrt

@@ -36,6 +36,7 @@ Progress::Progress(bool enabled)
                       terminal_columns},
                std::chrono::steady_clock::now) {
   enabled_ = enabled && isatty(STDERR_FILENO);
+  speaking_ = enabled;
 }
 
 Progress::Progress(Output output, Clock clock)
@@ -63,7 +64,15 @@ void Progress::start(const std::string& name, std::uint64_t total) {
   total_ = total;
   done_ = first_done_ = 0;
   start_ = clock_();
+  if (frames_ > 0) ++frame_;
   draw(true);
+}
+
+void Progress::frames(std::uint32_t count) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  frames_ = count;
+  frame_ = 0;
+  all_first_done_ = 0;
 }
 
 void Progress::advance(std::uint64_t done) {
@@ -73,6 +82,10 @@ void Progress::advance(std::uint64_t done) {
   if (first_done_ == 0) {
     first_done_ = done_;
     first_ = clock_();
+  }
+  if (frames_ > 0 && all_first_done_ == 0) {
+    all_first_done_ = (frame_ - 1) * total_ + done_;
+    all_first_ = first_;
   }
   draw(done_ >= total_);
 }
@@ -104,6 +117,7 @@ void Progress::draw(bool force) {
       const double rate = static_cast<double>(done_ - first_done_) / since_first;
       text += ", " + duration_text(static_cast<double>(total_ - done_) / rate) + " left";
     }
+    text += time_left_of_all(now);
     const int bar = columns - static_cast<int>(line.size() + text.size()) - 3;
     if (bar >= 10) {
       const int filled = static_cast<int>(fraction * bar);
@@ -114,6 +128,18 @@ void Progress::draw(bool force) {
   if (static_cast<int>(line.size()) > columns) line.resize(std::max(0, columns));
   output_.write("\r\033[K" + line);
   drawn_ = true;
+}
+
+// Over the frames, from the rate since the first piece of the first frame drawn: each frame has
+// the same pixels.
+std::string Progress::time_left_of_all(std::chrono::steady_clock::time_point now) const {
+  if (frames_ < 2 || frame_ == 0 || all_first_done_ == 0) return "";
+  const std::uint64_t all = static_cast<std::uint64_t>(frames_) * total_;
+  const std::uint64_t done = (frame_ - 1) * total_ + done_;
+  const double since_first = std::chrono::duration<double>(now - all_first_).count();
+  if (done <= all_first_done_ || done >= all || since_first <= 0) return "";
+  const double rate = static_cast<double>(done - all_first_done_) / since_first;
+  return ", all frames " + duration_text(static_cast<double>(all - done) / rate) + " left";
 }
 
 void Progress::clear() {
@@ -130,8 +156,16 @@ void Progress::message(const std::string& text) {
   if (redraw) draw(true);
 }
 
+void Progress::log(const std::string& text) {
+  if (enabled_ || !speaking_) return;
+  output_.write(text + "\n");
+}
+
 void Progress::finish(const std::string& message) {
-  if (!enabled_) return;
+  if (!enabled_) {
+    if (speaking_ && !message.empty()) output_.write(message + "\n");
+    return;
+  }
   std::lock_guard<std::mutex> lock(mutex_);
   clear();
   if (!message.empty()) output_.write(message + "\n");

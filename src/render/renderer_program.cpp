@@ -5,9 +5,10 @@
 
 namespace clrt {
 
-compute::program build_renderer_program(const DeviceContext& device) {
-  return device.build(renderer_program_source(),
-                      tuning_for(device.device()).program_options());
+compute::program build_renderer_program(const DeviceContext& device,
+                                        const std::function<void()>& compiling) {
+  return device.build(renderer_program_source(), tuning_for(device.device()).program_options(),
+                      compiling);
 }
 
 }  // namespace clrt

@@ -2,10 +2,14 @@
 // device's class (src/device/device_tuning.cpp), so every scene shares one cached build.
 #pragma once
 
+#include <functional>
+
 #include "device/device_context.hpp"
 
 namespace clrt {
 
-compute::program build_renderer_program(const DeviceContext& device);
+// `compiling` as DeviceContext::build() calls it: when the program cache does not hold it.
+compute::program build_renderer_program(const DeviceContext& device,
+                                        const std::function<void()>& compiling = {});
 
 }  // namespace clrt

@@ -8,7 +8,8 @@
 
 namespace clrt {
 
-// The whole file; a SceneError at 1:1 when it cannot be read (missing, a folder, a read error).
+// The whole file; a SceneError for the file as a whole when it cannot be read (missing, a
+// folder, a read error) or is no text (an image given as the scene).
 std::string read_scene_file(const FileSource& files, const std::string& path);
 
 Scene load_ray_scene(const std::string& path, const FileSource& files);

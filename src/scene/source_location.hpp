@@ -3,16 +3,22 @@
 
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace clrt {
 
 struct SourceLocation {
   std::string file;  // as the user named it (scene path, or mesh path as resolved)
   int line = 1;      // 1-based
-  int column = 1;    // 1-based, counting bytes
+  int column = 1;    // 1-based, counting bytes; line and column 0: the file as a whole
+
+  // A fault of the whole file (it cannot be read, it is no scene at all), which has no line
+  // to point at.
+  static SourceLocation whole_file(std::string file) { return {std::move(file), 0, 0}; }
 };
 
-// A bad scene or mesh: what() is "FILE:LINE:COLUMN: error: MESSAGE".
+// A bad scene or mesh: what() is "FILE:LINE:COLUMN: error: MESSAGE", or "FILE: error: MESSAGE"
+// for the file as a whole.
 class SceneError : public std::runtime_error {
  public:
   SceneError(SourceLocation where, const std::string& message);

@@ -40,6 +40,21 @@ TEST_CASE("describe_device names index, device, type, units, memory and OpenCL C
   CHECK(text.find("OpenCL C") != std::string::npos);
 }
 
+TEST_CASE("the device line of a render fits 80 columns, naming index, device and platform",
+          "[device]") {
+  const DeviceEntry entry = select_devices("cpu").front();
+  const std::string line = device_line(entry);
+  INFO(line);
+  CHECK(line.size() <= 80);
+  CHECK(line.rfind("device 0:", 0) == 0);
+  CHECK(line.find(" units, ") != std::string::npos);
+  CHECK(line.find(entry.device.name()) != std::string::npos);  // the name gives way last
+  CHECK(line.find(" GiB) on " + entry.device.platform().name().substr(0, 9)) != std::string::npos);
+  const std::string narrow = device_line(entry, 60);
+  CHECK(narrow.size() <= 60);
+  CHECK(narrow.find("...") != std::string::npos);
+}
+
 TEST_CASE("a kernel build failure carries the whole build log with the real file name",
           "[device]") {
   const std::string source = "#line 1 \"kernels/broken.cl\"\n__kernel void f(__global int* x) {\n"

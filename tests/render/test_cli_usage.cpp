@@ -6,8 +6,10 @@
 // the terminal and names its phases.
 #include <catch2/catch.hpp>
 
+#include <regex>
 #include <sstream>
 #include <string>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -75,14 +77,20 @@ TEST_CASE("an unknown option is named, with the nearest real one when one is clo
   }
 }
 
-TEST_CASE("a count that is no number says so, one out of range names the range",
+TEST_CASE("a number that is no number says so, one out of range names the range",
           "[cli][usage]") {
   ScratchDir dir;
   for (const auto& [args, message] : std::vector<std::pair<std::string, std::string>>{
            {"--spp abc", "clrt: error: --spp: abc is not a whole number\n"},
            {"--spp 2.5", "clrt: error: --spp: 2.5 is not a whole number\n"},
            {"--spp 0", "clrt: error: --spp: 0 is not in the range 1 to 65536\n"},
-           {"--seed x1", "clrt: error: --seed: x1 is not a whole number\n"},
+           {"--seed x1", "clrt: error: --seed: x1 is not a seed: seeds are the whole numbers 0 to "
+                         "4294967295\n"},
+           {"--seed -1", "clrt: error: --seed: -1 is not a seed: seeds are the whole numbers 0 to "
+                         "4294967295\n"},
+           {"--orbit abc", "clrt: error: --orbit: abc is not a number\n"},
+           {"--orbit 1e999", "clrt: error: --orbit: 1e999 is not a number\n"},
+           {"--orbit nan", "clrt: error: --orbit: nan is not a number\n"},
            {"--frames -3", "clrt: error: --frames: -3 is not in the range 1 to 16777216\n"}}) {
     const CommandResult r = run_clrt(args + " " + scene_args(dir));
     INFO(args << ": " << r.output);
@@ -93,6 +101,46 @@ TEST_CASE("a count that is no number says so, one out of range names the range",
   const CommandResult ten = run_clrt("--spp 010 --stats -q " + scene_args(dir));
   CHECK(ten.exit_code == 0);
   CHECK(ten.output.find("(20x12, 10 samples per pixel)") != std::string::npos);
+}
+
+TEST_CASE("every tool words a bad number as clrt does", "[cli][usage]") {
+  for (const auto& [tool, args, message] : std::vector<std::tuple<std::string, std::string, std::string>>{
+           {CLRT_IMG_EXE, "diff a.png b.png --threshold x",
+            "clrt-img: error: --threshold: x is not a number\n"},
+           {CLRT_IMG_EXE, "diff a.png b.png --threshold -1",
+            "clrt-img: error: --threshold: -1 is less than 0\n"},
+           {CLRT_MAKE_SCENES_EXE, "--scale 0", "clrt-make-scenes: error: --scale: 0 is not above 0\n"},
+           {CLRT_EXPERIMENT_EXE, "--spp abc s.ray",
+            "clrt-experiment: error: --spp: abc is not a whole number\n"},
+           {CLRT_BENCH_EXE, "bvh --runs 1.5", "clrt-bench: error: --runs: 1.5 is not a whole number\n"}}) {
+    const CommandResult r = run_program(tool, args);
+    INFO(tool << " " << args << ": " << r.output);
+    CHECK(r.exit_code == 2);
+    CHECK(r.output.rfind(message, 0) == 0);
+  }
+}
+
+TEST_CASE("a scene that is missing or no text is named without a line; an empty one is rendered "
+          "with a warning",
+          "[cli][usage]") {
+  ScratchDir dir;
+  const std::string out = " -o " + dir.file("out.png");
+  const CommandResult missing = run_clrt(quoted(dir.file("nosuch.ray")) + out);
+  CHECK(missing.exit_code == 2);
+  CHECK(missing.output == dir.file("nosuch.ray") +
+                              ": error: cannot read the scene file (No such file or directory)\n");
+  REQUIRE(run_clrt(quoted(test_scene("test2.ray")) + " -q --resolution 8x8 -o " + dir.file("r.png"))
+              .exit_code == 0);
+  const CommandResult png = run_clrt(quoted(dir.file("r.png")) + out);
+  CHECK(png.exit_code == 2);
+  CHECK(png.output == dir.file("r.png") + ": error: this is a PNG image, not a scene\n");
+  const std::string empty = dir.write("empty.ray", "# nothing yet\nbackground 0.2 0.2 0.2\n");
+  const CommandResult warned = run_clrt(quoted(empty) + " --resolution 8x8" + out);
+  INFO(warned.output);
+  CHECK(warned.exit_code == 0);
+  CHECK(warned.output.find("clrt: warning: " + empty + " has no objects: the image is its background\n") !=
+        std::string::npos);
+  CHECK(run_clrt(quoted(empty) + " -q --resolution 8x8" + out).output.empty());
 }
 
 TEST_CASE("pbrt's spellings --outfile, --nthreads, --pixelbounds and --cropwindow work",
@@ -219,4 +267,40 @@ TEST_CASE("on a terminal the progress line names its phases, fits the width and 
     ++redrawn;
   }
   CHECK(redrawn >= 3);
+}
+
+TEST_CASE("the kernel build is named as a phase when the program cache does not hold it",
+          "[cli][usage]") {
+  ScratchDir dir;
+  const std::string command = "stty cols 80; CLRT_CACHE_DIR=" + dir.file("cache") + " '" +
+                              std::string(CLRT_EXE) + "' " + quoted(test_scene("test2.ray")) +
+                              " --resolution 20x12 -o " + dir.file("out.png");
+  const auto run = [&] { return run_program("script", "-qec " + quoted(command) + " /dev/null"); };
+  const CommandResult cold = run();
+  INFO(cold.output);
+  REQUIRE(cold.exit_code == 0);
+  CHECK(cold.output.find("building kernels (first run on this device)") != std::string::npos);
+  const CommandResult warm = run();
+  REQUIRE(warm.exit_code == 0);
+  CHECK(warm.output.find("building kernels") == std::string::npos);
+}
+
+TEST_CASE("redirected, clrt prints its device in 80 columns and a line per image written",
+          "[cli][usage]") {
+  ScratchDir dir;
+  const std::string scene = quoted(test_scene("test2.ray")) + " --resolution 20x12 -o ";
+  const CommandResult still = run_clrt(scene + dir.file("out.png"));
+  INFO(still.output);
+  REQUIRE(still.exit_code == 0);
+  const std::string device_line = still.output.substr(0, still.output.find('\n'));
+  CHECK(device_line.rfind("device 0:", 0) == 0);
+  CHECK(device_line.size() <= 80);
+  CHECK(std::regex_search(still.output, std::regex("\nclrt: wrote " + dir.file("out.png") +
+                                                   " \\(20x12, [0-9.]+ s\\)\n$")));
+  const CommandResult turn = run_clrt(scene + dir.file("turn.png") + " --frames 2");
+  INFO(turn.output);
+  REQUIRE(turn.exit_code == 0);
+  CHECK(turn.output.find("clrt: wrote " + dir.file("turn-0001.png") + " (20x12, ") != std::string::npos);
+  CHECK(turn.output.find("clrt: wrote " + dir.file("turn-0002.png") + " (20x12, ") != std::string::npos);
+  CHECK(turn.output.find("clrt: wrote 2 frames as ") != std::string::npos);
 }

@@ -68,3 +68,26 @@ TEST_CASE("the progress line fits the width it is given", "[progress]") {
   progress.finish("wrote out.png");
   CHECK(terminal.text.substr(terminal.text.size() - 14) == "wrote out.png\n");
 }
+
+TEST_CASE("over an animation's frames the line also tells the time left for all of them",
+          "[progress]") {
+  FakeTerminal terminal;
+  terminal.columns = 120;
+  Progress progress = terminal.progress();
+  progress.frames(3);
+  progress.start("frame 1/3", 100);
+  terminal.wait(2.0);  // one-off costs before the first piece, as for a single frame
+  progress.advance(10);
+  CHECK(terminal.line().find("all frames") == std::string::npos);
+  terminal.wait(1.0);
+  progress.advance(50);
+  // 50 pieces a second: 40 left of this frame, 240 of all three.
+  CHECK(terminal.line().find("0.8 s left, all frames 4.8 s left") != std::string::npos);
+  progress.advance(40);
+  progress.phase("writing");
+  progress.start("frame 2/3", 100);
+  terminal.wait(1.0);
+  progress.advance(50);
+  // 140 pieces in 2 s since the first: 150 to go.
+  CHECK(terminal.line().find("all frames 2.1 s left") != std::string::npos);
+}

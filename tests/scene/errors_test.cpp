@@ -48,18 +48,17 @@ TEST_CASE("too few arguments: the error points just past the last word", "[scene
   require_error("scale\t2 2\r\n", 1, 10, "wrong number of arguments");
 }
 
-TEST_CASE("a scene file that cannot be read is reported at 1:1", "[scene][errors]") {
+TEST_CASE("a scene file that cannot be read is reported without a line", "[scene][errors]") {
   ScratchDir dir;
   const std::string missing = dir.file("no-such-scene.ray");
   const clrt::SceneError e = load_error_of_file(missing);
   CHECK(e.where().file == missing);
-  CHECK(e.where().line == 1);
-  CHECK(e.where().column == 1);
-  CHECK_THAT(e.message(), Catch::Contains("cannot read"));
+  CHECK(e.where().line == 0);
+  CHECK(std::string(e.what()) ==
+        missing + ": error: cannot read the scene file (No such file or directory)");
 
   const clrt::SceneError folder_error = load_error_of_file(dir.path().string());
-  CHECK(folder_error.where().line == 1);
-  CHECK(folder_error.where().column == 1);
+  CHECK(folder_error.where().line == 0);
   CHECK_THAT(folder_error.message(), Catch::Contains("folder"));
 }
 
@@ -81,4 +80,25 @@ TEST_CASE("a UTF-8 byte order mark at the start of a scene file is skipped", "[s
   CHECK(e.where().column == 1);
   // Elsewhere it is no mark but bytes of a word.
   require_error("sphere\n" + mark + "sphere\n", 2, 1, "unknown command '" + mark + "sphere'");
+}
+
+TEST_CASE("a file that is no text is refused before it is read as a scene", "[scene][errors]") {
+  const std::string png = std::string("\x89PNG\r\n\x1a\n\0\0\0\rIHDR", 16) + "\"";
+  CHECK(std::string(load_error(png, "r.png").what()).find(": error: this is a PNG image, not a scene") !=
+        std::string::npos);
+  CHECK(load_error(png, "r.png").where().line == 0);
+  CHECK(load_error(std::string("\x76\x2f\x31\x01\x02", 5)).message() ==
+        "this is an OpenEXR image, not a scene");
+  CHECK(load_error(std::string("\x3f\x02\0\0\x10\0\0\0", 8)).message() ==
+        "this is an FSF image, not a scene");
+  CHECK(load_error("\x1f\x8b\x08").message() == "this is a gzip archive, not a scene");
+  require_error(std::string("sphere\neye 0\0 0 5\n", 18), 2, 6,
+                "a NUL byte, which is not UTF-8 text: this is not a scene file");
+  require_error("# caf\xe9\nsphere\n", 1, 6, "the byte 0xe9, which is not UTF-8 text");
+  require_error("sphere\n\xc0\xaf\n", 2, 1, "the byte 0xc0");  // an overlong '/'
+  require_error("sphere # \xe2\x82\n", 1, 10, "the byte 0xe2");  // cut short at the line's end
+}
+
+TEST_CASE("UTF-8 text beyond ASCII is a scene's text", "[scene][errors]") {
+  CHECK(clrt::test::load_text("# caf\xc3\xa9, \xe2\x82\xac, \xf0\x9f\x8e\xa5\nsphere\n").instances.size() == 1);
 }

@@ -90,7 +90,7 @@ TEST_CASE("coordinates whose products would overflow single precision are errors
 TEST_CASE("a scene that is not a regular file is refused before it is read", "[scene][limits]") {
   SECTION("/dev/zero, which would be read until memory runs out") {
     const SceneError e = load_error_of_file("/dev/zero");
-    CHECK(e.where().line == 1);
+    CHECK(e.where().line == 0);
     CHECK_THAT(e.message(), Catch::Contains("cannot read the scene file (it is not a regular file)"));
   }
   SECTION("a FIFO, whose open would wait for a writer") {

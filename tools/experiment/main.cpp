@@ -13,6 +13,7 @@
 #include <map>
 #include <thread>
 
+#include "scene/limits.hpp"
 #include "cli/tool_command_line.hpp"
 #include "cli/whole_number.hpp"
 #include "device/opencl.hpp"
@@ -49,14 +50,16 @@ void write_file(const fs::path& path, const std::string& text) {
   if (!out) throw std::runtime_error("cannot write " + path.string());
 }
 
-// Installed, clrt and the plot script sit beside this program (bin/, share/clrt/); in the build
-// tree they are where the build put them.
-std::string installed_or(const fs::path& relative, const std::string& built) {
+// clrt and the plot script are found from this program's own place, never from where it was
+// built: installed, beside it (bin/, share/clrt/); in a build tree, where that tree put them
+// (`in_build_tree`, relative), so that a copied or moved tree runs its own clrt. The first
+// place, when neither exists, so that the error names it.
+std::string beside_self(const fs::path& installed, const fs::path& in_build_tree) {
   std::error_code error;
-  const fs::path self = fs::read_symlink("/proc/self/exe", error);
-  if (!error && fs::exists(self.parent_path() / relative))
-    return (self.parent_path() / relative).lexically_normal().string();
-  return built;
+  const fs::path here = fs::read_symlink("/proc/self/exe", error).parent_path();
+  for (const fs::path& relative : {installed, in_build_tree})
+    if (fs::exists(here / relative)) return (here / relative).lexically_normal().string();
+  return (here / installed).lexically_normal().string();
 }
 
 std::string image_name(const RunKey& k, const std::string& format) {
@@ -83,7 +86,8 @@ nlohmann::json run_plan(const Plan& plan) {
           std::cerr << "[" << ++done << "/" << total << "] " << plan.scenes[s] << " on "
                     << plan.devices[d].spec << ", " << plan.variants[v].name() << ": ";
           if (record["exit_code"] != 0) {
-            std::cerr << "failed (exit " << record["exit_code"] << ")\n";
+            std::cerr << "failed (exit " << record["exit_code"] << "): " << failure_message(record)
+                      << "\n";
           } else if (!reference.count(s)) {
             reference[s] = image;
             record["validation"] = {{"reference", image}, {"identical", true}, {"flagged", false}};
@@ -109,10 +113,10 @@ int main(int argc, char** argv) {
   std::vector<std::string> scene_paths, device_specs = {"cpu"}, extras;
   std::string integrators = "wavefront", wavefronts, local_sizes, python = CLRT_PYTHON3;
   const std::string plot_script =
-      installed_or("../share/clrt/plot_experiment.py", CLRT_PLOT_SCRIPT);
+      beside_self("../share/clrt/plot_experiment.py", "plot_experiment.py");
   bool plots = true;
   Plan plan;
-  plan.clrt = installed_or("clrt", CLRT_EXE);
+  plan.clrt = beside_self("clrt", CLRT_FROM_BUILT_EXPERIMENT);
   plan.resolution = "1280x720";
   plan.out_dir = "experiment";
   app.add_option("scenes", scene_paths, ".ray or .nff files, or folders of them")->required();
@@ -130,7 +134,8 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   app.add_option("--resolution", plan.resolution, "WxH for every scene; `scene` keeps each scene's")
       ->capture_default_str();
-  app.add_option("--spp", plan.spp, "samples per pixel for every scene (default: each scene's)");
+  app.add_option("--spp", plan.spp, "samples per pixel for every scene (default: each scene's)")
+      ->transform(clrt::whole_number(1, clrt::limits::kMaxSamples));
   app.add_option("--mode", plan.mode, "clrt's --mode for every run: trace (default), cast or path")
       ->check(CLI::IsMember({"trace", "cast", "path"}));
   app.add_option("--format", plan.format, "image format clrt writes and the runner compares")
@@ -170,6 +175,7 @@ int main(int argc, char** argv) {
     results["runs"] = runs;
     results["summary"] = summarize(runs);
     results["scores"] = device_scores(results["summary"]);
+    results["title"] = experiment_title(results);
     const fs::path out(plan.out_dir);
     write_file(out / "results.json", results.dump(2) + "\n");
     write_file(out / "runs.csv", runs_csv(runs));

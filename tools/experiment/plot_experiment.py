@@ -1,7 +1,10 @@
 #!/usr/bin/python3
 """Plots of a clrt-experiment run: python3 plot_experiment.py RESULTS.json OUT_DIR
 
-mrays.png      Mrays/s per scene, one bar per device and variant (medians over repeats)
+Every plot shows medians over the repeats with their spread (min-max) as error bars, its axes
+start at 0, and its title names the resolution, samples per pixel and devices.
+
+mrays.png      Mrays/s per scene, one bar per device and variant
 kernels.png    each kernel's share of the device's busy time, per device and variant (all scenes)
 wavefront.png  Mrays/s against the wavefront size, when the experiment swept it
 local-size.png Mrays/s against the local size, when the experiment swept it
@@ -25,30 +28,44 @@ def scene_name(entry):
     return os.path.basename(entry["scene"])
 
 
+def spread_bars(entries, key):
+    """Matplotlib's yerr: how far below and above each median its repeats went."""
+    low = [s[key] - s["spread"][key][0] for s in entries]
+    high = [s["spread"][key][1] - s[key] for s in entries]
+    return [low, high]
+
+
+def titled(ax, what, title):
+    ax.set_title(f"{what}\n{title}", fontsize="medium")
+
+
 def save(fig, out, name):
     fig.tight_layout()
     fig.savefig(os.path.join(out, name), dpi=110)
     plt.close(fig)
 
 
-def plot_mrays(summary, out):
+def plot_mrays(summary, out, title):
     scenes = list(dict.fromkeys(scene_name(s) for s in summary))
     configs = list(dict.fromkeys(label(s) for s in summary))
-    rate = {(scene_name(s), label(s)): s["mrays_per_second"] for s in summary}
+    entry = {(scene_name(s), label(s)): s for s in summary}
     width = 0.8 / len(configs)
     fig, ax = plt.subplots(figsize=(min(16, max(6, 0.35 * len(scenes) * len(configs))), 5))
     for k, config in enumerate(configs):
-        xs = [i + k * width for i in range(len(scenes))]
-        ax.bar(xs, [rate.get((sc, config), 0) for sc in scenes], width, label=config)
+        present = [i for i, sc in enumerate(scenes) if (sc, config) in entry]
+        bars = [entry[(scenes[i], config)] for i in present]
+        ax.bar([i + k * width for i in present], [s["mrays_per_second"] for s in bars], width,
+               yerr=spread_bars(bars, "mrays_per_second"), capsize=3, label=config)
     ax.set_xticks([i + 0.4 - width / 2 for i in range(len(scenes))])
     ax.set_xticklabels(scenes, rotation=45, ha="right", fontsize="small")
+    ax.set_ylim(bottom=0)
     ax.set_ylabel("Mrays/s (all ray kinds, render time)")
-    ax.set_title("Throughput per scene, device and variant")
+    titled(ax, "Throughput per scene, device and variant", title)
     ax.legend(fontsize="small")
     save(fig, out, "mrays.png")
 
 
-def plot_kernels(summary, out):
+def plot_kernels(summary, out, title):
     seconds = defaultdict(lambda: defaultdict(float))
     for s in summary:
         for kernel, t in s["kernels"].items():
@@ -66,13 +83,14 @@ def plot_kernels(summary, out):
             shares.append(100.0 * seconds[c][kernel] / total)
         ax.barh(configs, shares, left=left, label=kernel, color=colours[n % len(colours)])
         left = [a + b for a, b in zip(left, shares)]
+    ax.set_xlim(0, 100)
     ax.set_xlabel("% of the device's busy time (medians, summed over scenes)")
-    ax.set_title("Where the device time goes")
+    titled(ax, "Where the device time goes", title)
     ax.legend(fontsize="x-small", ncol=1, loc="center left", bbox_to_anchor=(1.01, 0.5))
     save(fig, out, "kernels.png")
 
 
-def plot_sweep(summary, out, key, axis_label, title, name):
+def plot_sweep(summary, out, key, axis_label, what, title, name):
     """Mrays/s against one setting, when the experiment swept it (the others held)."""
     if len({s.get(key) for s in summary if s.get(key)}) < 2:
         return
@@ -80,16 +98,20 @@ def plot_sweep(summary, out, key, axis_label, title, name):
     for s in summary:
         if s.get(key):
             line = f"{scene_name(s)}, {s['device_spec']}, {s.get('integrator', '')}"
-            lines[line].append((s[key], s["mrays_per_second"]))
+            lines[line].append((s[key], s))
     fig, ax = plt.subplots(figsize=(7, 4.5))
     for line, points in lines.items():
-        points.sort()
-        ax.plot([p[0] for p in points], [p[1] for p in points], marker="o", label=line)
+        points.sort(key=lambda p: p[0])
+        ax.errorbar([p[0] for p in points], [p[1]["mrays_per_second"] for p in points],
+                    yerr=spread_bars([p[1] for p in points], "mrays_per_second"), marker="o",
+                    capsize=3, label=line)
+    # A power-of-two axis cannot reach 0; it starts at half the smallest size swept.
     ax.set_xscale("log", base=2)
+    ax.set_xlim(left=min(s[key] for s in summary if s.get(key)) / 2)
     ax.set_ylim(bottom=0)
     ax.set_xlabel(axis_label)
     ax.set_ylabel("Mrays/s")
-    ax.set_title(title)
+    titled(ax, what, title)
     ax.legend(fontsize="x-small")
     save(fig, out, name)
 
@@ -102,12 +124,13 @@ def main():
     summary = [s for s in results["summary"] if s["runs"] > s["failed"]]
     if not summary:
         sys.exit("plot_experiment.py: no successful run to plot")
-    plot_mrays(summary, sys.argv[2])
-    plot_kernels(summary, sys.argv[2])
+    title = results["title"]
+    plot_mrays(summary, sys.argv[2], title)
+    plot_kernels(summary, sys.argv[2], title)
     plot_sweep(summary, sys.argv[2], "wavefront", "wavefront (rays per queue)",
-               "Wavefront size sweep", "wavefront.png")
+               "Wavefront size sweep", title, "wavefront.png")
     plot_sweep(summary, sys.argv[2], "local_size", "local size (work-items per work-group)",
-               "Local size sweep", "local-size.png")
+               "Local size sweep", title, "local-size.png")
 
 
 if __name__ == "__main__":

@@ -8,14 +8,21 @@
 #include <set>
 #include <sstream>
 
+#include "run_record.hpp"
+
 namespace clrt::experiment {
 namespace {
 
-double median(std::vector<double> v) {
-  if (v.empty()) return 0;
+// The median of the repeats, and their spread.
+struct Spread {
+  double median = 0, min = 0, max = 0;
+};
+
+Spread spread(std::vector<double> v) {
+  if (v.empty()) return {};
   std::sort(v.begin(), v.end());
   const std::size_t n = v.size();
-  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+  return {n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]), v.front(), v.back()};
 }
 
 std::string group_key(const nlohmann::json& run) {
@@ -25,22 +32,41 @@ std::string group_key(const nlohmann::json& run) {
 
 bool succeeded(const nlohmann::json& run) { return run["exit_code"] == 0; }
 
-// The median of `field` (a JSON pointer) over the successful runs of a group.
-double median_of(const std::vector<const nlohmann::json*>& runs, const char* field) {
-  std::vector<double> v;
-  for (const nlohmann::json* r : runs)
-    if (succeeded(*r)) v.push_back(r->at(nlohmann::json::json_pointer(field)).get<double>());
-  return median(v);
-}
-
-std::string scene_name(const std::string& path) {
-  return std::filesystem::path(path).filename().string();
-}
-
 std::string fixed(double v, int digits) {
   std::ostringstream out;
   out << std::fixed << std::setprecision(digits) << v;
   return out.str();
+}
+
+// `field` (a JSON pointer) over the successful runs of a group, times `scale`, as the summary's
+// median `name` and its "spread" [min, max].
+void summarize_field(const std::vector<const nlohmann::json*>& runs, const char* field,
+                     const char* name, double scale, nlohmann::json& summary) {
+  std::vector<double> v;
+  for (const nlohmann::json* r : runs)
+    if (succeeded(*r)) v.push_back(scale * r->at(nlohmann::json::json_pointer(field)).get<double>());
+  const Spread s = spread(v);
+  summary[name] = s.median;
+  summary["spread"][name] = {s.min, s.max};
+}
+
+// A median with the spread of the repeats after it, "12.30 (12.10-12.50)", when there was more
+// than one.
+std::string with_spread(const nlohmann::json& summary, const nlohmann::json& median,
+                        const nlohmann::json& range, int digits, double scale = 1) {
+  std::string text = fixed(scale * median.get<double>(), digits);
+  if (summary["runs"].get<int>() - summary["failed"].get<int>() > 1)
+    text += " (" + fixed(scale * range[0].get<double>(), digits) + "-" +
+            fixed(scale * range[1].get<double>(), digits) + ")";
+  return text;
+}
+
+std::string cell(const nlohmann::json& summary, const char* name, int digits, double scale = 1) {
+  return with_spread(summary, summary[name], summary["spread"][name], digits, scale);
+}
+
+std::string scene_name(const std::string& path) {
+  return std::filesystem::path(path).filename().string();
 }
 
 // CSV fields hold scene paths and device names: quote every text field.
@@ -89,19 +115,21 @@ nlohmann::json summarize(const nlohmann::json& runs) {
         s["local_size"] = (*r)["devices"][0]["local_size"];
         break;
       }
-    s["mrays_per_second"] = median_of(g, "/mrays_per_second");
-    s["msamples_per_second"] = median_of(g, "/samples_per_second") / 1e6;
-    s["render_seconds"] = median_of(g, "/seconds/render");
-    s["process_seconds"] = median_of(g, "/process_seconds");
-    s["device_busy"] = median_of(g, "/device_busy");
-    s["peak_mib"] = median_of(g, "/peak_bytes") / (1024.0 * 1024.0);
-    s["kernels"] = nlohmann::json::object();
+    summarize_field(g, "/mrays_per_second", "mrays_per_second", 1, s);
+    summarize_field(g, "/samples_per_second", "msamples_per_second", 1e-6, s);
+    summarize_field(g, "/seconds/render", "render_seconds", 1, s);
+    summarize_field(g, "/process_seconds", "process_seconds", 1, s);
+    summarize_field(g, "/device_busy", "device_busy", 1, s);
+    summarize_field(g, "/peak_bytes", "peak_mib", 1.0 / (1024.0 * 1024.0), s);
+    s["kernels"] = s["kernel_spread"] = nlohmann::json::object();
     for (const std::string& name : kernels) {
       std::vector<double> v;
       for (const nlohmann::json* r : g)
         if (succeeded(*r) && (*r)["kernels"].contains(name))
           v.push_back((*r)["kernels"][name]["share_seconds"].get<double>());
-      s["kernels"][name] = median(v);
+      const Spread k = spread(v);
+      s["kernels"][name] = k.median;
+      s["kernel_spread"][name] = {k.min, k.max};
     }
     out.push_back(s);
   }
@@ -137,6 +165,22 @@ nlohmann::json device_scores(const nlohmann::json& summary) {
   return out;
 }
 
+std::string experiment_title(const nlohmann::json& results) {
+  const nlohmann::json& settings = results["settings"];
+  const std::string resolution = settings["resolution"];
+  const std::string spp = settings["spp"];
+  std::string devices;
+  std::set<std::string> named;
+  for (const nlohmann::json& s : results["summary"]) {
+    const std::string device = s["device_spec"].get<std::string>() + " " +
+                               s["device_name"].get<std::string>();
+    if (named.insert(device).second) devices += (devices.empty() ? "" : ", ") + device;
+  }
+  return (resolution.empty() ? std::string("each scene's size") : resolution) + ", " +
+         (spp.empty() ? std::string("each scene's samples per pixel") : spp + " spp") + ", on " +
+         devices;
+}
+
 std::string runs_csv(const nlohmann::json& runs) {
   std::ostringstream out;
   out << "scene,device_spec,device,variant,repeat,exit_code,camera,reflection,refraction,shadow,"
@@ -169,17 +213,17 @@ std::string runs_csv(const nlohmann::json& runs) {
 std::string markdown_report(const nlohmann::json& results) {
   const nlohmann::json& summary = results["summary"];
   std::ostringstream out;
-  out << "Medians over " << results["settings"]["repeats"] << " repeats; "
+  out << "# " << results["title"].get<std::string>() << "\n\nMedians over "
+      << results["settings"]["repeats"] << " repeats, their spread (min-max) in parentheses; "
       << results["clrt"].get<std::string>() << ".\n\n";
   out << "| scene | device | variant | Mrays/s | Msamples/s | render s | command s | device busy "
          "| peak MiB | runs | flagged |\n|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|\n";
   for (const nlohmann::json& s : summary)
     out << "| " << scene_name(s["scene"]) << " | " << s["device_spec"].get<std::string>() << " "
         << s["device_name"].get<std::string>() << " | " << s["variant"].get<std::string>() << " | "
-        << fixed(s["mrays_per_second"], 2) << " | " << fixed(s["msamples_per_second"], 3) << " | "
-        << fixed(s["render_seconds"], 3) << " | " << fixed(s["process_seconds"], 3) << " | "
-        << fixed(100 * s["device_busy"].get<double>(), 0) << "% | " << fixed(s["peak_mib"], 0)
-        << " | " << s["runs"].get<int>() - s["failed"].get<int>() << "/" << s["runs"] << " | "
+        << cell(s, "mrays_per_second", 2) << " | " << cell(s, "msamples_per_second", 3) << " | "
+        << cell(s, "render_seconds", 3) << " | " << cell(s, "process_seconds", 3) << " | "
+        << cell(s, "device_busy", 0, 100) << "% | " << cell(s, "peak_mib", 0) << " | " << s["runs"].get<int>() - s["failed"].get<int>() << "/" << s["runs"] << " | "
         << s["flagged"] << " |\n";
 
   std::set<std::string> kernels;
@@ -195,7 +239,10 @@ std::string markdown_report(const nlohmann::json& results) {
     out << "| " << scene_name(s["scene"]) << " | " << s["device_spec"].get<std::string>() << " | "
         << s["variant"].get<std::string>() << " |";
     for (const std::string& k : kernels)
-      out << " " << (s["kernels"].contains(k) ? fixed(s["kernels"][k], 4) : "") << " |";
+      out << " "
+          << (s["kernels"].contains(k) ? with_spread(s, s["kernels"][k], s["kernel_spread"][k], 4)
+                                       : "")
+          << " |";
     out << "\n";
   }
 
@@ -209,7 +256,8 @@ std::string markdown_report(const nlohmann::json& results) {
   for (const nlohmann::json& r : results["runs"]) {
     if (!succeeded(r)) {
       flagged << "- failed: " << scene_name(r["scene"]) << " on " << r["device_spec"].get<std::string>()
-              << ", " << r["variant"].get<std::string>() << " (exit " << r["exit_code"] << ")\n";
+              << ", " << r["variant"].get<std::string>() << " (exit " << r["exit_code"]
+              << "): " << failure_message(r) << "\n";
     } else if (r["validation"]["flagged"].get<bool>()) {
       const nlohmann::json& v = r["validation"];
       flagged << "- differs from the scene's first image: " << scene_name(r["scene"]) << " on "

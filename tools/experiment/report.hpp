@@ -9,12 +9,17 @@ namespace clrt::experiment {
 
 // One entry per (scene, device, variant) that ran, in run order: the medians over its repeats
 // of Mrays/s, Msamples/s, render and process seconds, device busy share, peak MiB, and of each
-// kernel's device seconds; "runs", "failed" and "flagged" counts.
+// kernel's device seconds, with their [min, max] in "spread" and "kernel_spread"; "runs",
+// "failed" and "flagged" counts.
 nlohmann::json summarize(const nlohmann::json& runs);
 
 // The score of each device: 100 x the geometric mean over the experiment's scenes of the median
 // Mrays/s of its first variant (see README "Experiments"). Devices with a failed scene get none.
 nlohmann::json device_scores(const nlohmann::json& summary);
+
+// What the experiment measured, for every report's and plot's title: the resolution, the
+// samples per pixel and the devices ("1280x720, 4 spp, on 0:0 pthread-...").
+std::string experiment_title(const nlohmann::json& results);
 
 // Every run, one line each, with a header line.
 std::string runs_csv(const nlohmann::json& runs);

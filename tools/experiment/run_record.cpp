@@ -55,6 +55,13 @@ nlohmann::json run_once(const Plan& plan, const RunKey& key, const std::string& 
   return record;
 }
 
+std::string failure_message(const nlohmann::json& run) {
+  std::string error = run.value("error", "");
+  while (!error.empty() && error.back() == '\n') error.pop_back();
+  const std::size_t start = error.rfind('\n');
+  return start == std::string::npos ? error : error.substr(start + 1);
+}
+
 nlohmann::json validate(const std::string& reference, const std::string& image) {
   nlohmann::json v = {{"reference", reference}};
   if (file_bytes(reference) == file_bytes(image)) {

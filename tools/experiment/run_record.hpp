@@ -19,6 +19,10 @@ struct RunKey {
 // when it failed, "error" with clrt's message.
 nlohmann::json run_once(const Plan& plan, const RunKey& key, const std::string& image);
 
+// What a failed run's record says went wrong: clrt's own message, the last line it wrote to
+// standard error (the one that names the fault; earlier lines are the device and progress).
+std::string failure_message(const nlohmann::json& run);
+
 // How `image` compares with `reference`: "identical" (the same bytes) or else the PSNR, the
 // count of differing pixels and the largest difference, and "flagged" unless identical.
 nlohmann::json validate(const std::string& reference, const std::string& image);

@@ -8,6 +8,7 @@
 #include <fstream>
 #include <iterator>
 #include <nlohmann/json.hpp>
+#include <regex>
 #include <string>
 
 #include "image/image.hpp"
@@ -90,6 +91,19 @@ TEST_CASE("two devices, two integrators and repeats in one command, every image 
   CHECK(report.find("| scene | device | variant | Mrays/s") != std::string::npos);
   CHECK(report.find("megakernel") != std::string::npos);
   CHECK(report.find("Every image is identical to its scene's first.") != std::string::npos);
+  // The title names what was measured; each table's medians come with the repeats' spread.
+  const std::string title = results["title"];
+  CHECK(title.rfind("32x24, each scene's samples per pixel, on 0:0 ", 0) == 0);
+  CHECK(title.find(", 0:1 ") != std::string::npos);
+  CHECK(report.rfind("# " + title + "\n", 0) == 0);
+  for (const nlohmann::json& s : results["summary"]) {
+    const std::vector<double> range = s["spread"]["mrays_per_second"];
+    CHECK(range[0] <= s["mrays_per_second"].get<double>());
+    CHECK(s["mrays_per_second"].get<double>() <= range[1]);
+    CHECK(s["kernel_spread"].size() == s["kernels"].size());
+  }
+  CHECK(std::regex_search(report, std::regex(R"(\| [0-9.]+ \([0-9.]+-[0-9.]+\) \| [0-9.]+ \()")));
+  CHECK(std::regex_search(report, std::regex(R"(\| [0-9.]+ \([0-9.]+-[0-9.]+\) \|\n)")));  // kernels
   check_plot(dir.file("mrays.png"));
   check_plot(dir.file("kernels.png"));
   CHECK_FALSE(std::filesystem::exists(dir.file("wavefront.png")));
@@ -148,6 +162,39 @@ TEST_CASE("a wavefront sweep draws its plot", "[experiment]") {
   CHECK(summary[0]["wavefront"] == 1024);
   CHECK(summary[1]["wavefront"] == 4096);
   check_plot(dir.file("wavefront.png"));
+}
+
+TEST_CASE("a failed run shows clrt's own message on the terminal and in the report",
+          "[experiment]") {
+  test::ScratchDir dir;
+  const std::string bad = dir.write("bad1.ray", "sphere\nfrobnicate\n");
+  const ProcessResult r = run_experiment({bad, "--repeats", "1", "--resolution", "8x8", "--out",
+                                          dir.path().string(), "--no-plots"});
+  INFO(r.out << r.err);
+  CHECK(r.exit_code == 1);
+  const std::string message = bad + ":2:1: error: unknown command 'frobnicate'";
+  CHECK(r.err.find("failed (exit 2): " + message + "\n") != std::string::npos);
+  CHECK(text_of(dir.file("report.md")).find("(exit 2): " + message + "\n") != std::string::npos);
+}
+
+TEST_CASE("a copied build tree runs its own clrt and plot script", "[experiment]") {
+  test::ScratchDir dir;
+  const std::filesystem::path built(CLRT_EXPERIMENT), copy = dir.path() / "tree";
+  const std::filesystem::path experiment =
+      copy / std::filesystem::relative(built, CLRT_BINARY_DIR);
+  std::filesystem::create_directories(experiment.parent_path());
+  std::filesystem::copy_file(built, experiment);
+  std::filesystem::copy_file(built.parent_path() / "plot_experiment.py",
+                             experiment.parent_path() / "plot_experiment.py");
+  std::filesystem::copy_file(CLRT_EXE, copy / std::filesystem::relative(CLRT_EXE, CLRT_BINARY_DIR));
+  const ProcessResult r = run_process({experiment.string(), source_file("tests/render/scenes/test2.ray"),
+                                       "--repeats", "1", "--resolution", "8x8", "--out",
+                                       (dir.path() / "out").string()});
+  INFO(r.out << r.err);
+  REQUIRE(r.exit_code == 0);
+  const nlohmann::json results = nlohmann::json::parse(text_of((dir.path() / "out/results.json").string()));
+  CHECK(results["settings"]["clrt_executable"] == (copy / "clrt").string());
+  check_plot((dir.path() / "out/mrays.png").string());
 }
 
 TEST_CASE("usage errors exit 2 and a device that matches nothing exits 1", "[experiment]") {

@@ -8,6 +8,7 @@
 #include <limits>
 #include <memory>
 
+#include "cli/decimal_number.hpp"
 #include "command_line.hpp"
 #include "image/compare.hpp"
 
@@ -66,15 +67,7 @@ void add_diff(CLI::App& app, Command& command) {
   sub->add_option("--threshold", options->threshold,
                   "largest channel difference still counted as equal: in steps of 1/255 for "
                   "8-bit comparisons, linear units for float ones (default 0)")
-      ->check(CLI::Validator(
-          [](std::string& text) {
-            char* end = nullptr;
-            const double value = std::strtod(text.c_str(), &end);
-            const bool ok = end != text.c_str() && *end == '\0' && std::isfinite(value) &&
-                            value >= 0;
-            return ok ? std::string() : "--threshold must be a finite number >= 0";
-          },
-          "NUMBER>=0"));
+      ->check(clrt::decimal_number(0));
   sub->add_option("--out", options->out,
                   "write |A - B| per channel, scaled so the largest difference is white");
   CLI::Option* both = add_frame_option(*sub, "--frame", options->frame,

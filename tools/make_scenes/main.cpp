@@ -5,6 +5,7 @@
 #include <exception>
 #include <string>
 
+#include "cli/decimal_number.hpp"
 #include "cli/tool_command_line.hpp"
 #include "knob_scenes.hpp"
 #include "large_scenes.hpp"
@@ -19,7 +20,7 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   std::string family = "large";
   app.add_option("--scale", scale, "multiplies every sphere, triangle and instance count")
-      ->check(CLI::PositiveNumber)
+      ->check(clrt::positive_decimal_number())
       ->capture_default_str();
   app.add_option("--family", family,
                  "large: the large scenes; knob: 1 to 16 materials of rising shading cost")

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "cli/whole_number.hpp"
 #include "compare_scene.hpp"
 #include "cli/tool_command_line.hpp"
 #include "device/device_context.hpp"
@@ -22,13 +23,13 @@ int main(int argc, char** argv) {
   std::string quality = "high", device_spec = "cpu";
   app.add_option("SCENE", scenes, ".ray scenes")->required();
   app.add_option("--rays", options.random_rays, "random (incoherent) rays per scene")
-      ->check(CLI::PositiveNumber)
+      ->transform(clrt::whole_number(1, 1 << 30))
       ->capture_default_str();
   app.add_option("--threads", options.threads, "Embree's host threads")
-      ->check(CLI::PositiveNumber)
+      ->transform(clrt::whole_number(1, 4096))
       ->capture_default_str();
   app.add_option("--runs", options.runs, "timed runs after a warm-up; the best counts")
-      ->check(CLI::PositiveNumber)
+      ->transform(clrt::whole_number(1, 1000))
       ->capture_default_str();
   app.add_option("--quality", quality, "Embree's BVH build quality")
       ->check(CLI::IsMember({"medium", "high"}))

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "cli/whole_number.hpp"
 #include "bench_scenes.hpp"
 #include "bench_trace.hpp"
 #include "commands.hpp"
@@ -82,8 +83,12 @@ void add_bvh(CLI::App& app, Command& run) {
   bvh->add_option("scenes", o->files, ".ray files to measure (their own cameras are used)");
   bvh->add_flag("--suite", o->with_suite,
                 "procedural meshes of 1k-1M triangles and 10-100k instances (default without scenes)");
-  bvh->add_option("--rays", o->ray_count, "rays per measurement")->capture_default_str();
-  bvh->add_option("--runs", o->runs, "timed launches per measurement; the best counts")->capture_default_str();
+  bvh->add_option("--rays", o->ray_count, "rays per measurement")
+      ->transform(whole_number(1, 1 << 30))
+      ->capture_default_str();
+  bvh->add_option("--runs", o->runs, "timed launches per measurement; the best counts")
+      ->transform(whole_number(1, 1000))
+      ->capture_default_str();
   bvh->add_option("--only", o->only, "run only the cases whose name contains this");
   bvh->add_option("--device", o->device_spec, "OpenCL device (cpu, gpu, P:D or a name)")->capture_default_str();
   bvh->callback([o, &run] { run = [o] { return measure(*o); }; });

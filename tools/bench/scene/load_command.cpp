@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "cli/whole_number.hpp"
 #include "commands.hpp"
 #include "geometry/geometry_data.hpp"
 #include "math/parallel_for.hpp"
@@ -83,8 +84,11 @@ void add_load(CLI::App& app, Command& run) {
   const auto o = std::make_shared<Options>();
   CLI::App* load = app.add_subcommand("load", "scene load and geometry build times and rates");
   load->add_option("scenes", o->scenes, ".ray files (e.g. clrt-make-scenes' tri-1k.ray ... tri-1m.ray)")->required();
-  load->add_option("--runs", o->runs, "runs per scene; the best counts")->capture_default_str();
-  load->add_option("--threads", o->threads, "threads for the parallel steps (default: one per core)");
+  load->add_option("--runs", o->runs, "runs per scene; the best counts")
+      ->transform(whole_number(1, 1000))
+      ->capture_default_str();
+  load->add_option("--threads", o->threads, "threads for the parallel steps (default: one per core)")
+      ->transform(whole_number(1, 4096));
   load->callback([o, &run] { run = [o] { return measure(*o); }; });
 }
 
