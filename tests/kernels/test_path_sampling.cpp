@@ -210,10 +210,10 @@ TEST_CASE("path mode draws smooth-lobe directions with the density it claims", "
       }
       // The weight is f cos / pdf for both lobes together, whichever drew the direction.
       const double cos_i = dot(n, wi);
-      const double f = kd / kPi + ks * (c.m.shininess + 2) / (2 * kPi) *
+      const double brdf = kd / kPi + ks * (c.m.shininess + 2) / (2 * kPi) *
                                       std::pow(std::max(0.0, dot(2 * cos_i * n + (-1.0) * wi, wo)),
                                                c.m.shininess);
-      const double expected = f * cos_i / density(wi);
+      const double expected = brdf * cos_i / density(wi);
       // Relative, but absolute near the horizon, where float cosines lose their digits.
       worst_weight = std::max(worst_weight, std::fabs(s.weights[i].x - expected) / (expected + 1e-2));
       worst_pdf = std::max(worst_pdf, std::fabs(s.weights[i].w - density(wi)) / (density(wi) + 1e-2));
