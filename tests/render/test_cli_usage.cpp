@@ -120,7 +120,7 @@ TEST_CASE("every tool words a bad number as clrt does", "[cli][usage]") {
   }
 }
 
-TEST_CASE("a scene that is missing or no text is named without a line; an empty one is rendered "
+TEST_CASE("a scene that is missing or no text is named without a line, and an empty one is rendered "
           "with a warning",
           "[cli][usage]") {
   ScratchDir dir;
