@@ -19,6 +19,26 @@
 #include "render/usage_error.hpp"
 
 namespace clrt {
+
+// Renderer::Devices holds these, so they cannot live in the anonymous namespace.
+// One wave in flight: its own command queue and integrator (with its own queues).
+struct Lane {
+  std::unique_ptr<DeviceContext> context;
+  std::unique_ptr<Integrator> integrator;
+};
+
+// One device: the frame every lane reads, and the lanes. The program is held for as long as its
+// kernels run: the specification says kernels keep it alive, but Intel's CPU runtime rendered
+// black images when only the kernels did (docs/devices.md).
+struct DeviceWorker {
+  std::unique_ptr<DeviceContext> context;
+  compute::program program;
+  std::unique_ptr<DeviceFrame> frame;
+  std::vector<Lane> lanes;
+  std::unique_ptr<BusyTimeline> timeline;
+  DeviceReport report;
+};
+
 namespace {
 
 using Clock = std::chrono::steady_clock;
@@ -40,24 +60,6 @@ DeviceReport report_of(const DeviceEntry& entry, const DeviceTuning& tuning) {
   r.lanes = tuning.lanes;
   return r;
 }
-
-// One wave in flight: its own command queue and integrator (with its own queues).
-struct Lane {
-  std::unique_ptr<DeviceContext> context;
-  std::unique_ptr<Integrator> integrator;
-};
-
-// One device: the frame every lane reads, and the lanes. The program is held for as long as its
-// kernels run: the specification says kernels keep it alive, but Intel's CPU runtime rendered
-// black images when only the kernels did (docs/devices.md).
-struct DeviceWorker {
-  std::unique_ptr<DeviceContext> context;
-  compute::program program;
-  std::unique_ptr<DeviceFrame> frame;
-  std::vector<Lane> lanes;
-  std::unique_ptr<BusyTimeline> timeline;
-  DeviceReport report;
-};
 
 // Bands of whole rows of the region are claimed one at a time, each about a wave's worth of
 // pixels for the device that claims it: a faster device takes more. Every pixel's colour
