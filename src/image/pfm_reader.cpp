@@ -24,7 +24,7 @@ struct PfmHeader {
   float scale = -1.0f;
 };
 
-PfmHeader read_header(NetpbmCursor& cursor) {
+PfmHeader read_pfm_header(NetpbmCursor& cursor) {
   PfmHeader header;
   header.channels = cursor.magic("Ff") == 'F' ? 3 : 1;
   header.width = static_cast<int>(cursor.number("width", 1, INT_MAX));
@@ -49,7 +49,7 @@ PfmHeader read_header(NetpbmCursor& cursor) {
 FloatImage read_pfm(const std::string& path) {
   const std::vector<std::uint8_t> bytes = image_detail::read_file_bytes(path);
   NetpbmCursor cursor(bytes, "PFM", path);
-  const PfmHeader header = read_header(cursor);
+  const PfmHeader header = read_pfm_header(cursor);
   const bool little_endian = header.scale < 0.0f;
   const float magnitude = std::fabs(header.scale);
   const std::size_t width = static_cast<std::size_t>(header.width);
@@ -75,7 +75,7 @@ FloatImage read_pfm(const std::string& path) {
 ImageInfo image_detail::pfm_info(const std::string& path) {
   const std::vector<std::uint8_t> bytes = read_file_bytes(path);
   NetpbmCursor cursor(bytes, "PFM", path);
-  const PfmHeader header = read_header(cursor);
+  const PfmHeader header = read_pfm_header(cursor);
   ImageInfo info = basic_info(ImageFormat::Pfm, header.width, header.height,
                               header.channels == 3 ? "RGB" : "grey", "32-bit float");
   info.float32 = true;

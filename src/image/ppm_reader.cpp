@@ -21,7 +21,7 @@ struct PpmHeader {
 };
 
 // Leaves the cursor at the first sample, the raster's size checked.
-PpmHeader read_header(NetpbmCursor& cursor) {
+PpmHeader read_ppm_header(NetpbmCursor& cursor) {
   PpmHeader header;
   header.binary = cursor.magic("63") == '6';
   header.width = static_cast<int>(cursor.number("width", 1, INT_MAX));
@@ -66,7 +66,7 @@ void read_plain_samples(NetpbmCursor& cursor, std::uint32_t maxval,
 Rgba8Image read_ppm(const std::string& path) {
   const std::vector<std::uint8_t> bytes = image_detail::read_file_bytes(path);
   NetpbmCursor cursor(bytes, "PPM", path);
-  const PpmHeader header = read_header(cursor);
+  const PpmHeader header = read_ppm_header(cursor);
   std::vector<std::uint8_t> rgba(4 * std::size_t(header.width) * std::size_t(header.height), 255);
   header.binary ? read_binary_samples(cursor, header.maxval, rgba)
                 : read_plain_samples(cursor, header.maxval, rgba);
@@ -76,7 +76,7 @@ Rgba8Image read_ppm(const std::string& path) {
 ImageInfo image_detail::ppm_info(const std::string& path) {
   const std::vector<std::uint8_t> bytes = read_file_bytes(path);
   NetpbmCursor cursor(bytes, "PPM", path);
-  const PpmHeader header = read_header(cursor);
+  const PpmHeader header = read_ppm_header(cursor);
   ImageInfo info = basic_info(ImageFormat::Ppm, header.width, header.height, "RGB",
                               header.maxval > 255 ? "16-bit" : "8-bit");
   info.details = {{"encoding", header.binary ? "binary (P6)" : "plain text (P3)"},

@@ -10,7 +10,7 @@ namespace clrt {
 namespace {
 
 // Its waves are the wavefront's (the same pixels per wave); it needs no shadow slots.
-WaveSizes sizes_of(const IntegratorConfig& config, const DeviceFrame& frame) {
+WaveSizes megakernel_sizes(const IntegratorConfig& config, const DeviceFrame& frame) {
   return wave_sizes(config.capacity, frame.host.camera.samples, 0);
 }
 
@@ -51,14 +51,14 @@ MegakernelIntegrator::MegakernelIntegrator(DeviceContext& device, const compute:
                                            const IntegratorConfig& config)
     : frame_(frame),
       config_(config),
-      wave_rays_(static_cast<std::uint32_t>(sizes_of(config, frame).capacity)),
+      wave_rays_(static_cast<std::uint32_t>(megakernel_sizes(config, frame).capacity)),
       resolver_(device, program, wave_rays_, wave_rays_),
       launcher_(device, config.local_size, config.profile),
       profiler_(launcher_, program, config.profile, 1,
                 wave_rays_ / Profiler::kCountChunk + 1, config.timeline),
       megakernel_(program) {
   check_stack_depth(frame.host.params.max_depth, config.megakernel_depth);
-  const WaveSizes s = sizes_of(config, frame);
+  const WaveSizes s = megakernel_sizes(config, frame);
   CLRT_MEGAKERNEL_BUFFERS(CLRT_BUFFER_ALLOCATE)
 }
 
@@ -96,7 +96,7 @@ void MegakernelIntegrator::harvest(RenderStats& stats) {
 
 std::uint64_t MegakernelIntegrator::device_bytes() const {
   std::uint64_t bytes = 0;
-  for (const DeviceBuffer& b : megakernel_buffers(sizes_of(config_, frame_))) bytes += b.bytes;
+  for (const DeviceBuffer& b : megakernel_buffers(megakernel_sizes(config_, frame_))) bytes += b.bytes;
   return bytes;
 }
 

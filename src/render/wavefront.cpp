@@ -6,7 +6,7 @@
 namespace clrt {
 namespace {
 
-WaveSizes sizes_of(const IntegratorConfig& config, const DeviceFrame& frame) {
+WaveSizes wavefront_sizes(const IntegratorConfig& config, const DeviceFrame& frame) {
   return wave_sizes(config.capacity, frame.host.camera.samples, frame.host.params.shadow_samples);
 }
 
@@ -39,7 +39,7 @@ WavefrontIntegrator::WavefrontIntegrator(DeviceContext& device, const compute::p
                                          const DeviceFrame& frame, const IntegratorConfig& config)
     : device_(device),
       frame_(frame),
-      queues_(device, sizes_of(config, frame)),
+      queues_(device, wavefront_sizes(config, frame)),
       wave_rays_(queues_.capacity()),
       resolver_(device, program, queues_.capacity(), queues_.capacity()),
       launcher_(device, config.local_size, config.profile),
