@@ -161,7 +161,7 @@ std::unique_ptr<CLI::App> clrt_command_line(CliOptions& o, StatsRequest& stats,
   }
   if (program.preview)
     app->add_flag("--preview", o.preview,
-                 "show the render as it fills in, in a clrt-view window (docs/viewer.md)")
+                  "show the render as it fills in, in a clrt-view window (docs/viewer.md)")
         ->group("Output");
   if (program.add_own_options) {
     app->option_defaults()->group(program.name);
