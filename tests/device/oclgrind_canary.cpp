@@ -10,7 +10,7 @@ using namespace clrt::test;
 
 namespace {
 
-const char* const kKernels = R"CL(
+const char* const kCanaryKernels = R"CL(
 __kernel void read_past_the_end(__global const float* in, uint count, __global float* out) {
   const uint i = get_global_id(0);
   if (i >= count) return;
@@ -31,6 +31,6 @@ struct ReadPastTheEndArgs {
 TEST_CASE("a kernel reading past its buffer", "[.oclgrind-canary]") {
   const std::vector<float> in(16, 1.0f);
   const Global<float> out = allocate<float>(16);
-  run(test_program(kKernels), ReadPastTheEndArgs{upload(in), 16, out}, 16);
+  run(test_program(kCanaryKernels), ReadPastTheEndArgs{upload(in), 16, out}, 16);
   CHECK(download(out, 15) == std::vector<float>(15, 1.0f));
 }

@@ -14,7 +14,7 @@ using namespace clrt::test;
 
 namespace {
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kUnbounded = std::numeric_limits<double>::infinity();
 
 const std::vector<Vec3> kUnitTriangle = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
 
@@ -53,7 +53,7 @@ TEST_CASE("triangle: hand-computed hits and misses", "[shapes][triangle]") {
   // Behind the origin, beyond tmax, and within the triangle's plane.
   expect_miss({{0.25, 0.25, 1}, {0, 0, 1}});
   expect_miss({{0.25, 0.25, 1}, {0, 0, -1}, 1e-4, 0.99});
-  expect_miss({{0.25, 0.25, 1}, {0, 0, -1}, 1.01, kInf});
+  expect_miss({{0.25, 0.25, 1}, {0, 0, -1}, 1.01, kUnbounded});
   expect_miss({{-1, 0.2, 0}, {1, 0, 0}});
 }
 
@@ -98,7 +98,7 @@ TEST_CASE("triangles agree with the host reference on random rays", "[shapes][tr
     WorldRay ray;
     ray.origin = round_to_float(m.transform_point(Vec3{uniform(-4, 4), uniform(-4, 4), uniform(-4, 4)}));
     ray.dir = round_to_float((target - ray.origin) * speed);
-    ray.tmax = uniform(0, 1) < 0.5 ? kInf : static_cast<float>(uniform(0.3, 1.5));
+    ray.tmax = uniform(0, 1) < 0.5 ? kUnbounded : static_cast<float>(uniform(0.3, 1.5));
     if (std::abs(1 / speed - ray.tmax) < 1e-3) continue;
     const ReferenceHit hit = reference_triangle(v0, v1, v2, m, ray);
     vertices.insert(vertices.end(), {v0, v1, v2});

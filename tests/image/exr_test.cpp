@@ -23,7 +23,7 @@ using namespace clrt::test;
 
 namespace {
 
-constexpr float kInf = std::numeric_limits<float>::infinity();
+constexpr float kInfinity = std::numeric_limits<float>::infinity();
 
 bool same_bits(const std::vector<float>& a, const std::vector<float>& b) {
   return a.size() == b.size() && std::memcmp(a.data(), b.data(), 4 * a.size()) == 0;
@@ -65,7 +65,7 @@ TEST_CASE("EXR is half by default: each float rounds once, to the nearest half, 
   CHECK(back.width == 3);
   CHECK(back.height == 1);
   CHECK_FALSE(back.placement);
-  CHECK(same_bits(back.rgb, {0.0999755859375f, 0.333251953125f, 1000.5f, kInf, -2.0f, 0.0f,
+  CHECK(same_bits(back.rgb, {0.0999755859375f, 0.333251953125f, 1000.5f, kInfinity, -2.0f, 0.0f,
                              0.0f, 1.0f, 1.001953125f}));
   check_samples(path, "16-bit float (half)", false);
 }
@@ -74,7 +74,7 @@ TEST_CASE("a half EXR says once how many finite samples it stored as infinity", 
   // 65519 rounds down to 65504, 65520 up to infinity; infinities and NaNs were never finite.
   ScratchDir dir;
   const std::string path = dir.file("bright.exr");
-  const FloatImage image{2, 2, {65504.0f, 65519.0f, 65520.0f, -1e6f, kInf, std::nanf(""), 3e38f,
+  const FloatImage image{2, 2, {65504.0f, 65519.0f, 65520.0f, -1e6f, kInfinity, std::nanf(""), 3e38f,
                                 1.0f, -65520.0f, 0.5f, 2.0f, 4.0f}};
   std::vector<std::string> warnings;
   clrt::WriteOptions options;
@@ -85,11 +85,11 @@ TEST_CASE("a half EXR says once how many finite samples it stored as infinity", 
                                    "float, and are stored as infinity (--exr-pixel float keeps them)");
   const FloatImage back = clrt::read_exr(path);
   CHECK(back.rgb[1] == 65504.0f);
-  CHECK(back.rgb[2] == kInf);
-  CHECK(back.rgb[3] == -kInf);
+  CHECK(back.rgb[2] == kInfinity);
+  CHECK(back.rgb[3] == -kInfinity);
 
   warnings.clear();
-  clrt::write_image(path, FloatImage{1, 1, {65519.0f, -65519.0f, kInf}}, options);
+  clrt::write_image(path, FloatImage{1, 1, {65519.0f, -65519.0f, kInfinity}}, options);
   clrt::write_image(path, image, [&] {
     clrt::WriteOptions float_options{clrt::ExrPixel::Float};
     float_options.warn = options.warn;

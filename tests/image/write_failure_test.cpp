@@ -21,7 +21,7 @@ using Entries = std::set<std::string>;
 
 namespace {
 
-const Rgba8Image kImage{2, 1, {{1, 2, 3, 255, 4, 5, 6, 255}}};
+const Rgba8Image kTwoPixels{2, 1, {{1, 2, 3, 255, 4, 5, 6, 255}}};
 
 // Runs `write` with the soft limit of `resource` lowered to `limit`, then restores it before
 // anything else (Catch2 included) needs files again. A write past RLIMIT_FSIZE raises SIGXFSZ,
@@ -47,7 +47,7 @@ TEST_CASE("a write into a directory that does not exist fails and creates nothin
   ScratchDir dir;
   for (const char* name : {"a.fsf", "a.png", "a.ppm", "a.pfm", "a.exr"}) {
     const std::string path = dir.file(std::string("missing/") + name);
-    CHECK_THAT(error_of([&] { clrt::write_image(path, kImage); }),
+    CHECK_THAT(error_of([&] { clrt::write_image(path, kTwoPixels); }),
                Contains(path) && Contains("No such file"));
   }
   CHECK(dir.entries().empty());
@@ -57,7 +57,7 @@ TEST_CASE("a write over an existing directory fails and leaves no temporary", "[
   ScratchDir dir;
   const std::string path = dir.file("out.fsf");
   std::filesystem::create_directory(path);
-  CHECK_THAT(error_of([&] { clrt::write_image(path, kImage); }),
+  CHECK_THAT(error_of([&] { clrt::write_image(path, kTwoPixels); }),
              Contains(path) && Contains("rename"));
   CHECK(dir.entries() == Entries{"out.fsf"});
   CHECK(std::filesystem::is_directory(path));
@@ -65,14 +65,14 @@ TEST_CASE("a write over an existing directory fails and leaves no temporary", "[
 
 TEST_CASE("a write into /proc fails, naming the path", "[image][write]") {
   const std::string path = "/proc/clrt-image-test.png";
-  CHECK_THAT(error_of([&] { clrt::write_image(path, kImage); }), Contains(path));
+  CHECK_THAT(error_of([&] { clrt::write_image(path, kTwoPixels); }), Contains(path));
   CHECK_FALSE(std::filesystem::exists(path));
 }
 
 TEST_CASE("a failed write leaves the previous file intact and no temporary", "[image][write]") {
   ScratchDir dir;
   const std::string path = dir.file("out.fsf");
-  clrt::write_image(path, kImage);
+  clrt::write_image(path, kTwoPixels);
   const Bytes first = read_bytes(path);
   const Rgba8Image second{4, 4, {Bytes(64, 9)}};
 
@@ -101,7 +101,7 @@ TEST_CASE("a new file gets the permissions the umask allows, like any created fi
   ScratchDir dir;
   const std::string path = dir.file("out.ppm");
   const mode_t old_mask = ::umask(022);
-  clrt::write_image(path, kImage);
+  clrt::write_image(path, kTwoPixels);
   ::umask(old_mask);
   struct stat info {};
   REQUIRE(::stat(path.c_str(), &info) == 0);
@@ -112,9 +112,9 @@ TEST_CASE("an unknown extension or an invalid image is refused before any file i
           "[image][write]") {
   ScratchDir dir;
   const std::string unknown = dir.file("out.jpg");
-  CHECK_THAT(error_of([&] { clrt::write_image(unknown, kImage); }),
+  CHECK_THAT(error_of([&] { clrt::write_image(unknown, kTwoPixels); }),
              Contains(unknown) && Contains(".jpg") && Contains(".fsf, .png, .ppm, .pfm, .exr"));
-  CHECK_THAT(error_of([&] { clrt::write_image(dir.file("noext"), kImage); }),
+  CHECK_THAT(error_of([&] { clrt::write_image(dir.file("noext"), kTwoPixels); }),
              Contains("no extension"));
   CHECK_THAT(error_of([&] {
                clrt::write_image(dir.file("a.fsf"), Rgba8Image{2, 2, {{1, 2, 3, 4}}});

@@ -51,7 +51,7 @@ void run_case(DeviceContext& device, const Case& c, int ray_count, int runs) {
   std::fflush(stdout);
 }
 
-struct Options {
+struct BvhOptions {
   std::vector<std::string> files;
   int ray_count = 1 << 20;
   int runs = 3;
@@ -60,7 +60,7 @@ struct Options {
   std::string only;
 };
 
-int measure(const Options& o) {
+int measure_bvh(const BvhOptions& o) {
   std::vector<Case> cases;
   if (o.with_suite || o.files.empty()) cases = suite();
   for (const std::string& f : o.files) cases.push_back({f, [f] { return load_scene(f); }, true});
@@ -78,7 +78,7 @@ int measure(const Options& o) {
 
 void add_bvh(CLI::App& app, Command& run) {
   // Shared, because CLI11 keeps references to the fields until the command runs.
-  const auto o = std::make_shared<Options>();
+  const auto o = std::make_shared<BvhOptions>();
   CLI::App* bvh = app.add_subcommand("bvh", "BVH build time, size and ray throughput");
   bvh->add_option("scenes", o->files, ".ray files to measure (their own cameras are used)");
   bvh->add_flag("--suite", o->with_suite,
@@ -91,7 +91,7 @@ void add_bvh(CLI::App& app, Command& run) {
       ->capture_default_str();
   bvh->add_option("--only", o->only, "run only the cases whose name contains this");
   bvh->add_option("--device", o->device_spec, "OpenCL device (cpu, gpu, P:D or a name)")->capture_default_str();
-  bvh->callback([o, &run] { run = [o] { return measure(*o); }; });
+  bvh->callback([o, &run] { run = [o] { return measure_bvh(*o); }; });
 }
 
 }  // namespace clrt::bench

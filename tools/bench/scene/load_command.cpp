@@ -49,13 +49,13 @@ double load_average() {
   return getloadavg(avg, 1) == 1 ? avg[0] : -1;
 }
 
-struct Options {
+struct LoadOptions {
   std::vector<std::string> scenes;
   int runs = 5;
   unsigned threads = 0;
 };
 
-int measure(const Options& o) {
+int measure_load(const LoadOptions& o) {
   parallel_thread_limit = o.threads;
   std::printf("%u threads, best of %d runs; load average %.2f at the start", parallel_threads(), o.runs,
               load_average());
@@ -81,7 +81,7 @@ int measure(const Options& o) {
 }  // namespace
 
 void add_load(CLI::App& app, Command& run) {
-  const auto o = std::make_shared<Options>();
+  const auto o = std::make_shared<LoadOptions>();
   CLI::App* load = app.add_subcommand("load", "scene load and geometry build times and rates");
   load->add_option("scenes", o->scenes, ".ray files (e.g. clrt-make-scenes' tri-1k.ray ... tri-1m.ray)")->required();
   load->add_option("--runs", o->runs, "runs per scene; the best counts")
@@ -89,7 +89,7 @@ void add_load(CLI::App& app, Command& run) {
       ->capture_default_str();
   load->add_option("--threads", o->threads, "threads for the parallel steps (default: one per core)")
       ->transform(whole_number(1, 4096));
-  load->callback([o, &run] { run = [o] { return measure(*o); }; });
+  load->callback([o, &run] { run = [o] { return measure_load(*o); }; });
 }
 
 }  // namespace clrt::bench
