@@ -22,7 +22,9 @@ dev::u32 device_shape(ShapeKind shape) {
   throw std::logic_error("unknown shape kind");
 }
 
-dev::Instance placed(const Mat4& inverse, const Mat4& normal_matrix) {
+// Normals go to world space by (M^-1)^T.
+dev::Instance placed(const Mat4& inverse) {
+  const Mat4 normal_matrix = inverse.transposed();
   dev::Instance inst{};
   for (int r = 0; r < 3; ++r) {
     inst.world_to_object[r] = row(inverse, r, true);
@@ -34,7 +36,7 @@ dev::Instance placed(const Mat4& inverse, const Mat4& normal_matrix) {
 }  // namespace
 
 dev::Instance device_instance(const InstanceSpec& spec, dev::u32 mesh) {
-  dev::Instance inst = placed(spec.inverse, spec.normal_matrix);
+  dev::Instance inst = placed(spec.transform.inverse());
   inst.shape = device_shape(spec.shape);
   inst.material = static_cast<dev::u32>(spec.material);
   inst.mesh = spec.shape == ShapeKind::Mesh ? mesh : 0;
@@ -44,7 +46,7 @@ dev::Instance device_instance(const InstanceSpec& spec, dev::u32 mesh) {
 }
 
 dev::Instance loose_triangle_instance(dev::u32 mesh) {
-  dev::Instance inst = placed(Mat4::identity(), Mat4::identity());
+  dev::Instance inst = placed(Mat4::identity());
   inst.shape = CLRT_SHAPE_MESH;
   inst.material = CLRT_MATERIAL_PER_TRIANGLE;
   inst.mesh = mesh;

@@ -73,7 +73,7 @@ void check_coordinates(const LoaderState& state) {
   for (const InstanceSpec& instance : scene.instances) {
     const Box box = mapped(object_box(instance, mesh_boxes), instance.transform);
     if (!(box.reach() <= limits::kMaxCoordinate))
-      throw SceneError(instance.where, "this object reaches " + short_number(box.reach()) +
+      throw SceneError(instance_location(scene, instance), "this object reaches " + short_number(box.reach()) +
                                            " in world space, beyond the limit of " +
                                            short_number(limits::kMaxCoordinate) +
                                            " (the device computes in single precision)");
@@ -83,9 +83,9 @@ void check_coordinates(const LoaderState& state) {
     }
   }
   for (const InstanceSpec& instance : scene.instances) {
-    const double reach = mapped(world, instance.inverse).reach();
+    const double reach = mapped(world, instance.transform.inverse()).reach();
     if (!(reach <= limits::kMaxCoordinate))
-      throw SceneError(instance.where,
+      throw SceneError(instance_location(scene, instance),
                        "this object is so small for the scene around it that, in its own "
                        "coordinates (where the device intersects it), the scene reaches " +
                            short_number(reach) + ", beyond the limit of " +

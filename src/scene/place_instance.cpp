@@ -19,17 +19,19 @@ InstanceSpec place_instance(ShapeKind shape, const Mat4& to_world, int material)
   instance.shape = shape;
   instance.material = material;
   instance.transform = to_world;
-  instance.inverse = to_world.inverse();
-  instance.normal_matrix = instance.inverse.transposed();
   return instance;
+}
+
+SourceLocation instance_location(const Scene& scene, const InstanceSpec& instance) {
+  return {scene.path, instance.place.line, instance.place.column};
 }
 
 InstanceSpec& add_instance(LoaderState& s, const SourceLocation& where, ShapeKind shape,
                            const Mat4& to_world) {
   InstanceSpec instance = place_instance(shape, to_world, s.material);
-  instance.where = where;
+  instance.place = {where.line, where.column};
   // Extreme scale factors can overflow the product or make it numerically singular.
-  if (!all_finite(instance.transform) || !all_finite(instance.inverse))
+  if (!all_finite(instance.transform) || !all_finite(instance.transform.inverse()))
     throw SceneError(where,
                      "the transform that places this object cannot be inverted (a scale factor "
                      "too large or too small)");

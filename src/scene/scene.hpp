@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cstdint>
+#include <deque>
 #include <string>
 #include <vector>
 
@@ -41,18 +42,25 @@ struct LightSpec {
 
 enum class ShapeKind { Sphere, Plane, Cube, Cylinder, Cone, Mesh };
 
+// Where in the scene file (Scene::path) a command was written.
+struct TextPlace {
+  int line = 1;
+  int column = 1;
+};
+
+// A scene of millions of spheres holds millions of these, so the record keeps only what cannot
+// be derived: M^-1 is computed where it is used (Mat4::inverse gives the same bits every time),
+// and the file of its place is the scene's. 168 bytes.
 struct InstanceSpec {
   ShapeKind shape = ShapeKind::Sphere;
   int material = 0;  // index into Scene::materials
   int mesh = -1;     // ShapeKind::Mesh: index into Scene::meshes
+  TextPlace place;
   double cone_r0 = 1, cone_r1 = 0;
-  Mat4 transform;      // M: object to world
-  Mat4 inverse;        // M^-1
-  Mat4 normal_matrix;  // (M^-1)^T
-  SourceLocation where;
+  Mat4 transform;  // M: object to world
 };
 
-// An instance of `shape` placed by `to_world`, with M^-1 and (M^-1)^T computed once.
+// An instance of `shape` placed by `to_world`.
 InstanceSpec place_instance(ShapeKind shape, const Mat4& to_world, int material = 0);
 
 // A triangle mesh in its own object space, loaded once however many instances use it.
@@ -79,10 +87,15 @@ struct Scene {
   int samples = 1;
   std::vector<MaterialSpec> materials;  // [0] is the default material
   std::vector<LightSpec> lights;
-  std::vector<InstanceSpec> instances;
+  // A deque grows without copying what it holds: a vector's doubling held up to three times
+  // the table at its last growth, the peak of loading a scene of spheres.
+  std::deque<InstanceSpec> instances;
   std::vector<MeshData> meshes;
   std::vector<TriangleSpec> triangles;
 };
+
+// Where `instance` was written in `scene`'s file, for messages.
+SourceLocation instance_location(const Scene& scene, const InstanceSpec& instance);
 
 // Reads a scene file: NFF when its name ends in `.nff` (any case), else `.ray` (and the meshes it
 // names). Throws SceneError on any problem in the file.

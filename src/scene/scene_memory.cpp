@@ -5,9 +5,9 @@ namespace {
 
 constexpr std::uint64_t kGeometryBytesPerPrimitive = 256;
 
-template <class T>
-std::uint64_t table_bytes(const std::vector<T>& table) {
-  return table.size() * sizeof(T);
+template <class Table>
+std::uint64_t table_bytes(const Table& table) {
+  return table.size() * sizeof(typename Table::value_type);
 }
 
 }  // namespace
@@ -19,11 +19,11 @@ std::uint64_t estimated_geometry_bytes(const Scene& scene) {
 }
 
 std::uint64_t estimated_scene_bytes(const Scene& scene) {
-  std::uint64_t tables = table_bytes(scene.instances) + table_bytes(scene.triangles);
+  std::uint64_t growing = table_bytes(scene.triangles);
   for (const MeshData& mesh : scene.meshes)
-    tables += table_bytes(mesh.positions) + table_bytes(mesh.normals) + table_bytes(mesh.corners) +
-              table_bytes(mesh.corner_normals);
-  return 2 * tables + estimated_geometry_bytes(scene);
+    growing += table_bytes(mesh.positions) + table_bytes(mesh.normals) + table_bytes(mesh.corners) +
+               table_bytes(mesh.corner_normals);
+  return 2 * growing + table_bytes(scene.instances) + estimated_geometry_bytes(scene);
 }
 
 void check_scene_memory(std::uint64_t needed, const MemoryLimit& limit, const SourceLocation& where) {

@@ -16,8 +16,9 @@ namespace clrt {
 // instance (docs/performance.md, BVH scaling); 256 are assumed.
 std::uint64_t estimated_geometry_bytes(const Scene& scene);
 
-// Estimated bytes the scene needs from its load to its render: its tables, each counted twice
-// (a growing table is copied into one twice its size), and its geometry tables.
+// Estimated bytes the scene needs from its load to its render: its tables (the vectors counted
+// twice, as a growing vector is copied into one twice its size; the instances' deque once), and
+// its geometry tables.
 std::uint64_t estimated_scene_bytes(const Scene& scene);
 
 // Throws SceneError at `where`, loading stopped there, when `needed` bytes exceed `limit`.

@@ -165,7 +165,8 @@ ReferenceResult reference_closest_hit(const Scene& scene, const Vec3& o, const V
       }
       continue;
     }
-    const Vec3 oo = s.inverse.transform_point(o), od = s.inverse.transform_vector(d);
+    const Mat4 inverse = s.transform.inverse();
+    const Vec3 oo = inverse.transform_point(o), od = inverse.transform_vector(d);
     const auto at_scale = [&](double k) { return canonical_t(s, oo / k, od / k, tmin, tmax); };
     const bool plane = s.shape == ShapeKind::Plane;
     search.add({static_cast<int>(i), -1}, {at_scale(1), plane ? at_scale(1) : at_scale(1 + kGrow),

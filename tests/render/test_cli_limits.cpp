@@ -109,11 +109,12 @@ TEST_CASE("a scene larger than the memory clrt may take stops loading early, at 
   // it starts under ulimit -v.
   CLRT_SKIP_TEST("AddressSanitizer cannot run under ulimit -v");
 #endif
-  // 3M spheres: 51 MB of text that would need about 3.4 GiB loaded; the address space is capped
-  // at 2 GiB, so loading must stop about half way, with the figures, not on a failed allocation.
+  // 6M spheres: 103 MB of text, estimated at 2.5 GiB to load and render (an instance, its
+  // geometry and its line); the address space is capped at 2 GiB, so loading must stop part way,
+  // with the figures, not on a failed allocation.
   ScratchDir dir;
   std::string text = "resolution 8 8\n";
-  for (int i = 0; i < 3000000; ++i) text += "sphere " + std::to_string(i % 1000) + " 0 0 0.5\n";
+  for (int i = 0; i < 6000000; ++i) text += "sphere " + std::to_string(i % 1000) + " 0 0 0.5\n";
   const std::string path = dir.write("big.ray", text);
   const std::string clrt = std::string("\"") + CLRT_EXE + "\" -q -o \"" + dir.file("out.png") + "\" \"" + path + "\"";
   const CommandResult r = run_program("sh", "-c " + quoted("ulimit -v 2097152 && exec " + clrt));

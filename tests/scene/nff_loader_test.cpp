@@ -111,7 +111,7 @@ TEST_CASE("NFF: s is a sphere, a negative radius is its size, radius 0 is left o
   CHECK(m.transform_point({0, 0, 0}) == Vec3{1, 2, 3});
   CHECK(m.transform_point({1, 0, 0}) == Vec3{1.5, 2, 3});
   CHECK(s.instances[1].transform.transform_point({0, 1, 0}) == Vec3{-1, 2, 0});
-  CHECK(s.instances[0].where.line == 8);
+  CHECK(s.instances[0].place.line == 8);
 }
 
 namespace {

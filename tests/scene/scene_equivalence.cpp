@@ -85,7 +85,7 @@ std::vector<WorldTriangle> world_triangles(const Scene& s) {
         t.corners[i] = instance.transform.transform_point(mesh.positions[mesh.corners[first + i]]);
         if (t.has_normals)
           t.normals[i] =
-              instance.normal_matrix.transform_vector(mesh.normals[mesh.corner_normals[first + i]]);
+              instance.transform.inverse().transposed().transform_vector(mesh.normals[mesh.corner_normals[first + i]]);
       }
       out.push_back(t);
     }
@@ -134,8 +134,8 @@ std::string shape_difference(const Scene& a, const Scene& b, const Comparer& c) 
   for (std::size_t k = 0; k < sa.size(); ++k) {
     const InstanceSpec &x = *sa[k], &y = *sb[k];
     const std::string which = "shape " + std::to_string(k) + " (line " +
-                              std::to_string(x.where.line) + " against " +
-                              std::to_string(y.where.line) + "): ";
+                              std::to_string(x.place.line) + " against " +
+                              std::to_string(y.place.line) + "): ";
     if (x.shape != y.shape) return which + "different kinds";
     if (!c.same(a.materials[x.material], b.materials[y.material]))
       return which + "different materials";
