@@ -83,7 +83,7 @@ CLRT_INLINE void hit_record_resolve(const HitRecord* r, float3 o, float3 d, __gl
     }
     hit->primitive = triangle - mesh->first_triangle;
     hit->material = inst->material == CLRT_MATERIAL_PER_TRIANGLE
-                        ? triangle_materials[triangle] : inst->material;
+                        ? triangle_materials[hit->primitive] : inst->material;
   }
   hit->geometric_normal = (float4)(geometric, r->t);
   hit->shading_normal = (float4)(shading, 0.0f);

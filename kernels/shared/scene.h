@@ -55,7 +55,8 @@ CLRT_CHECK_SIZE(Light, 112);
 #define CLRT_SHAPE_MESH 5u
 
 /* Instance.material of the mesh that holds the scene's loose `triangle`s: each triangle then
- * takes its material from Mesh-relative triangle_materials. */
+ * takes its material from triangle_materials, which holds only theirs, counted from the mesh's
+ * first triangle (a table for every mesh's triangles was 4 MB per million of them, unread). */
 #define CLRT_MATERIAL_PER_TRIANGLE 0xffffffffu
 
 /* A canonical shape or a mesh placed by a transform M. The renderer intersects the canonical
@@ -74,7 +75,7 @@ CLRT_CHECK_SIZE(Instance, 128);
 
 /* A bottom-level model in its own object space; shared by all the instances that use it. */
 typedef struct Mesh {
-  u32 first_triangle; /* into the triangle (and triangle normal / material) tables */
+  u32 first_triangle; /* into the triangle normal table (triangle_materials counts from 0) */
   u32 triangle_count;
   u32 root_node;      /* root of its bottom-level BVH in the node table */
   u32 has_normals;    /* nonzero: triangle_normals holds interpolable vertex normals */

@@ -214,7 +214,7 @@ RenderSetup checked_render_setup(const CliOptions& cli, const Scene& scene,
 GeometryData built_geometry(Scene& scene, Progress& progress) {
   progress.phase("building the BVH");
   // The BVH's tables hold all the device needs: the meshes are freed as the build goes.
-  GeometryData geometry = build_geometry_releasing_meshes(scene);
+  GeometryData geometry = build_geometry_for_render(scene);
   // The loader's and the builder's scratch goes back to the system before the devices and the
   // image take their memory, rather than staying in the heap's free lists.
   malloc_trim(0);

@@ -38,9 +38,15 @@ struct Leaves {
 
   explicit Leaves(const BvhTree& tree) : index_at(tree.order.size(), 0) {
     std::vector<const BvhLane*> starting_at(tree.order.size(), nullptr);
+    std::size_t count = 0;
     for (const BvhTreeNode& node : tree.nodes)
       for (const BvhLane& lane : node.lane)
-        if (lane.leaf()) starting_at.at(lane.first) = &lane;
+        if (lane.leaf()) {
+          starting_at.at(lane.first) = &lane;
+          ++count;
+        }
+    // Sized exactly: these tables live while the BVH table, the build's largest, is written.
+    in_order.reserve(count);
     for (const BvhLane* leaf : starting_at)
       if (leaf) {
         index_at[leaf->first] = static_cast<std::uint32_t>(in_order.size());
@@ -202,6 +208,7 @@ std::uint32_t append_mesh_level(const BvhTree& tree, const TriangleSource& sourc
   const std::size_t first_slot = table.size();
   const std::size_t packets_block = (first_slot + tree.nodes.size()) * kSlotBlocks;
   std::vector<LeafRef> refs;
+  refs.reserve(leaves.in_order.size());
   std::size_t block = packets_block;
   for (const BvhLane* leaf : leaves.in_order) {
     const std::uint32_t packets = packets_for(leaf->count);

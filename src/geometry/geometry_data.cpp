@@ -55,7 +55,7 @@ std::size_t GeometryData::device_bytes() const {
 
 GeometryData build_geometry(const Scene& scene) { return build_tables(scene, {}); }
 
-GeometryData build_geometry_releasing_meshes(Scene& scene) {
+GeometryData build_geometry_for_render(Scene& scene) {
   GeometryData out = build_tables(scene, [&scene](std::size_t m) {
     if (m >= scene.meshes.size()) return;  // the loose triangles' mesh
     MeshData& mesh = scene.meshes[m];
@@ -63,6 +63,8 @@ GeometryData build_geometry_releasing_meshes(Scene& scene) {
     std::vector<std::uint32_t>().swap(mesh.corner_normals);
   });
   release_mesh_data(scene);
+  std::vector<int>().swap(out.instance_source);
+  std::vector<dev::u32>().swap(out.triangle_source);
   return out;
 }
 

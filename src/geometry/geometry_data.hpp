@@ -20,8 +20,9 @@ struct GeometryData {
   // Per triangle, each mesh's triangles in the order of its BVH leaves, which is the order
   // Hit.primitive counts in (triangle_source maps them back to the file's order):
   DeviceTable<dev::TriangleNormals> triangle_normals;  // zero without normals
-  DeviceTable<dev::u32> triangle_materials;            // one per triangle; used by the loose
-                                                       // triangles only (else 0)
+  DeviceTable<dev::u32> triangle_materials;            // one per loose triangle, in the loose
+                                                       // mesh's order (meshes take their
+                                                       // instance's material)
   BvhTable nodes;                     // the top level's root is node 0
   double build_seconds = 0;                            // BVH build time, for --stats
 
@@ -37,11 +38,12 @@ struct GeometryData {
 
 GeometryData build_geometry(const Scene& scene);
 
-// The same, freeing the data of `scene`'s meshes as the build is done with it: each mesh's normals
-// once its per-triangle rows hold them (before the BVH table, the build's largest allocation, is
-// written), the rest at the end (release_mesh_data). For a 1M-triangle mesh with normals the
-// build's peak is 24 MB lower.
-GeometryData build_geometry_releasing_meshes(Scene& scene);
+// The same tables for a render, which needs nothing else: the data of `scene`'s meshes is freed
+// as the build is done with it (each mesh's normals once its per-triangle rows hold them, before
+// the BVH table, the build's largest allocation, is written; the rest at the end, by
+// release_mesh_data), and the host-only maps back to the scene are left empty. For a 1M-triangle
+// mesh with normals the build's peak is 24 MB lower and the render's 4 MB.
+GeometryData build_geometry_for_render(Scene& scene);
 
 // Frees the positions, normals and corners of `scene`'s meshes (each keeps its path): once
 // build_geometry has run, its BVH table and per-triangle tables hold all the device needs, and

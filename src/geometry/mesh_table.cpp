@@ -69,7 +69,7 @@ dev::TriangleNormals TriangleSource::normals(std::size_t t) const {
 }
 
 dev::u32 TriangleSource::material(std::size_t t) const {
-  return loose_ ? static_cast<dev::u32>((*loose_)[t].material) : 0u;
+  return static_cast<dev::u32>(loose_->at(t).material);
 }
 
 std::vector<Box> triangle_boxes(const TriangleSource& source) {
@@ -94,7 +94,7 @@ void write_triangle_rows(const TriangleSource& source, const std::vector<std::ui
   parallel_for(order.size(), kChunk, [&](std::size_t i) {
     const std::uint32_t t = order[i];
     out.triangle_normals[first + i] = source.normals(t);
-    out.triangle_materials[first + i] = source.material(t);
+    if (source.loose()) out.triangle_materials[i] = source.material(t);
     out.triangle_source[first + i] = t;
   });
 }

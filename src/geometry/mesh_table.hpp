@@ -32,7 +32,9 @@ class TriangleSource {
   // Its unit vertex normals (a corner's normal that cannot be normalised is the face normal);
   // all zero without normals.
   dev::TriangleNormals normals(std::size_t t) const;
-  // Its own material (a loose triangle's), else 0: a mesh takes its instance's.
+  // Whether it holds the scene's loose triangles, which alone have materials of their own.
+  bool loose() const { return loose_ != nullptr; }
+  // Triangle t's own material; only for the loose triangles (a mesh takes its instance's).
   dev::u32 material(std::size_t t) const;
 
  private:
@@ -49,8 +51,8 @@ std::vector<Box> triangle_boxes(const TriangleSource& source);
 // tables (its BVH root is set later).
 dev::Mesh device_mesh(const TriangleSource& source, dev::u32 first_triangle);
 
-// Writes the per-triangle rows first + i = source triangle order[i] (normals, material, source
-// index) on every core; the tables must already hold them.
+// Writes the per-triangle rows first + i = source triangle order[i] (normals, source index; the
+// loose triangles' materials at row i) on every core; the tables must already hold them.
 void write_triangle_rows(const TriangleSource& source, const std::vector<std::uint32_t>& order,
                          std::size_t first, GeometryData& out);
 
