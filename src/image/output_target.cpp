@@ -61,8 +61,10 @@ void check_output_writable(const std::string& path) {
   refuse_folder(path);
   struct stat info {};
   const std::string folder = image_detail::folder_of(target.path);
-  if (::stat(folder.c_str(), &info) != 0 || !S_ISDIR(info.st_mode))
-    refuse(path, folder + " is not a folder");
+  // A missing folder, and a path longer than PATH_MAX (ENAMETOOLONG), are told as the system
+  // tells them.
+  if (::stat(folder.c_str(), &info) != 0) refuse(path, folder + ": " + std::strerror(errno));
+  if (!S_ISDIR(info.st_mode)) refuse(path, folder + " is not a folder");
   // The temporary's short name would pass where the final rename fails.
   const long name_max = ::pathconf(folder.c_str(), _PC_NAME_MAX);
   const std::size_t name_bytes = target.path.size() - target.path.rfind('/') - 1;

@@ -1,6 +1,8 @@
 // Outputs that are not plain new files: devices and FIFOs are written straight through (a
 // rename would replace them by a regular file), a link has its target replaced and stays a
 // link, and every name a folder allows can be written (the temporary's name is short).
+#include <cerrno>
+#include <cstring>
 #include <sys/stat.h>
 #include <sys/sysmacros.h>
 #include <unistd.h>
@@ -119,9 +121,22 @@ TEST_CASE("an output that cannot be created is refused before any work, naming t
   CHECK_THAT(message, !Contains(".tmp"));
   ScratchDir dir;
   CHECK_THAT(refusal(dir.path().string()), Contains("it is a folder"));
-  CHECK_THAT(refusal(dir.file("no/such.png")), Contains("is not a folder"));
+  CHECK_THAT(refusal(dir.file("no/such.png")), Contains("no: No such file or directory"));
+  CHECK_THAT(refusal(dir.file("fine.png/x.png")), Contains("fine.png: No such file or directory"));
   clrt::check_output_writable(dir.file("fine.png"));
   CHECK(dir.entries().empty());  // the probe is removed again
+  const std::string file = dir.write("file.txt", "x");
+  CHECK_THAT(refusal(file + "/x.png"), Contains("file.txt is not a folder"));
+}
+
+TEST_CASE("a path longer than the system allows is refused at once, as the system says",
+          "[image][output]") {
+  ScratchDir dir;
+  std::string deep = dir.path().string();
+  for (int i = 0; i < 20; ++i) deep += "/" + std::string(250, 'd');  // beyond PATH_MAX (4096)
+  const std::string path = deep + "/out.png";
+  CHECK_THAT(refusal(path), Contains(std::strerror(ENAMETOOLONG)));
+  CHECK(dir.entries().empty());
 }
 
 TEST_CASE("the bytes an uncompressed image needs at least, and the free bytes", "[image][output]") {
