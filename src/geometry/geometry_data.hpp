@@ -32,7 +32,7 @@ struct GeometryData {
   std::vector<dev::u32> triangle_source;   // per triangle: its index within its MeshData (in
                                            // Scene::triangles for the loose-triangle mesh)
 
-  std::size_t triangle_count() const { return triangle_source.size(); }
+  std::size_t triangle_count() const { return triangle_normals.size(); }
   std::size_t device_bytes() const;
 };
 
