@@ -264,8 +264,9 @@ int run_clrt(const CliOptions& cli) {
     const auto prepare_start = Clock::now();
     naming_out_of_memory("starting the devices", [&] {
       devices.entries = select_devices(cli.device);
-      devices.prepared = prepare_devices(
-          devices.entries, [&] { progress.phase("building kernels (first run on this device)"); });
+      devices.prepared = prepare_devices(devices.entries, [&](bool first_run) {
+        progress.phase(first_run ? "building kernels (first run on this device)" : "building kernels");
+      });
     });
     if (loading.wait_for(std::chrono::seconds(0)) != std::future_status::ready)
       progress.phase("loading " + cli.scene);

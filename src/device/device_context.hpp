@@ -11,6 +11,10 @@
 
 namespace clrt {
 
+// Told before a program is compiled from source: `first_run` when clrt's program cache was
+// asked and lacks it; false when the driver's own cache decides (PoCL's: it may be quick).
+using CompileNotice = std::function<void(bool first_run)>;
+
 class DeviceContext {
  public:
   explicit DeviceContext(const DeviceEntry& entry);
@@ -29,7 +33,7 @@ class DeviceContext {
   // holds it; else `compiling` is called first, since compiling takes seconds where loading
   // takes milliseconds. A failure throws DeviceError with the device's whole build log.
   compute::program build(const std::string& source, const std::string& options = "",
-                         const std::function<void()>& compiling = {}) const;
+                         const CompileNotice& compiling = {}) const;
 
   // A device buffer of `bytes`; `what` names it in the error when the device refuses.
   compute::buffer allocate(std::size_t bytes, const std::string& what) const;

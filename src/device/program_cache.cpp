@@ -41,9 +41,10 @@ std::optional<std::filesystem::path> environment_path(const char* name) {
 
 }  // namespace
 
-std::optional<std::filesystem::path> ProgramCache::folder_from_environment() {
+std::optional<std::filesystem::path> ProgramCache::folder_from_environment(bool keeps_compiled_kernels) {
   if (const char* own = std::getenv("CLRT_CACHE_DIR"))
     return *own == '\0' ? std::nullopt : std::optional<std::filesystem::path>(own);
+  if (keeps_compiled_kernels) return std::nullopt;
   if (auto xdg = environment_path("XDG_CACHE_HOME")) return *xdg / "clrt";
   if (auto home = environment_path("HOME")) return *home / ".cache" / "clrt";
   return std::nullopt;

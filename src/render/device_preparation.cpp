@@ -5,7 +5,7 @@
 namespace clrt {
 
 std::vector<PreparedDevice> prepare_devices(const std::vector<DeviceEntry>& devices,
-                                            const std::function<void()>& compiling) {
+                                            const CompileNotice& compiling) {
   std::vector<PreparedDevice> prepared;
   for (const DeviceEntry& entry : devices) {
     PreparedDevice d;

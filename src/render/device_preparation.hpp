@@ -3,7 +3,6 @@
 // 25 ms) and the build (about 30 ms from a warm kernel cache) can run while the scene loads.
 #pragma once
 
-#include <functional>
 #include <memory>
 #include <vector>
 
@@ -18,8 +17,8 @@ struct PreparedDevice {
 };
 
 // Throws DeviceError with the build log of a program that does not build. `compiling` is called
-// before a device's program is compiled from source (the program cache does not hold it).
+// before a device's program is compiled from source (CompileNotice).
 std::vector<PreparedDevice> prepare_devices(const std::vector<DeviceEntry>& devices,
-                                            const std::function<void()>& compiling = {});
+                                            const CompileNotice& compiling = {});
 
 }  // namespace clrt

@@ -6,7 +6,7 @@
 namespace clrt {
 
 compute::program build_renderer_program(const DeviceContext& device,
-                                        const std::function<void()>& compiling) {
+                                        const CompileNotice& compiling) {
   return device.build(renderer_program_source(), tuning_for(device.device()).program_options(),
                       compiling);
 }

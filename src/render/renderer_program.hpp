@@ -2,14 +2,12 @@
 // device's class (src/device/device_tuning.cpp), so every scene shares one cached build.
 #pragma once
 
-#include <functional>
-
 #include "device/device_context.hpp"
 
 namespace clrt {
 
-// `compiling` as DeviceContext::build() calls it: when the program cache does not hold it.
+// `compiling` as DeviceContext::build() calls it: before a build from source.
 compute::program build_renderer_program(const DeviceContext& device,
-                                        const std::function<void()>& compiling = {});
+                                        const CompileNotice& compiling = {});
 
 }  // namespace clrt

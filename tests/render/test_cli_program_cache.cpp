@@ -64,3 +64,17 @@ TEST_CASE("a cache folder that cannot be made is no error", "[program-cache]") {
   const std::string blocker = dir.write("blocker", "a file where the cache's parent would be");
   CHECK(render(dir, blocker + "/cache", "uncached.pfm") == reference);
 }
+
+TEST_CASE("PoCL, which keeps its compiled kernels itself, gets clrt's cache only where CLRT_CACHE_DIR names it",
+          "[program-cache]") {
+  ScratchDir dir;
+  const std::string home = dir.file("home"), xdg = dir.file("xdg");
+  const CommandResult r = run_clrt(quoted(test_scene("area.ray")) + " -q --resolution 32x24 --spp 2 -o " +
+                                       quoted(dir.file("uncached.pfm")),
+                                   "-u CLRT_CACHE_DIR HOME=" + quoted(home) + " XDG_CACHE_HOME=" + quoted(xdg));
+  INFO(r.output);
+  REQUIRE(r.exit_code == 0);
+  CHECK_FALSE(std::filesystem::exists(xdg));
+  CHECK_FALSE(std::filesystem::exists(home));
+  CHECK(file_bytes(dir.file("uncached.pfm")) == render(dir, dir.file("cache"), "cached.pfm"));
+}

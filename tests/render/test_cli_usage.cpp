@@ -285,6 +285,18 @@ TEST_CASE("the kernel build is named as a phase when the program cache does not 
   CHECK(warm.output.find("building kernels") == std::string::npos);
 }
 
+TEST_CASE("without clrt's program cache the kernel build is named without claiming a first run",
+          "[cli][usage]") {
+  ScratchDir dir;
+  const std::string command = "stty cols 80; CLRT_CACHE_DIR= '" + std::string(CLRT_EXE) + "' " +
+                              quoted(test_scene("test2.ray")) + " --resolution 20x12 -o " + dir.file("out.png");
+  const CommandResult r = run_program("script", "-qec " + quoted(command) + " /dev/null");
+  INFO(r.output);
+  REQUIRE(r.exit_code == 0);
+  CHECK(r.output.find("building kernels") != std::string::npos);
+  CHECK(r.output.find("first run") == std::string::npos);
+}
+
 TEST_CASE("redirected, clrt prints its device in 80 columns and a line per image written",
           "[cli][usage]") {
   ScratchDir dir;
