@@ -197,11 +197,11 @@ struct Occupied {
   }
 };
 
-Occupied occupied(const std::array<Bin, kMaxBins>& bins, int count) {
-  Occupied o;
+// (Filled in place: an Occupied is 400 bytes, and copying three of them a split was a tenth of
+// the time of the small ranges' splits.)
+void occupied(const std::array<Bin, kMaxBins>& bins, int count, Occupied& o) {
   for (int b = 0; b < count; ++b)
     if (bins[b].count > 0) o.push(b, &bins[b]);
-  return o;
 }
 
 // A small range's items with their centres and bins on every axis, worked out once.
@@ -219,8 +219,8 @@ struct SmallRange {
 };
 
 // The occupied bins of one axis of a small range, held in `store`.
-Occupied occupied_sparse(const BuildItems& items, const Range& range, const SmallRange& small, int axis,
-                         std::array<Bin, kSparseItems>& store) {
+void occupied_sparse(const BuildItems& items, const Range& range, const SmallRange& small, int axis,
+                     std::array<Bin, kSparseItems>& store, Occupied& o) {
   // Keys of bin and item, sorted by insertion (a handful of them).
   std::array<std::uint32_t, kSparseItems> key;
   for (std::uint32_t i = 0; i < small.size; ++i) {
@@ -229,7 +229,6 @@ Occupied occupied_sparse(const BuildItems& items, const Range& range, const Smal
     for (; j > 0 && key[j - 1] > k; --j) key[j] = key[j - 1];
     key[j] = k;
   }
-  Occupied o;
   for (std::uint32_t i = 0; i < small.size; ++i) {
     const int b = static_cast<int>(key[i] >> 8);
     if (o.count == 0 || o.bin[o.count - 1] != b) {
@@ -239,7 +238,6 @@ Occupied occupied_sparse(const BuildItems& items, const Range& range, const Smal
     const std::uint32_t item = key[i] & 0xff;
     store[o.count - 1].add(items[range.begin + item], small.center[item]);
   }
-  return o;
 }
 
 // std::partition of a small range by the bins already worked out: libstdc++'s algorithm (see
@@ -361,7 +359,10 @@ std::optional<Split> split_sah(BuildItems& items, const Range& range, const SahC
   Candidate best;
   for (int a = 0; a < 3; ++a) {
     if (!binning.spread(a)) continue;
-    bins[a] = small ? occupied_sparse(items, range, *small, a, small_bins[a]) : occupied(grid.axis[a], binning.bins);
+    if (small)
+      occupied_sparse(items, range, *small, a, small_bins[a], bins[a]);
+    else
+      occupied(grid.axis[a], binning.bins, bins[a]);
     sweep(bins[a], a, costs, best);
   }
   if (best.axis < 0) return std::nullopt;
