@@ -1,9 +1,10 @@
 #include "cli/animation_options.hpp"
 
 #include <cmath>
+#include <cstdint>
 #include <filesystem>
-#include <regex>
 
+#include "math/number_fields.hpp"
 #include "render/usage_error.hpp"
 
 namespace clrt {
@@ -23,11 +24,9 @@ FramePlan resolve_frames(const AnimationRequest& request) {
   if (!std::isfinite(plan.orbit_degrees))
     throw UsageError("--orbit takes a finite number of degrees");
   if (request.frame_range) {
-    static const std::regex form("([0-9]{1,10}):([0-9]{1,10})");
-    std::smatch m;
-    if (!std::regex_match(*request.frame_range, m, form))
-      throw UsageError("--frame-range takes FIRST:LAST, frame numbers from 1, e.g. 1:24");
-    const unsigned long long first = std::stoull(m[1]), last = std::stoull(m[2]);
+    const auto range = read_number_fields(*request.frame_range, {"#:#", 10});
+    if (!range) throw UsageError("--frame-range takes FIRST:LAST, frame numbers from 1, e.g. 1:24");
+    const std::uint64_t first = (*range)[0], last = (*range)[1];
     if (first < 1 || last < first || last > plan.frames)
       throw UsageError("--frame-range " + *request.frame_range + ": frames 1 to " +
                        std::to_string(plan.frames) + " exist, and FIRST must not pass LAST");

@@ -4,7 +4,6 @@
 #include <filesystem>
 #include <map>
 #include <memory>
-#include <regex>
 #include <sstream>
 #include <tuple>
 #include <utility>
@@ -13,6 +12,7 @@
 #include "cli/decimal_number.hpp"
 #include "cli/tool_command_line.hpp"
 #include "cli/whole_number.hpp"
+#include "math/number_fields.hpp"
 #include "render/integrator.hpp"
 
 #include "scene/limits.hpp"
@@ -24,11 +24,10 @@ constexpr const char* kNoOutputPath = "none";
 
 // "640x480" -> width, height; CLI11 reports the returned message as a usage error.
 std::string parse_resolution(const std::string& text, CliOptions& o) {
-  static const std::regex form("([0-9]{1,6})[xX]([0-9]{1,6})");
-  std::smatch m;
-  if (!std::regex_match(text, m, form)) return "--resolution takes WIDTHxHEIGHT, e.g. 1280x720";
-  o.width = std::stoi(m[1]);
-  o.height = std::stoi(m[2]);
+  const auto size = read_number_fields(text, {"#x#", 6, false, true});
+  if (!size) return "--resolution takes WIDTHxHEIGHT, e.g. 1280x720";
+  o.width = static_cast<int>((*size)[0]);
+  o.height = static_cast<int>((*size)[1]);
   if (*o.width < 1 || *o.height < 1) return "--resolution: width and height must be at least 1";
   return {};
 }

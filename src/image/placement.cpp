@@ -1,7 +1,8 @@
 #include "image/placement.hpp"
 
 #include <cstdint>
-#include <regex>
+
+#include "math/number_fields.hpp"
 
 namespace clrt::image_detail {
 namespace {
@@ -22,13 +23,11 @@ Placement parse_placement_text(const std::string& text, int width, int height,
                                const std::string& context) {
   // No leading zeros, so one placement has one spelling; up to 10 digits, so every number fits
   // in 64 bits before the range checks.
-  static const std::string n = "(0|[1-9][0-9]{0,9})";
-  static const std::regex form(n + "," + n + " " + n + "x" + n + " of " + n + "x" + n);
-  std::smatch m;
-  if (!std::regex_match(text, m, form))
+  const auto numbers = read_number_fields(text, {"#,# #x# of #x#", 10, true});
+  if (!numbers)
     throw ImageError(context + ": the placement \"" + text +
                      "\" is not of the form X,Y WxH of FULL_WxFULL_H");
-  const auto number = [&](std::size_t i) { return std::stoll(m[i].str()); };
+  const auto number = [&](std::size_t i) { return static_cast<long long>((*numbers)[i - 1]); };
   if (number(3) != width || number(4) != height)
     throw ImageError(context + ": the placement \"" + text + "\" is for a " +
                      std::to_string(number(3)) + "x" + std::to_string(number(4)) +

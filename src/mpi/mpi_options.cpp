@@ -2,7 +2,7 @@
 
 #include <CLI/CLI.hpp>
 
-#include <regex>
+#include "math/number_fields.hpp"
 
 namespace clrt::mpi {
 
@@ -15,12 +15,10 @@ ProgramOptions mpi_program_options(TileSize& tile) {
     app.add_option_function<std::string>(
         "--tile",
         [&tile](const std::string& value) {
-          static const std::regex form("([0-9]{1,5})[xX]([0-9]{1,5})");
-          std::smatch m;
-          if (!std::regex_match(value, m, form) || std::stoi(m[1]) < 1 || std::stoi(m[2]) < 1)
+          const auto size = read_number_fields(value, {"#x#", 5, false, true});
+          if (!size || (*size)[0] < 1 || (*size)[1] < 1)
             throw CLI::ValidationError("--tile takes WIDTHxHEIGHT in pixels, e.g. 128x128");
-          tile = {static_cast<std::uint32_t>(std::stoi(m[1])),
-                  static_cast<std::uint32_t>(std::stoi(m[2]))};
+          tile = {static_cast<std::uint32_t>((*size)[0]), static_cast<std::uint32_t>((*size)[1])};
         },
         "the size of the tiles the ranks are dealt, WxH in pixels (default 128x128)");
   };
