@@ -13,7 +13,7 @@
 #include "cli/tool_command_line.hpp"
 #include "cli/whole_number.hpp"
 #include "math/number_fields.hpp"
-#include "render/integrator.hpp"
+#include "render/integrator_names.hpp"
 
 #include "scene/limits.hpp"
 
@@ -110,12 +110,9 @@ void add_device_options(CLI::App& app, CliOptions& o) {
   app.add_option("--threads,--nthreads", o.threads,
                  "CPU threads of PoCL's or Intel's CPU device (default: every core)")
       ->transform(whole_number(1, 4096));
-  std::string integrators;
-  for (const IntegratorEntry& entry : integrator_table())
-    integrators += std::string(integrators.empty() ? "" : "; ") + entry.name + ": " + entry.summary;
   app.add_option_function<std::string>(
          "--integrator", [&](const std::string& name) { o.integrator = *parse_integrator(name); },
-         integrators + " (every integrator renders the same image)")
+         integrator_summaries() + " (every integrator renders the same image)")
       ->check(CLI::IsMember(integrator_names(), CLI::ignore_case));
   app.add_option("--wavefront", o.wavefront,
                  "rays in flight per queue: device memory grows with it "

@@ -35,4 +35,11 @@ std::vector<std::string> integrator_names() {
   return names;
 }
 
+std::string integrator_summaries() {
+  std::string text;
+  for (const IntegratorEntry& entry : integrator_table())
+    text += std::string(text.empty() ? "" : "; ") + entry.name + ": " + entry.summary;
+  return text;
+}
+
 }  // namespace clrt

@@ -16,6 +16,7 @@
 #include "render/busy_timeline.hpp"
 #include "render/device_buffer.hpp"
 #include "render/device_frame.hpp"
+#include "render/integrator_names.hpp"
 #include "render/pixel_rect.hpp"
 #include "render/render_options.hpp"
 #include "render/render_stats.hpp"
@@ -64,7 +65,5 @@ struct IntegratorEntry {
 // Every integrator, the product first.
 const std::vector<IntegratorEntry>& integrator_table();
 const IntegratorEntry& integrator_entry(IntegratorKind kind);
-std::optional<IntegratorKind> parse_integrator(const std::string& name);  // any case
-std::vector<std::string> integrator_names();
 
 }  // namespace clrt
