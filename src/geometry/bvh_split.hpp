@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "geometry/bvh_box.hpp"
+#include "math/page_aligned_allocator.hpp"
 
 namespace clrt {
 
@@ -25,8 +26,9 @@ struct BuildItem {
   float center(int axis) const;
 };
 
-// The items in tree order: ranges are slices of it, partitioned in place.
-using BuildItems = std::vector<BuildItem>;
+// The items in tree order: ranges are slices of it, partitioned in place. (32 MB for a million
+// triangles, written once where they are allocated: in huge pages where the kernel has them.)
+using BuildItems = std::vector<BuildItem, PageAlignedAllocator<BuildItem>>;
 
 // `alone[i]` says whether boxes[i] must be alone in its leaf (empty: none must).
 BuildItems make_build_items(const std::vector<Box>& boxes, const std::vector<bool>& alone);

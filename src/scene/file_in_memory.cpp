@@ -1,14 +1,13 @@
 #include "scene/file_in_memory.hpp"
 
 #include <fcntl.h>
-#include <sys/mman.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
 #include <cerrno>
 #include <cstring>
-#include <new>
 
+#include "math/fresh_pages.hpp"
 #include "scene/input_file_checks.hpp"
 
 namespace clrt {
@@ -41,16 +40,6 @@ std::size_t read_up_to(int fd, char* to, std::size_t size) {
   return done;
 }
 
-// Room for `bytes` in pages of their own, huge ones where the kernel has them: reading a file
-// into fresh 4 KiB pages took 3x as long as mapping it (a fault and a zeroed page each), into 2 MiB
-// pages a quarter longer (docs/performance.md).
-char* fresh_pages(std::size_t bytes) {
-  void* p = ::mmap(nullptr, bytes, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
-  if (p == MAP_FAILED) throw std::bad_alloc();
-  ::madvise(p, bytes, MADV_HUGEPAGE);
-  return static_cast<char*>(p);
-}
-
 bool same_version(const struct stat& a, const struct stat& b) {
   return a.st_size == b.st_size && a.st_mtim.tv_sec == b.st_mtim.tv_sec &&
          a.st_mtim.tv_nsec == b.st_mtim.tv_nsec;
@@ -69,11 +58,11 @@ FileInMemory::FileInMemory(const std::string& path, std::uint64_t max_bytes,
   size_ = static_cast<std::size_t>(before.st_size);
   // One byte more than the size: a file that grew gives it.
   const std::size_t room = size_ + 1;
-  bytes_ = std::unique_ptr<char, Unmap>(fresh_pages(room), Unmap{room});
+  bytes_ = std::unique_ptr<char, Unmap>(static_cast<char*>(map_fresh_pages(room)), Unmap{room});
   const std::size_t got = read_up_to(file.fd, bytes_.get(), room);
   if (got != size_ || !same_version(before, status_of(file.fd))) throw FileChangedError();
 }
 
-void FileInMemory::Unmap::operator()(char* pages) const { ::munmap(pages, bytes); }
+void FileInMemory::Unmap::operator()(char* pages) const { unmap_fresh_pages(pages, bytes); }
 
 }  // namespace clrt
