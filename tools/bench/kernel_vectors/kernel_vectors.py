@@ -1,0 +1,109 @@
+#!/usr/bin/env python3
+"""How wide the arithmetic of clrt's kernels is in the machine code PoCL compiled for one render:
+whether a kernel runs its work-items side by side in SIMD lanes or one after another.
+
+PoCL compiles each kernel for each local size into a shared object in its cache. This script
+renders a scene into an empty cache of its own, disassembles every kernel's object and counts
+its floating-point arithmetic instructions (add, sub, mul, div, sqrt, min, max, fused
+multiply-adds, compares) by form:
+  scalar      one float at a time (vaddss, ...): a work-item's arithmetic, one item after another;
+  xmm         packed in 128-bit registers: mostly a work-item's own float3 and float4 arithmetic
+              (vectors the kernel source spells out, packed by LLVM's SLP vectoriser);
+  ymm, zmm    packed 8 or 16 wide: work-items side by side in the lanes (PoCL's work-group loop
+              vectorised by LLVM's loop vectoriser), or a work-item's own 8-wide arithmetic
+              (the traversal tests a BVH node's 8 children at once: kernels/shared/bvh.h).
+A kernel without ymm or zmm arithmetic runs its work-items one at a time.
+
+Usage: /usr/bin/python3 tools/bench/kernel_vectors/kernel_vectors.py [SCENE] [--clrt PATH]
+           [--resolution WxH] [-- CLRT_ARGUMENTS...]
+       e.g. ... scenes/reflect.ray -- --integrator megakernel
+Prints a Markdown table; exits 1 when the render produced no kernel objects (a device other than
+PoCL's CPU device keeps none), 2 on a usage error.
+"""
+
+import argparse
+import collections
+import os
+import pathlib
+import re
+import subprocess
+import sys
+import tempfile
+
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[1]))
+import clrt_run  # noqa: E402
+
+FP_OPERATIONS = ("add", "sub", "mul", "div", "sqrt", "min", "max", "fmadd", "fmsub", "fnmadd",
+                 "fnmsub", "cmp")
+# An AVX or SSE floating-point instruction: v?OPERATION(...)(ss|sd|ps|pd).
+FP_INSTRUCTION = re.compile(r"^v?(%s)\w*?(ss|sd|ps|pd)$" % "|".join(FP_OPERATIONS))
+REGISTER = re.compile(r"%([xyz])mm\d+")
+FORMS = ("scalar", "xmm", "ymm", "zmm")
+
+
+def instruction_forms(disassembly):
+    """Counts of the floating-point arithmetic instructions in objdump's output, by form."""
+    counts = collections.Counter()
+    for line in disassembly.splitlines():
+        fields = line.split("\t")
+        if len(fields) < 2:
+            continue
+        words = fields[-1].split(None, 1)
+        if not words:
+            continue
+        match = FP_INSTRUCTION.match(words[0])
+        if not match:
+            continue
+        if match.group(2) in ("ss", "sd"):
+            counts["scalar"] += 1
+            continue
+        widths = REGISTER.findall(words[1] if len(words) > 1 else "")
+        counts[max(widths, default="x") + "mm"] += 1
+    return counts
+
+
+def kernel_objects(cache):
+    """(kernel, local size, object path) for every kernel object PoCL wrote under `cache`."""
+    out = []
+    for path in sorted(pathlib.Path(cache).rglob("*.so")):
+        kernel = path.stem
+        local_size = path.parent.name.split("-goffs")[0].replace("-", "x")
+        out.append((kernel, local_size, path))
+    return out
+
+
+def report(rows):
+    lines = ["| kernel | local size | scalar | 4 wide (xmm) | 8 wide (ymm) | 16 wide (zmm) |",
+             "|---|---|---:|---:|---:|---:|"]
+    for kernel, local_size, counts in rows:
+        lines.append(f"| {kernel} | {local_size} | " + " | ".join(str(counts[f]) for f in FORMS) + " |")
+    return "\n".join(lines)
+
+
+def main(argv):
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("scene", nargs="?", default=str(clrt_run.REPO / "scenes" / "reflect.ray"))
+    parser.add_argument("--clrt", default=str(clrt_run.CLRT))
+    parser.add_argument("--resolution", default="64x64")
+    parser.add_argument("clrt_arguments", nargs="*", help="more of clrt's options, after --")
+    args = parser.parse_args(argv)
+    with tempfile.TemporaryDirectory(prefix="clrt-kernel-vectors-") as cache:
+        env = dict(os.environ, POCL_CACHE_DIR=cache)
+        clrt_run.run([args.clrt, args.scene, "--resolution", args.resolution, "--no-write", "-q",
+                      *args.clrt_arguments], env=env)
+        objects = kernel_objects(cache)
+        if not objects:
+            print("kernel_vectors: the render left no kernel objects (not PoCL's CPU device?)",
+                  file=sys.stderr)
+            return 1
+        rows = []
+        for kernel, local_size, path in objects:
+            disassembly = subprocess.run(["objdump", "-d", "--no-show-raw-insn", str(path)],
+                                         check=True, capture_output=True, text=True).stdout
+            rows.append((kernel, local_size, instruction_forms(disassembly)))
+    print(report(rows))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))

@@ -1,0 +1,61 @@
+"""Tests of kernel_vectors.py: its reading of disassembly, and a real render on PoCL.
+
+    python3 tools/bench/kernel_vectors/test_kernel_vectors.py [CLRT]   (CTest: bench_kernel_vectors)
+"""
+
+import contextlib
+import io
+import pathlib
+import sys
+import unittest
+
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
+import kernel_vectors  # noqa: E402
+
+CLRT = pathlib.Path(sys.argv.pop(1)) if len(sys.argv) > 1 else kernel_vectors.clrt_run.CLRT
+
+DISASSEMBLY = """
+    1000:\tvaddss %xmm1,%xmm2,%xmm3
+    1004:\tvmulss (%rax),%xmm0,%xmm0
+    1008:\tvsqrtsd %xmm1,%xmm1,%xmm1
+    100c:\tvmulps %xmm1,%xmm2,%xmm3
+    1010:\tvfmadd231ps %ymm1,%ymm2,%ymm3
+    1014:\tvcmpltps %ymm4,%ymm5,%k1
+    1018:\tvmaxps %zmm1,%zmm2,%zmm3
+    101c:\tvmovaps %ymm1,(%rax)
+    1020:\tvpaddd %ymm1,%ymm2,%ymm3
+    1024:\tadd $0x4,%rax
+    1028:\tcmp %eax,%ebx
+    102c:\tvunpcklps %xmm1,%xmm2,%xmm3
+"""
+
+
+class Disassembly(unittest.TestCase):
+    def test_floating_point_arithmetic_is_counted_by_width(self):
+        counts = kernel_vectors.instruction_forms(DISASSEMBLY)
+        self.assertEqual(counts["scalar"], 3)  # vaddss, vmulss, vsqrtsd
+        self.assertEqual(counts["xmm"], 1)     # vmulps
+        self.assertEqual(counts["ymm"], 2)     # vfmadd231ps, vcmpltps
+        self.assertEqual(counts["zmm"], 1)     # vmaxps
+
+    def test_moves_integers_and_shuffles_are_not_arithmetic(self):
+        counts = kernel_vectors.instruction_forms(DISASSEMBLY)
+        self.assertEqual(sum(counts.values()), 7)
+
+
+class RealRender(unittest.TestCase):
+    def test_every_kernel_of_a_render_is_reported(self):
+        out = io.StringIO()
+        with contextlib.redirect_stdout(out):
+            status = kernel_vectors.main(["--clrt", str(CLRT), "--resolution", "16x12"])
+        self.assertEqual(status, 0)
+        rows = {line.split("|")[1].strip(): line for line in out.getvalue().splitlines()[2:]}
+        for kernel in ("generate", "intersect", "shade", "shadow", "gather_shadows", "resolve"):
+            self.assertIn(kernel, rows)
+        # shade is the largest kernel: it cannot have compiled to no arithmetic at all.
+        shade = [int(cell) for cell in rows["shade"].split("|")[3:7]]
+        self.assertGreater(sum(shade), 100)
+
+
+if __name__ == "__main__":
+    unittest.main()
