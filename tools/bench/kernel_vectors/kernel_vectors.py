@@ -14,11 +14,16 @@ multiply-adds, compares) by form:
               (the traversal tests a BVH node's 8 children at once: kernels/shared/bvh.h).
 A kernel without ymm or zmm arithmetic runs its work-items one at a time.
 
+With --probes it does the same for the probe kernels of probes.cl instead of a render: a few
+lines each, one feature of clrt's kernels apiece (a float4 record, float3 arithmetic, a loop, a
+switch), so that what keeps the work-items out of the lanes can be told apart.
+
 Usage: /usr/bin/python3 tools/bench/kernel_vectors/kernel_vectors.py [SCENE] [--clrt PATH]
            [--resolution WxH] [-- CLRT_ARGUMENTS...]
        e.g. ... scenes/reflect.ray -- --integrator megakernel
-Prints a Markdown table; exits 1 when the render produced no kernel objects (a device other than
-PoCL's CPU device keeps none), 2 on a usage error.
+       /usr/bin/python3 tools/bench/kernel_vectors/kernel_vectors.py --probes
+Prints a Markdown table; exits 1 when nothing left kernel objects (a device other than PoCL's CPU
+device keeps none), 2 on a usage error.
 """
 
 import argparse
@@ -32,6 +37,10 @@ import tempfile
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[1]))
 import clrt_run  # noqa: E402
+
+HERE = pathlib.Path(__file__).resolve().parent
+PROBES = HERE / "probes.cl"
+PROBE_PROGRAM = clrt_run.BUILD / "tools" / "bench" / "kernel_vectors" / "clrt-kernel-probes"
 
 FP_OPERATIONS = ("add", "sub", "mul", "div", "sqrt", "min", "max", "fmadd", "fmsub", "fnmadd",
                  "fnmsub", "cmp")
@@ -85,15 +94,20 @@ def main(argv):
     parser.add_argument("scene", nargs="?", default=str(clrt_run.REPO / "scenes" / "reflect.ray"))
     parser.add_argument("--clrt", default=str(clrt_run.CLRT))
     parser.add_argument("--resolution", default="64x64")
+    parser.add_argument("--probes", action="store_true", help="the probe kernels, not a render")
+    parser.add_argument("--probe-program", default=str(PROBE_PROGRAM))
     parser.add_argument("clrt_arguments", nargs="*", help="more of clrt's options, after --")
     args = parser.parse_args(argv)
     with tempfile.TemporaryDirectory(prefix="clrt-kernel-vectors-") as cache:
         env = dict(os.environ, POCL_CACHE_DIR=cache)
-        clrt_run.run([args.clrt, args.scene, "--resolution", args.resolution, "--no-write", "-q",
-                      *args.clrt_arguments], env=env)
+        if args.probes:
+            clrt_run.run([args.probe_program, PROBES], env=env)
+        else:
+            clrt_run.run([args.clrt, args.scene, "--resolution", args.resolution, "--no-write", "-q",
+                          *args.clrt_arguments], env=env)
         objects = kernel_objects(cache)
         if not objects:
-            print("kernel_vectors: the render left no kernel objects (not PoCL's CPU device?)",
+            print("kernel_vectors: no kernel objects were left (not PoCL's CPU device?)",
                   file=sys.stderr)
             return 1
         rows = []

@@ -1,6 +1,7 @@
-"""Tests of kernel_vectors.py: its reading of disassembly, and a real render on PoCL.
+"""Tests of kernel_vectors.py: its reading of disassembly, a real render and the probes on PoCL.
 
-    python3 tools/bench/kernel_vectors/test_kernel_vectors.py [CLRT]   (CTest: bench_kernel_vectors)
+    python3 tools/bench/kernel_vectors/test_kernel_vectors.py [CLRT [PROBE_PROGRAM]]
+    (CTest: bench_kernel_vectors)
 """
 
 import contextlib
@@ -13,6 +14,15 @@ sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
 import kernel_vectors  # noqa: E402
 
 CLRT = pathlib.Path(sys.argv.pop(1)) if len(sys.argv) > 1 else kernel_vectors.clrt_run.CLRT
+PROBE_PROGRAM = pathlib.Path(sys.argv.pop(1)) if len(sys.argv) > 1 else kernel_vectors.PROBE_PROGRAM
+
+
+def table_rows(arguments):
+    """kernel_vectors' exit status and its table's rows by kernel name."""
+    out = io.StringIO()
+    with contextlib.redirect_stdout(out):
+        status = kernel_vectors.main(arguments)
+    return status, {line.split("|")[1].strip(): line for line in out.getvalue().splitlines()[2:]}
 
 DISASSEMBLY = """
     1000:\tvaddss %xmm1,%xmm2,%xmm3
@@ -45,16 +55,24 @@ class Disassembly(unittest.TestCase):
 
 class RealRender(unittest.TestCase):
     def test_every_kernel_of_a_render_is_reported(self):
-        out = io.StringIO()
-        with contextlib.redirect_stdout(out):
-            status = kernel_vectors.main(["--clrt", str(CLRT), "--resolution", "16x12"])
+        status, rows = table_rows(["--clrt", str(CLRT), "--resolution", "16x12"])
         self.assertEqual(status, 0)
-        rows = {line.split("|")[1].strip(): line for line in out.getvalue().splitlines()[2:]}
         for kernel in ("generate", "intersect", "shade", "shadow", "gather_shadows", "resolve"):
             self.assertIn(kernel, rows)
         # shade is the largest kernel: it cannot have compiled to no arithmetic at all.
         shade = [int(cell) for cell in rows["shade"].split("|")[3:7]]
         self.assertGreater(sum(shade), 100)
+
+
+class Probes(unittest.TestCase):
+    def test_every_probe_kernel_is_reported(self):
+        status, rows = table_rows(["--probes", "--probe-program", str(PROBE_PROGRAM)])
+        self.assertEqual(status, 0)
+        source = kernel_vectors.PROBES.read_text()
+        probes = {line[len("PROBE("):line.index(")")] for line in source.splitlines()
+                  if line.startswith("PROBE(")}
+        self.assertGreaterEqual(len(probes), 7)
+        self.assertEqual(set(rows), probes)
 
 
 if __name__ == "__main__":
