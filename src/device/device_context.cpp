@@ -163,7 +163,17 @@ compute::buffer DeviceContext::allocate(std::size_t bytes, const std::string& wh
                  "); lower --wavefront");
   try {
     // A zero-size buffer is invalid in OpenCL; keep one element so that empty tables still bind.
-    return compute::buffer(context_, bytes == 0 ? 16 : bytes, CL_MEM_READ_WRITE);
+    const std::size_t size = bytes == 0 ? 16 : bytes;
+    compute::buffer buffer(context_, size, CL_MEM_READ_WRITE);
+    // Written once on the device before any kernel sees it, and waited for: a process that
+    // rendered many times on Intel's CPU runtime crashed inside its kernels now and then (nearly
+    // always with one context for all renders) when the buffers were first written by kernels
+    // of other queues; zero-filled, none did (docs/devices.md). It also means no kernel can
+    // ever read what another process left in that memory.
+    const cl_uchar zero = 0;
+    compute::command_queue queue = queue_;
+    queue.enqueue_fill_buffer(buffer, &zero, sizeof zero, 0, size).wait();
+    return buffer;
   } catch (const compute::opencl_error& e) {
     throw refuse(e.error_string());
   }
