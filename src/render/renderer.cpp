@@ -29,7 +29,8 @@ struct Lane {
 
 // One device: the frame every lane reads, and the lanes. The program is held for as long as its
 // kernels run: the specification says kernels keep it alive, but Intel's CPU runtime rendered
-// black images when only the kernels did (docs/devices.md).
+// black images when only the kernels did (before buffers were zero-filled when allocated, the
+// workaround in docs/devices.md; not tried without since).
 struct DeviceWorker {
   std::unique_ptr<DeviceContext> context;
   compute::program program;
