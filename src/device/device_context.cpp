@@ -152,7 +152,14 @@ compute::buffer DeviceContext::share_host_memory(const void* data, std::size_t b
   }
 }
 
-compute::buffer DeviceContext::allocate(std::size_t bytes, const std::string& what) const {
+namespace {
+
+// A zero-size buffer is invalid in OpenCL; one element is kept so that empty tables still bind.
+std::size_t buffer_size(std::size_t bytes) { return bytes == 0 ? 16 : bytes; }
+
+}  // namespace
+
+compute::buffer DeviceContext::create_buffer(std::size_t bytes, const std::string& what) const {
   const std::size_t max_alloc = entry_.device.get_info<cl_ulong>(CL_DEVICE_MAX_MEM_ALLOC_SIZE);
   const auto refuse = [&](const std::string& why) {
     return DeviceError("cannot allocate the " + what + " buffer (" + mib(bytes) + ") on " + name() +
@@ -162,21 +169,32 @@ compute::buffer DeviceContext::allocate(std::size_t bytes, const std::string& wh
     throw refuse("larger than the device's largest allocation (" + mib(max_alloc) +
                  "); lower --wavefront");
   try {
-    // A zero-size buffer is invalid in OpenCL; keep one element so that empty tables still bind.
-    const std::size_t size = bytes == 0 ? 16 : bytes;
-    compute::buffer buffer(context_, size, CL_MEM_READ_WRITE);
-    // Written once on the device before any kernel sees it, and waited for: a process that
-    // rendered many times on Intel's CPU runtime crashed inside its kernels now and then (nearly
-    // always with one context for all renders) when the buffers were first written by kernels
-    // of other queues; zero-filled, none did (docs/devices.md). It also means no kernel can
-    // ever read what another process left in that memory.
-    const cl_uchar zero = 0;
-    compute::command_queue queue = queue_;
-    queue.enqueue_fill_buffer(buffer, &zero, sizeof zero, 0, size).wait();
-    return buffer;
+    return compute::buffer(context_, buffer_size(bytes), CL_MEM_READ_WRITE);
   } catch (const compute::opencl_error& e) {
     throw refuse(e.error_string());
   }
+}
+
+compute::buffer DeviceContext::allocate(std::size_t bytes, const std::string& what) const {
+  compute::buffer buffer = create_buffer(bytes, what);
+  // Written once on the device before any kernel sees it, and waited for: a process that
+  // rendered many times on Intel's CPU runtime crashed inside its kernels now and then (nearly
+  // always with one context for all renders) when the buffers were first written by kernels of
+  // other queues; zero-filled, none did (docs/devices.md). It also means no kernel can ever read
+  // what another process left in that memory.
+  const cl_uchar zero = 0;
+  compute::command_queue queue = queue_;
+  queue.enqueue_fill_buffer(buffer, &zero, sizeof zero, 0, buffer_size(bytes)).wait();
+  return buffer;
+}
+
+compute::buffer DeviceContext::allocate_copy(const void* data, std::size_t bytes,
+                                             const std::string& what) const {
+  if (bytes == 0) return allocate(bytes, what);
+  compute::buffer buffer = create_buffer(bytes, what);
+  compute::command_queue queue = queue_;
+  queue.enqueue_write_buffer(buffer, 0, bytes, data);
+  return buffer;
 }
 
 }  // namespace clrt

@@ -35,8 +35,12 @@ class DeviceContext {
   compute::program build(const std::string& source, const std::string& options = "",
                          const CompileNotice& compiling = {}) const;
 
-  // A device buffer of `bytes`; `what` names it in the error when the device refuses.
+  // A device buffer of `bytes`, all zeros, for kernels to write; `what` names it in the error
+  // when the device refuses.
   compute::buffer allocate(std::size_t bytes, const std::string& what) const;
+  // A device buffer holding a copy of `bytes` of host memory at `data` (written before this
+  // returns, so not zero-filled first).
+  compute::buffer allocate_copy(const void* data, std::size_t bytes, const std::string& what) const;
 
   // Whether the device computes in the host's memory (a CPU device): then a page-aligned host
   // table can be its buffer as it lies.
@@ -50,6 +54,8 @@ class DeviceContext {
   compute::command_queue queue_;
 
   DeviceContext(const DeviceEntry& entry, const compute::context& context);
+  // A buffer of `bytes` as the device gives it, its refusal worded for `what`.
+  compute::buffer create_buffer(std::size_t bytes, const std::string& what) const;
 };
 
 // The options every clrt program is built with; fixed so that PoCL's kernel cache stays warm.

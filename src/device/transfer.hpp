@@ -14,10 +14,7 @@ namespace clrt {
 // A buffer holding a copy of `table` (an empty table still gets a buffer, so that it binds).
 template <class T, class A>
 Global<T> upload(DeviceContext& device, const std::vector<T, A>& table, const std::string& what) {
-  compute::buffer buffer = device.allocate(sizeof(T) * table.size(), what);
-  if (!table.empty())
-    device.queue().enqueue_write_buffer(buffer, 0, sizeof(T) * table.size(), table.data());
-  return Global<T>(buffer);
+  return Global<T>(device.allocate_copy(table.data(), sizeof(T) * table.size(), what));
 }
 
 // A read-only buffer of `table`: on a device that works in host memory, `table` itself (it must

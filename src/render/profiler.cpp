@@ -29,11 +29,7 @@ Profiler::Profiler(Launcher& launcher, const compute::program& program, bool ena
       fold_ray_counts_(program),
       add_ray_kinds_(program),
       add_shadow_rays_(program),
-      commit_ray_counts_(program) {
-  if (!enabled_) return;
-  fill_zero(device_, staging_, std::size_t{passes_} * CLRT_RAY_KINDS);
-  fill_zero(device_, totals_, std::size_t{passes_} * CLRT_RAY_KINDS);
-}
+      commit_ray_counts_(program) {}
 
 void Profiler::count_queue(const Global<dev::Ray>& rays, std::uint32_t count, std::uint32_t pass) {
   if (!enabled_ || count == 0) return;

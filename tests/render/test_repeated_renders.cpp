@@ -5,16 +5,15 @@
 // this case is the reproducer.
 #include <catch2/catch.hpp>
 
-#include <cstring>
 #include <memory>
 #include <vector>
 
+#include "cl_fixture.hpp"
 #include "device/device_select.hpp"
 #include "geometry/geometry_data.hpp"
 #include "render/device_preparation.hpp"
 #include "render/renderer.hpp"
 #include "render_support.hpp"
-#include "cl_fixture.hpp"
 #include "scene/scene.hpp"
 
 using namespace clrt;
@@ -45,12 +44,12 @@ TEST_CASE("renders that share one context and program keep their bits, render af
     setup.options.height = 17;
     setup.options.samples = 2;
     setup.options.wavefront = 1024;
+    setup.options.region = PixelRect{3, 2, 9, 11};
     setup.devices = select_devices(test_device_spec());
     const std::vector<PreparedDevice> prepared = prepare_devices(setup.devices);
     REQUIRE(prepared.size() == 1);
     for (IntegratorKind integrator : {IntegratorKind::Wavefront, IntegratorKind::Megakernel}) {
       setup.options.integrator = integrator;
-      setup.options.region = PixelRect{3, 2, 9, 11};
       const FloatImage first = render_on(scene, setup, prepared.front());
       for (int i = 1; i < 30; ++i) {
         INFO(name << ", render " << i + 1);
