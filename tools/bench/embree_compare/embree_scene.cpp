@@ -144,7 +144,8 @@ RTCScene EmbreeScene::mesh_scene(const MeshData& mesh) {
 void EmbreeScene::add_meshes(const Scene& scene) {
   for (const InstanceSpec& i : scene.instances) {
     if (i.shape == ShapeKind::Plane) {
-      const double* row = i.inverse.m[1];
+      const Mat4 inverse = i.transform.inverse();
+      const double* row = inverse.m[1];
       planes_.push_back({{static_cast<float>(row[0]), static_cast<float>(row[1]),
                           static_cast<float>(row[2]), static_cast<float>(row[3])}});
     }
