@@ -10,7 +10,7 @@ is measured and why is in README.md beside this script.
 
 Usage (from the repository root, after the build; POV-Ray from Debian: apt-get install povray):
     /usr/bin/python3 tools/bench/povray_race/race.py [--runs 3] [--resolution 1024] [--threads 2]
-        [--only NAME] [--clrt-input ray|nff] [--keep DIR] [--json FILE]
+        [--only NAME] [--clrt-input ray|nff] [--device SPEC] [--keep DIR] [--json FILE]
 Exit status: 0 when every scene meets the target (clrt's command at most a third of POV-Ray's
 parse + bounding + trace time), 1 when one misses it or a render fails, 2 on a usage error.
 """
@@ -59,9 +59,9 @@ def povray_command(povray, scene, out, size, threads):
             "-D", "+V", "+FN", f"+HI{POVRAY_HEADER}"]
 
 
-def clrt_arguments(scene, out, size):
+def clrt_arguments(scene, out, size, device):
     return [scene, "-o", out, "--resolution", f"{size}x{size}", "--spp", "1", "--max-depth",
-            str(CLRT_MAX_DEPTH), "-q"]
+            str(CLRT_MAX_DEPTH), "--device", device, "-q"]
 
 
 def parse_povray(run):
@@ -77,9 +77,9 @@ def parse_povray(run):
     return times, counts
 
 
-def clrt_stats(clrt, scene, out, size, env):
+def clrt_stats(clrt, scene, out, size, device, env):
     """clrt's own split of one extra run: seconds per stage and rays by kind."""
-    stats = clrt_run.run_clrt(clrt_arguments(scene, out, size), clrt, stats=True, env=env).stats
+    stats = clrt_run.run_clrt(clrt_arguments(scene, out, size, device), clrt, stats=True, env=env).stats
     return stats["seconds"], stats["rays"]
 
 
@@ -111,7 +111,7 @@ def race_scene(args, name, work):
     # Warm-up at a small size: the scene files into the page cache, clrt's kernels into PoCL's
     # cache (the program never depends on the scene, so a user's second render finds it).
     clrt_run.run(povray_command(args.povray, pov_scene, pov_out, 64, args.threads))
-    clrt_run.run_clrt(clrt_arguments(clrt_scene, clrt_out, 64), args.clrt, env=env)
+    clrt_run.run_clrt(clrt_arguments(clrt_scene, clrt_out, 64, args.device), args.clrt, env=env)
 
     samples = {"pov_wall": [], "pov_cpu": [], "pov_mib": [], "parse": [], "bounding": [],
                "trace": [], "clrt_wall": [], "clrt_cpu": [], "clrt_mib": []}
@@ -122,14 +122,14 @@ def race_scene(args, name, work):
         times, counts = parse_povray(pov)
         for key in ("parse", "bounding", "trace"):
             samples[key].append(times[key])
-        clrt = clrt_run.run_clrt(clrt_arguments(clrt_scene, clrt_out, args.resolution),
-                                 args.clrt, env=env)
+        clrt = clrt_run.run_clrt(
+            clrt_arguments(clrt_scene, clrt_out, args.resolution, args.device), args.clrt, env=env)
         for renderer, run in (("pov", pov), ("clrt", clrt)):
             samples[f"{renderer}_wall"].append(run.wall)
             samples[f"{renderer}_mib"].append(run.peak_mib)
             samples[f"{renderer}_cpu"].append(run.cpu)
     split, rays = clrt_stats(args.clrt, clrt_scene, work / f"{name}-stats.png", args.resolution,
-                             env)
+                             args.device, env)
     psnr, differing = compare_images(args.clrt_img, pov_out, clrt_out)
     pbt = [p + b + t for p, b, t in zip(samples["parse"], samples["bounding"], samples["trace"])]
     result = {key: median(values) for key, values in samples.items()}
@@ -146,8 +146,8 @@ def race_scene(args, name, work):
 
 def print_tables(results, args):
     n = args.runs
-    print(f"\nPOV-Ray {args.threads} threads (+WT{args.threads} -A) against clrt on PoCL "
-          f"({args.threads} threads), {args.resolution}x{args.resolution}, median of {n} "
+    print(f"\nPOV-Ray {args.threads} threads (+WT{args.threads} -A) against clrt on device "
+          f"'{args.device}' ({args.threads} threads), {args.resolution}x{args.resolution}, median of {n} "
           f"interleaved runs; ratio = clrt command / POV-Ray parse+bound+trace "
           f"(target <= {TARGET:.3f})\n")
     print("| scene | POV parse s | POV bound s | POV trace s | POV P+B+T s | POV wall s "
@@ -190,6 +190,9 @@ def parse_arguments():
     parser.add_argument("--clrt-input", choices=["ray", "nff"], default="ray")
     parser.add_argument("--resolution", type=int, default=1024, help="width = height")
     parser.add_argument("--threads", type=int, default=2)
+    parser.add_argument("--device", default="cpu",
+                        help="clrt's --device; another OpenCL implementation's CPU device is "
+                             "reached with OCL_ICD_VENDORS (tools/bench/povray_race/README.md)")
     parser.add_argument("--runs", type=int, default=3)
     parser.add_argument("--only", action="append", help="race only this scene (repeatable)")
     parser.add_argument("--keep", type=pathlib.Path, help="copy both images of each scene here")

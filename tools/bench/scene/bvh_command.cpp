@@ -1,6 +1,6 @@
 // clrt-bench bvh: builds the two-level BVH of procedural or .ray scenes and measures
 // scene_closest_hit and scene_any_hit on the device with camera rays and random rays. Prints a
-// Markdown table: build time, BVH size, Mrays/s.
+// Markdown table: build time, the tree's SAH cost, BVH size, Mrays/s.
 #include <cstdio>
 #include <memory>
 #include <string>
@@ -10,6 +10,7 @@
 #include "bench_scenes.hpp"
 #include "bench_trace.hpp"
 #include "commands.hpp"
+#include "tree_cost.hpp"
 #include "device/device_select.hpp"
 
 namespace clrt::bench {
@@ -23,7 +24,7 @@ struct Case {
 
 std::vector<Case> suite() {
   std::vector<Case> cases;
-  for (int n : {1000, 10000, 100000, 1000000})
+  for (int n : {1000, 10000, 100000, 1000000, 4000000})
     cases.push_back({"mesh " + std::to_string(n / 1000) + "k tris", [n] { return mesh_scene(n); }});
   for (int n : {10, 100, 1000, 10000, 100000})
     cases.push_back({std::to_string(n) + " shapes", [n] { return shapes_scene(n); }});
@@ -41,8 +42,12 @@ void run_case(DeviceContext& device, const Case& c, int ray_count, int runs) {
   const RaySet camera = camera_rays(c.own_camera ? scene.camera : camera_for(bounds), ray_count);
   const RaySet random = random_rays(bounds, ray_count);
   Tracer tracer(device, geometry);
-  std::printf("| %s | %zu | %zu | %.1f | %zu | %.2f | %.2f |", c.name.c_str(), geometry.instances.size(),
-              geometry.triangle_count(), geometry.build_seconds * 1e3, geometry.nodes.size(),
+  const std::size_t triangles = geometry.triangle_count();
+  // A build rate only where the triangles are the build's work: one mesh, placed once.
+  const bool one_mesh = triangles > 0 && geometry.instances.size() == 1;
+  const std::string rate = one_mesh ? std::to_string(static_cast<double>(triangles) / geometry.build_seconds / 1e6) : "-";
+  std::printf("| %s | %zu | %zu | %.1f | %.5s | %.1f | %zu | %.2f | %.2f |", c.name.c_str(), geometry.instances.size(),
+              triangles, geometry.build_seconds * 1e3, rate.c_str(), sah_cost(geometry.nodes), geometry.nodes.size(),
               mib(geometry.nodes.size() * sizeof(dev::BvhNode)), mib(geometry.device_bytes()));
   for (const Throughput& t : {tracer.closest_hit_mrays(camera, runs), tracer.closest_hit_mrays(random, runs),
                               tracer.any_hit_mrays(camera, runs), tracer.any_hit_mrays(random, runs)})
@@ -67,8 +72,9 @@ int measure_bvh(const BvhOptions& o) {
   DeviceContext device(select_devices(o.device_spec).front());
   std::printf("%d rays per measurement on %s; Mrays/s elapsed (per CPU-second), best of %d\n\n", o.ray_count,
               device.name().c_str(), o.runs);
-  std::printf("| scene | instances | triangles | build ms | nodes | BVH MiB | all MiB | closest camera | closest random | any camera | any random |\n");
-  std::printf("|---|---|---|---|---|---|---|---|---|---|---|\n");
+  std::printf("| scene | instances | triangles | build ms | build Mtris/s | SAH cost | nodes | BVH MiB | all MiB | "
+              "closest camera | closest random | any camera | any random |\n");
+  std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
   for (const Case& c : cases)
     if (c.name.find(o.only) != std::string::npos) run_case(device, c, o.ray_count, o.runs);
   return 0;

@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
-"""Plots clrt-bench bvh --suite output: Mrays/s against scene size, log scale.
+"""Plots clrt-bench bvh --suite output: Mrays/s against scene size, log scale, and (with a
+third argument) the single meshes' build rate and SAH cost against their size.
 
-Usage: clrt-bench bvh --suite > suite.md; python3 plot_scaling.py suite.md scaling.png
+Usage: clrt-bench bvh --suite > suite.md; python3 plot_scaling.py suite.md scaling.png [build.png]
 Needs matplotlib (Debian: python3-matplotlib); a documentation tool, not part of the build.
 """
 import re
@@ -30,18 +31,44 @@ def mrays(cell):
     return float(cell.split()[0])
 
 
-def series(rows, pattern, size_key):
+def series(rows, pattern, size_key, columns=COLUMNS):
     points = []
     for name, row in rows:
         if re.search(pattern, name):
-            points.append((float(row[size_key]), {c: mrays(row[c]) for c in COLUMNS}))
+            points.append((float(row[size_key]), {c: mrays(row[c]) for c in columns}))
     return sorted(points)
 
 
-def main(source, target):
+MESHES = r"^mesh \S+ tris$"
+
+
+def plot_build(rows, target):
+    """Build rate and SAH cost of the single meshes: a faster build that made a worse tree would
+    show as a rising cost (and as falling Mrays/s in the other figure)."""
+    points = series(rows, MESHES, "triangles", ["build Mtris/s", "SAH cost"])
+    sizes = [p[0] for p in points]
+    fig, rate = plt.subplots(figsize=(6, 4))
+    rate.plot(sizes, [p[1]["build Mtris/s"] for p in points], marker="o", color="tab:blue")
+    rate.set_xscale("log")
+    rate.set_xlabel("one mesh: triangles")
+    rate.set_ylabel("BVH build, M triangles/s (2 cores)", color="tab:blue")
+    rate.set_ylim(bottom=0)
+    rate.grid(True, which="both", alpha=0.3)
+    cost = rate.twinx()
+    cost.plot(sizes, [p[1]["SAH cost"] for p in points], marker="s", color="tab:red")
+    cost.set_ylabel("SAH cost of the tree (packet tests)", color="tab:red")
+    cost.set_ylim(bottom=0)
+    fig.suptitle("clrt BVH build: rate and tree quality against mesh size")
+    fig.tight_layout()
+    fig.savefig(target, dpi=90)
+
+
+def main(source, target, build_target=None):
     rows = list(read_rows(source))
+    if build_target:
+        plot_build(rows, build_target)
     panels = [
-        ("one mesh: triangles", series(rows, r"^mesh \S+ tris$", "triangles")),
+        ("one mesh: triangles", series(rows, MESHES, "triangles")),
         ("instances of a 1k-triangle mesh", series(rows, r"x 1k-tri mesh$", "instances")),
         ("canonical shapes: instances", series(rows, r"shapes$", "instances")),
     ]
@@ -63,4 +90,4 @@ def main(source, target):
 
 
 if __name__ == "__main__":
-    main(sys.argv[1], sys.argv[2])
+    main(*sys.argv[1:4])
