@@ -3,9 +3,9 @@
 whether a kernel runs its work-items side by side in SIMD lanes or one after another.
 
 PoCL compiles each kernel for each local size into a shared object in its cache. This script
-renders a scene into an empty cache of its own, disassembles every kernel's object and counts
-its floating-point arithmetic instructions (add, sub, mul, div, sqrt, min, max, fused
-multiply-adds, compares) by form:
+renders a scene into empty caches of its own (PoCL's and clrt's), disassembles every kernel's
+object and counts its floating-point arithmetic instructions (add, sub, mul, div, sqrt, min,
+max, fused multiply-adds, compares) by form:
   scalar      one float at a time (vaddss, ...): a work-item's arithmetic, one item after another;
   xmm         packed in 128-bit registers: mostly a work-item's own float3 and float4 arithmetic
               (vectors the kernel source spells out, packed by LLVM's SLP vectoriser);
@@ -18,8 +18,14 @@ With --probes it does the same for the probe kernels of probes.cl instead of a r
 lines each, one feature of clrt's kernels apiece (a float4 record, float3 arithmetic, a loop, a
 switch), so that what keeps the work-items out of the lanes can be told apart.
 
+With --why it adds LLVM's reasons, from the loop vectoriser's remarks while PoCL compiled each
+kernel (POCL_VECTORIZER_REMARKS=1), each with the place in kernels/ it names: PoCL builds the
+program with debug lines for this (POCL_EXTRA_BUILD_FLAGS=-g, which changes no instruction), so
+a remark says which line of which file holds the instruction that kept the work-group loop (or
+a loop of the kernel's own) from being vectorised.
+
 Usage: /usr/bin/python3 tools/bench/kernel_vectors/kernel_vectors.py [SCENE] [--clrt PATH]
-           [--resolution WxH] [-- CLRT_ARGUMENTS...]
+           [--resolution WxH] [--why] [-- CLRT_ARGUMENTS...]
        e.g. ... scenes/reflect.ray -- --integrator megakernel
        /usr/bin/python3 tools/bench/kernel_vectors/kernel_vectors.py --probes
 Prints a Markdown table; exits 1 when nothing left kernel objects (a device other than PoCL's CPU
@@ -81,11 +87,52 @@ def kernel_objects(cache):
     return out
 
 
-def report(rows):
-    lines = ["| kernel | local size | scalar | 4 wide (xmm) | 8 wide (ymm) | 16 wide (zmm) |",
-             "|---|---|---:|---:|---:|---:|"]
+# Where a remark starts in PoCL's stream, which runs them together: the place it names.
+REMARK_START = re.compile(r"(<unknown>:0:0: |kernels/[\w/.-]+\.(?:cl|h):\d+:\d+: )")
+# PoCL compiles one kernel after another: remarks on the kernel's own loops, PoCL inlining it into
+# its work-group function, remarks on the work-group loop, then the sizes of the functions made.
+KERNEL_NAME = re.compile(r"'_pocl_kernel_(\w+)' inlined into '_pocl_kernel_\1_workgroup'")
+FUNCTION_SIZE = re.compile(r"\d+ instructions in function")
+NOT_VECTORISED = re.compile(r"^(kernels/\S+?):? loop not vectorized: (.+)$")
+
+
+def vectoriser_reasons(remarks):
+    """{kernel: [reason (place), ...]} from PoCL's remark stream: the loop vectoriser's reasons
+    for not vectorising a loop while PoCL compiled the kernel, each once, in the order they
+    came."""
+    reasons = {}
+    kernel, found, closing = None, [], False
+    for line in REMARK_START.sub(r"\n\1", remarks).splitlines():
+        if FUNCTION_SIZE.search(line):
+            closing = True
+            continue
+        if closing:  # the sizes ended one kernel's compile
+            if kernel:
+                reasons[kernel] = found
+            kernel, found, closing = None, [], False
+        named = KERNEL_NAME.search(line)
+        if named:
+            kernel = named.group(1)
+        match = NOT_VECTORISED.match(line.strip())
+        if match:
+            reason = f"{match.group(2).strip()} ({match.group(1)})"
+            if reason not in found:
+                found.append(reason)
+    if kernel:
+        reasons[kernel] = found
+    return reasons
+
+
+def report(rows, reasons=None):
+    why = reasons is not None
+    lines = ["| kernel | local size | scalar | 4 wide (xmm) | 8 wide (ymm) | 16 wide (zmm) |"
+             + (" why not vectorised (LLVM) |" if why else ""),
+             "|---|---|---:|---:|---:|---:|" + ("---|" if why else "")]
     for kernel, local_size, counts in rows:
-        lines.append(f"| {kernel} | {local_size} | " + " | ".join(str(counts[f]) for f in FORMS) + " |")
+        line = f"| {kernel} | {local_size} | " + " | ".join(str(counts[f]) for f in FORMS) + " |"
+        if why:
+            line += " " + ("; ".join(reasons.get(kernel, [])) or "-") + " |"
+        lines.append(line)
     return "\n".join(lines)
 
 
@@ -96,15 +143,20 @@ def main(argv):
     parser.add_argument("--resolution", default="64x64")
     parser.add_argument("--probes", action="store_true", help="the probe kernels, not a render")
     parser.add_argument("--probe-program", default=str(PROBE_PROGRAM))
+    parser.add_argument("--why", action="store_true",
+                        help="add LLVM's reasons for not vectorising, with their places in kernels/")
     parser.add_argument("clrt_arguments", nargs="*", help="more of clrt's options, after --")
     args = parser.parse_args(argv)
     with tempfile.TemporaryDirectory(prefix="clrt-kernel-vectors-") as cache:
-        env = dict(os.environ, POCL_CACHE_DIR=cache)
+        # clrt's own cache too: a program it loads as a binary compiles nothing while we watch.
+        env = dict(os.environ, POCL_CACHE_DIR=cache, CLRT_CACHE_DIR=cache)
+        if args.why:
+            env.update(POCL_VECTORIZER_REMARKS="1", POCL_EXTRA_BUILD_FLAGS="-g")
         if args.probes:
-            clrt_run.run([args.probe_program, PROBES], env=env)
+            run = clrt_run.run([args.probe_program, PROBES], env=env)
         else:
-            clrt_run.run([args.clrt, args.scene, "--resolution", args.resolution, "--no-write", "-q",
-                          *args.clrt_arguments], env=env)
+            run = clrt_run.run([args.clrt, args.scene, "--resolution", args.resolution, "--no-write",
+                                "-q", *args.clrt_arguments], env=env)
         objects = kernel_objects(cache)
         if not objects:
             print("kernel_vectors: no kernel objects were left (not PoCL's CPU device?)",
@@ -115,7 +167,7 @@ def main(argv):
             disassembly = subprocess.run(["objdump", "-d", "--no-show-raw-insn", str(path)],
                                          check=True, capture_output=True, text=True).stdout
             rows.append((kernel, local_size, instruction_forms(disassembly)))
-    print(report(rows))
+    print(report(rows, vectoriser_reasons(run.stdout + run.stderr) if args.why else None))
     return 0
 
 

@@ -53,6 +53,32 @@ class Disassembly(unittest.TestCase):
         self.assertEqual(sum(counts.values()), 7)
 
 
+# PoCL's remark stream as it comes, every remark run into the next: two kernels' compiles, the
+# second's loop of its own before PoCL inlines it into its work-group function.
+REMARKS = (
+    "<unknown>:0:0: '_pocl_kernel_generate' inlined into '_pocl_kernel_generate_workgroup' with "
+    "(cost=always): always inlinerkernels/generate.cl:10:22: loop not vectorized: instruction "
+    "return type cannot be vectorizedkernels/generate.cl:10:22: loop not vectorized: instruction "
+    "return type cannot be vectorizedkernels/generate.cl:7:0: 213 instructions in function"
+    "<unknown>:0:0: 225 instructions in functionkernels/render/lights.h:29:3: loop not "
+    "vectorized: loop contains a switch statement<unknown>:0:0: '_pocl_kernel_shade' inlined "
+    "into '_pocl_kernel_shade_workgroup' with (cost=always): always inlinerkernels/shade.cl:27:5:"
+    " vectorized loop (vectorization width: 8, interleaved count: 1)kernels/shade.cl:20:1: "
+    "400 instructions in function")
+
+
+class Remarks(unittest.TestCase):
+    def test_reasons_go_to_the_kernel_whose_compile_they_came_in(self):
+        reasons = kernel_vectors.vectoriser_reasons(REMARKS)
+        self.assertEqual(reasons["generate"],
+                         ["instruction return type cannot be vectorized (kernels/generate.cl:10:22)"])
+        self.assertEqual(reasons["shade"],
+                         ["loop contains a switch statement (kernels/render/lights.h:29:3)"])
+
+    def test_a_stream_without_remarks_gives_no_reasons(self):
+        self.assertEqual(kernel_vectors.vectoriser_reasons(""), {})
+
+
 class RealRender(unittest.TestCase):
     def test_every_kernel_of_a_render_is_reported(self):
         status, rows = table_rows(["--clrt", str(CLRT), "--resolution", "16x12"])
@@ -62,6 +88,12 @@ class RealRender(unittest.TestCase):
         # shade is the largest kernel: it cannot have compiled to no arithmetic at all.
         shade = [int(cell) for cell in rows["shade"].split("|")[3:7]]
         self.assertGreater(sum(shade), 100)
+
+    def test_why_names_places_in_the_kernels(self):
+        status, rows = table_rows(["--clrt", str(CLRT), "--resolution", "16x12", "--why"])
+        self.assertEqual(status, 0)
+        # shade walks the lights in loops of its own, which PoCL 3.1 does not vectorise.
+        self.assertRegex(rows["shade"].split("|")[7], r"\(kernels/[\w/]+\.(cl|h):\d+:\d+\)")
 
 
 class Probes(unittest.TestCase):
