@@ -28,8 +28,6 @@ CLRT_INLINE HitRecord hit_record_none(float tmax) {
   return r;
 }
 
-CLRT_INLINE float3 bvh_float3(f4 v) { return (float3)(v.x, v.y, v.z); }
-
 /* Object-space normal n of instance `inst` in world space; `fallback` when n cannot be
  * normalised (degenerate triangle or interpolated normals that cancel out). */
 CLRT_INLINE float3 bvh_world_normal(__global const Instance* inst, float3 n, float3 fallback) {
@@ -76,9 +74,9 @@ CLRT_INLINE void hit_record_resolve(const HitRecord* r, float3 o, float3 d, __gl
     geometric = bvh_world_normal(inst, triangle_normal(v0, v1, v2), (float3)(0.0f, 1.0f, 0.0f));
     shading = geometric;
     if (mesh->has_normals) {
-      const TriangleNormals n = triangle_normals[triangle];
-      const float3 interpolated = (1.0f - r->u - r->v) * bvh_float3(n.n0) +
-                                  r->u * bvh_float3(n.n1) + r->v * bvh_float3(n.n2);
+      __global const float* n = triangle_normals[triangle].n;
+      const float3 interpolated = (1.0f - r->u - r->v) * (float3)(n[0], n[1], n[2]) +
+                                  r->u * (float3)(n[3], n[4], n[5]) + r->v * (float3)(n[6], n[7], n[8]);
       shading = bvh_world_normal(inst, interpolated, geometric);
     }
     hit->primitive = triangle - mesh->first_triangle;

@@ -88,10 +88,13 @@ typedef struct Triangle {
 } Triangle;
 CLRT_CHECK_SIZE(Triangle, 48);
 
+/* A triangle's unit vertex normals in object space, packed: x, y, z of the first vertex's, then
+ * the second's and the third's. As three f4s it took 48 bytes, a third of them padding: 12 MB
+ * more per million triangles, read in place by a CPU device. */
 typedef struct TriangleNormals {
-  f4 n0, n1, n2; /* unit vertex normals in object space; w unused */
+  float n[9];
 } TriangleNormals;
-CLRT_CHECK_SIZE(TriangleNormals, 48);
+CLRT_CHECK_SIZE(TriangleNormals, 36);
 
 #define CLRT_MODE_TRACE 0u
 #define CLRT_MODE_CAST 1u

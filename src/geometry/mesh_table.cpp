@@ -65,7 +65,14 @@ dev::TriangleNormals TriangleSource::normals(std::size_t t) const {
   const std::array<Vec3, 3> unit = corner_normals(
       {mesh_->positions[c[0]], mesh_->positions[c[1]], mesh_->positions[c[2]]},
       {mesh_->normals[n[0]], mesh_->normals[n[1]], mesh_->normals[n[2]]});
-  return {to_f4(unit[0]), to_f4(unit[1]), to_f4(unit[2])};
+  dev::TriangleNormals out{};
+  for (int k = 0; k < 3; ++k) {
+    const dev::f4 v = to_f4(unit[k]);
+    out.n[3 * k] = v.x;
+    out.n[3 * k + 1] = v.y;
+    out.n[3 * k + 2] = v.z;
+  }
+  return out;
 }
 
 dev::u32 TriangleSource::material(std::size_t t) const {

@@ -190,9 +190,9 @@ TEST_CASE("geometry tables: planes first, one mesh per model, loose triangles la
     sources.insert(g.triangle_source[t]);
   }
   CHECK(sources.size() == scene.triangles.size());
-  // Per triangle the device holds its normals (48 bytes), and a loose one its material (4); no
+  // Per triangle the device holds its normals (36 bytes), and a loose one its material (4); no
   // triangle table: the BVH's leaf packets carry the vertices.
-  CHECK(g.device_bytes() == g.instances.size() * 128 + g.meshes.size() * 16 + g.triangle_count() * 48 +
+  CHECK(g.device_bytes() == g.instances.size() * 128 + g.meshes.size() * 16 + g.triangle_count() * 36 +
                                 30 * 4 + g.nodes.size() * sizeof(dev::BvhNode));
 }
 
@@ -203,11 +203,11 @@ TEST_CASE("mesh vertex normals are stored unit length, in the triangle's corner 
   scene.instances.back().mesh = 0;
   const GeometryData g = build_geometry(scene);
   const dev::TriangleNormals& n = g.triangle_normals.at(0);
-  CHECK(n.n0.z == Approx(1.0));
-  CHECK(n.n1.y == Approx(0.6));
-  CHECK(n.n1.z == Approx(0.8));
+  CHECK(n.n[2] == Approx(1.0));
+  CHECK(n.n[4] == Approx(0.6));
+  CHECK(n.n[5] == Approx(0.8));
   // A zero normal falls back to the face normal (+z for this counter-clockwise triangle).
-  CHECK(n.n2.z == Approx(1.0));
+  CHECK(n.n[8] == Approx(1.0));
 }
 
 TEST_CASE("BVH invariants hold on random scenes", "[bvh]") {
