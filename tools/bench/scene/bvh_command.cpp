@@ -45,9 +45,10 @@ void run_case(DeviceContext& device, const Case& c, int ray_count, int runs) {
   const std::size_t triangles = geometry.triangle_count();
   // A build rate only where the triangles are the build's work: one mesh, placed once.
   const bool one_mesh = triangles > 0 && geometry.instances.size() == 1;
-  const std::string rate = one_mesh ? std::to_string(static_cast<double>(triangles) / geometry.build_seconds / 1e6) : "-";
-  std::printf("| %s | %zu | %zu | %.1f | %.5s | %.1f | %zu | %.2f | %.2f |", c.name.c_str(), geometry.instances.size(),
-              triangles, geometry.build_seconds * 1e3, rate.c_str(), sah_cost(geometry.nodes), geometry.nodes.size(),
+  char rate[32] = "-";
+  if (one_mesh) std::snprintf(rate, sizeof rate, "%.2f", static_cast<double>(triangles) / geometry.build_seconds / 1e6);
+  std::printf("| %s | %zu | %zu | %.1f | %s | %.1f | %zu | %.2f | %.2f |", c.name.c_str(), geometry.instances.size(),
+              triangles, geometry.build_seconds * 1e3, rate, sah_cost(geometry.nodes), geometry.nodes.size(),
               mib(geometry.nodes.size() * sizeof(dev::BvhNode)), mib(geometry.device_bytes()));
   for (const Throughput& t : {tracer.closest_hit_mrays(camera, runs), tracer.closest_hit_mrays(random, runs),
                               tracer.any_hit_mrays(camera, runs), tracer.any_hit_mrays(random, runs)})

@@ -27,7 +27,8 @@ def read_rows(path):
             yield cells[0], dict(zip(header, cells))
 
 
-def mrays(cell):
+def leading_number(cell):
+    """A cell's first number: "21.3 (10.7)" (Mrays/s elapsed, per CPU-second) gives 21.3."""
     return float(cell.split()[0])
 
 
@@ -35,7 +36,7 @@ def series(rows, pattern, size_key, columns=COLUMNS):
     points = []
     for name, row in rows:
         if re.search(pattern, name):
-            points.append((float(row[size_key]), {c: mrays(row[c]) for c in columns}))
+            points.append((float(row[size_key]), {c: leading_number(row[c]) for c in columns}))
     return sorted(points)
 
 
