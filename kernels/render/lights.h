@@ -64,8 +64,10 @@ CLRT_INLINE LightSample sample_light(__global const Light* light, uint j, float3
      * cone wider than 90 degrees S.D may be negative: the factor is then 1 for exp 0 (as
      * pow(x, 0) = 1) and 0 otherwise, where pow() of a negative base is undefined. */
     const float sd = dot3(xyz(light->direction), -s.to_light);
-    const float falloff = power(fmax(sd, 0.0f), light->spot_exponent);
-    s.intensity = sd >= light->cos_cutoff ? s.intensity * falloff : (float3)(0.0f);
+    if (sd >= light->cos_cutoff)
+      s.intensity *= power(fmax(sd, 0.0f), light->spot_exponent);
+    else
+      s.intensity = (float3)(0.0f);
   }
   return s;
 }

@@ -55,7 +55,7 @@ CLRT_INLINE float3 mirror_about(float3 w, float3 n) { return 2.0f * dot3(n, w) *
  * surface (only the dielectric, a delta lobe, transmits). */
 CLRT_INLINE float3 smooth_bsdf(const PathLobes* l, float3 n, float3 wo, float3 wi) {
   if (dot3(n, wi) <= 0.0f || dot3(n, wo) <= 0.0f) return (float3)(0.0f);
-  const float phong = power(fmax(0.0f, dot3(mirror_about(wi, n), wo)), l->exponent);
+  const float phong = l->glossy == 0.0f ? 0.0f : power(fmax(0.0f, dot3(mirror_about(wi, n), wo)), l->exponent);
   return l->diffuse * CLRT_INV_PI + l->glossy * (l->exponent + 2.0f) * CLRT_INV_TWO_PI * phong;
 }
 
@@ -64,7 +64,7 @@ CLRT_INLINE float3 smooth_bsdf(const PathLobes* l, float3 n, float3 wo, float3 w
 CLRT_INLINE float smooth_pdf(const PathLobes* l, float3 n, float3 wo, float3 wi) {
   const float cos_i = dot3(n, wi);
   if (cos_i <= 0.0f) return 0.0f;
-  const float phong = power(fmax(0.0f, dot3(mirror_about(wo, n), wi)), l->exponent);
+  const float phong = l->p_glossy == 0.0f ? 0.0f : power(fmax(0.0f, dot3(mirror_about(wo, n), wi)), l->exponent);
   return l->p_diffuse * cos_i * CLRT_INV_PI +
          l->p_glossy * (l->exponent + 1.0f) * CLRT_INV_TWO_PI * phong;
 }

@@ -10,7 +10,7 @@ CLRT_INLINE float3 direct_term(__global const Material* m, float3 n, float3 v, f
   const float nl = dot3(n, l);
   if (nl <= 0.0f) return (float3)(0.0f);
   const float3 r = 2.0f * nl * n - l;
-  const float highlight = power(fmax(0.0f, dot3(r, v)), m->shininess);
+  const float highlight = m->ks == 0.0f ? 0.0f : power(fmax(0.0f, dot3(r, v)), m->shininess);
   return m->kd * ld * xyz(m->color) * nl + m->ks * ld * highlight;
 }
 

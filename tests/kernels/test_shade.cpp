@@ -315,6 +315,20 @@ TEST_CASE("shade: the highlight follows pow(), so max(0, R.V)^0 = 1", "[shade]")
   CHECK_NEAR_VEC(vec_of(sharp.colour[0]), c * (0.6 * nl), kTolerance);
 }
 
+TEST_CASE("shade: without ks there is no highlight, even where its power would overflow", "[shade]") {
+  // Point lights on the mirror direction of the view at many distances: R.V rounds to just above
+  // 1 for some of them, where max(0, R.V)^n overflows for a large exponent, and 0 times that
+  // infinity would be NaN. The contract's term is the diffuse one alone.
+  const Vec3 mirror{0, 0.6, -0.8};
+  std::vector<LightSpec> lights;
+  for (int i = 0; i < 64; ++i) lights.push_back(point({0.01, 0.01, 0.01}, kP + mirror * (0.3 + 0.01 * i)));
+  const MaterialSpec m = material({0.8, 0.5, 0.2}, 0, 0.6, 0, 1e12);
+  const ShadeOutput out = shade(standard_hit({m}, lights, RenderMode::Cast));
+  Vec3 expected{0, 0, 0};
+  for (const LightSpec& l : lights) expected = expected + light_term(m, kUpNormal, kV, normalize(l.position - kP), l.color);
+  CHECK_NEAR_VEC(vec_of(out.colour[0]), expected, kTolerance);
+}
+
 TEST_CASE("shade: trace mode writes one shadow ray per contributing light sample", "[shade]") {
   const Vec3 weight{1, 0.5, 0.25};
   const MaterialSpec m = material({0.8, 0.5, 0.2}, 0.3, 0.6, 0.4, 8, 0.1, 0, 1);
