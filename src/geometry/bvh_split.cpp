@@ -71,32 +71,44 @@ inline V4 centers(const BuildItem& item) {
   return finite[0] && finite[1] && finite[2] ? c : centers_beyond_range(item);
 }
 
+// The box of some items' centres.
+struct CentreBox {
+  V4 lo{kInf, kInf, kInf, kInf}, hi{-kInf, -kInf, -kInf, -kInf};
+
+  void grow(V4 c) {
+    lo = min4(lo, c);
+    hi = max4(hi, c);
+  }
+  void grow(const CentreBox& b) {
+    lo = min4(lo, b.lo);
+    hi = max4(hi, b.hi);
+  }
+  Box box() const { return to_box(lo, hi); }
+};
+
 // Left uninitialised by default: a range sets up only the bins it uses (most ranges are small,
-// and setting up all 96 cost more than binning their items).
+// and setting up all 96 cost more than binning their items). Binning is bound by its stores
+// (three axes' bins updated per item), so the bins keep no box of their items' centres: the
+// partition that follows a split gathers those of its two sides.
 struct Bin {
-  V4 lo, hi;    // of the items' boxes
-  V4 clo, chi;  // of their centres
+  V4 lo, hi;  // of the items' boxes
   std::uint32_t count, alone;
 
   static Bin empty() {
     const V4 inf{kInf, kInf, kInf, kInf};
-    return {inf, -inf, inf, -inf, 0, 0};
+    return {inf, -inf, 0, 0};
   }
 
   void add(const Bin& b) {
     lo = min4(lo, b.lo);
     hi = max4(hi, b.hi);
-    clo = min4(clo, b.clo);
-    chi = max4(chi, b.chi);
     count += b.count;
     alone += b.alone;
   }
 
-  void add(const BuildItem& item, V4 c) {
+  void add(const BuildItem& item) {
     lo = min4(lo, load_xyz(item.lo));
     hi = max4(hi, load_xyz(item.hi));
-    clo = min4(clo, c);
-    chi = max4(chi, c);
     ++count;
     alone += item.alone;
   }
@@ -159,9 +171,8 @@ struct Binning {
 };
 
 [[gnu::always_inline]] inline void bin_item(const BuildItem& item, const Binning& binning, BinGrid& grid) {
-  const V4 c = centers(item);
-  const I4 b = binning.bins_of(c);
-  for (int a = 0; a < 3; ++a) grid.axis[a][b[a]].add(item, c);
+  const I4 b = binning.bins_of(centers(item));
+  for (int a = 0; a < 3; ++a) grid.axis[a][b[a]].add(item);
 }
 
 // Ranges at least this large are binned into two grids, alternate items into each, then merged.
@@ -255,16 +266,19 @@ void occupied_sparse(const BuildItems& items, const Range& range, const SmallRan
       o.push(b, &store[o.count]);
     }
     const std::uint32_t item = key[i] & 0xff;
-    store[o.count - 1].add(items[range.begin + item], small.center[item]);
+    store[o.count - 1].add(items[range.begin + item]);
   }
 }
 
 // std::partition of a small range by the bins already worked out: libstdc++'s algorithm (see
 // partition_like_std), step for step, so the order is the same.
 std::uint32_t partition_small(BuildItems& items, const Range& range, const SmallRange& small, int axis,
-                              int last_left_bin) {
+                              int last_left_bin, CentreBox sides[2]) {
   bool left[kSparseItems];
-  for (std::uint32_t i = 0; i < small.size; ++i) left[i] = small.bin[i][axis] <= last_left_bin;
+  for (std::uint32_t i = 0; i < small.size; ++i) {
+    left[i] = small.bin[i][axis] <= last_left_bin;
+    sides[left[i] ? 0 : 1].grow(small.center[i]);
+  }
   std::uint32_t first = 0, last = small.size;
   while (true) {
     for (;; ++first)
@@ -314,12 +328,26 @@ void sweep(const Occupied& bins, int axis, const SahCosts& costs, Candidate& bes
   }
 }
 
-// The items of the occupied bins on one side of the split.
-Range side(std::uint32_t begin, std::uint32_t end, const Occupied& bins, bool left, int last_left_bin) {
+// The items of the occupied bins on one side of the split, whose centres `centres` bounds.
+Range side(std::uint32_t begin, std::uint32_t end, const Occupied& bins, bool left, int last_left_bin,
+           const CentreBox& centres) {
   Bin all = Bin::empty();
   for (int g = 0; g < bins.count; ++g)
     if ((bins.bin[g] <= last_left_bin) == left) all.add(*bins.contents[g]);
-  return {begin, end, to_box(all.lo, all.hi), to_box(all.clo, all.chi), all.alone};
+  return {begin, end, to_box(all.lo, all.hi), centres.box(), all.alone};
+}
+
+// The box of the centres of items [first, first + count), on every core.
+CentreBox centre_box(const BuildItem* first, std::size_t count) {
+  const std::size_t blocks = (count + kParallelBlock - 1) / kParallelBlock;
+  std::vector<CentreBox> parts(blocks);
+  parallel_for(blocks, 1, [&](std::size_t b) {
+    const std::size_t end = std::min(count, (b + 1) * kParallelBlock);
+    for (std::size_t i = b * kParallelBlock; i < end; ++i) parts[b].grow(centers(first[i]));
+  });
+  CentreBox all;
+  for (const CentreBox& part : parts) all.grow(part);
+  return all;
 }
 
 }  // namespace
@@ -387,21 +415,41 @@ std::optional<Split> split_sah(BuildItems& items, const Range& range, const SahC
   if (best.axis < 0) return std::nullopt;
 
   std::uint32_t mid = 0;
+  CentreBox centres[2];  // of the left and the right side
   if (small) {
-    mid = partition_small(items, range, *small, best.axis, best.last_left_bin);
+    mid = partition_small(items, range, *small, best.axis, best.last_left_bin, centres);
   } else {
     BuildItem* const first = items.data() + range.begin;
     BuildItem* const last = items.data() + range.end;
-    const auto left = [&](const BuildItem& item) {
-      return binning.bin(item.center(best.axis), best.axis) <= best.last_left_bin;
-    };
-    BuildItem* const middle = on_every_core ? partition_like_std(first, last, left) : std::partition(first, last, left);
-    mid = range.begin + static_cast<std::uint32_t>(middle - first);
+    const auto goes_left = [&](V4 c) { return binning.bin(c[best.axis], best.axis) <= best.last_left_bin; };
+    if (on_every_core) {
+      BuildItem* const middle =
+          partition_like_std(first, last, [&](const BuildItem& item) { return goes_left(centers(item)); });
+      mid = range.begin + static_cast<std::uint32_t>(middle - first);
+      centres[0] = centre_box(first, mid - range.begin);
+      centres[1] = centre_box(middle, range.end - mid);
+    } else {
+      // Each item's centre joins its side's box as the partition tests it (more than once does
+      // no harm to a box).
+      CentreBox left_box, right_box;  // apart, not indexed: kept in registers
+      const auto left = [&](const BuildItem& item) {
+        const V4 c = centers(item);
+        const bool l = goes_left(c);
+        if (l)
+          left_box.grow(c);
+        else
+          right_box.grow(c);
+        return l;
+      };
+      mid = range.begin + static_cast<std::uint32_t>(std::partition(first, last, left) - first);
+      centres[0] = left_box;
+      centres[1] = right_box;
+    }
   }
   Split split;
-  // The sides are the bins' unions: no pass over the items to measure them again.
-  split.left = side(range.begin, mid, bins[best.axis], true, best.last_left_bin);
-  split.right = side(mid, range.end, bins[best.axis], false, best.last_left_bin);
+  // The sides' boxes are the bins' unions: no pass over the items to measure them again.
+  split.left = side(range.begin, mid, bins[best.axis], true, best.last_left_bin, centres[0]);
+  split.right = side(mid, range.end, bins[best.axis], false, best.last_left_bin, centres[1]);
   const float area = range.bounds.half_area();
   split.cost = costs.node_cost + (area > 0 ? best.weighted / area : costs.leaf_cost(range.size(), range.alone));
   return split;
