@@ -20,16 +20,11 @@ Vec3 unit_or_zero(const Vec3& v) {
   return len > 0 ? v / len : Vec3{};
 }
 
-// A vertex normal that cannot be normalised is replaced by the face normal, so that every
-// triangle of a mesh with normals interpolates valid unit vectors.
-std::array<Vec3, 3> corner_normals(const std::array<Vec3, 3>& p, const std::array<Vec3, 3>& n) {
-  std::array<Vec3, 3> out;
-  for (int k = 0; k < 3; ++k) {
-    out[k] = unit_or_zero(n[k]);
-    if (out[k] == Vec3{}) out[k] = unit_or_zero(cross(p[1] - p[0], p[2] - p[0]));
-  }
-  return out;
-}
+std::array<float, 3> to_floats(const Vec3& v) { return {to_float(v.x), to_float(v.y), to_float(v.z)}; }
+
+// A unit vector has a component of at least 1/sqrt(3), so only unit_or_zero's zero is all zeros
+// in single precision.
+bool all_zero(const std::array<float, 3>& v) { return v[0] == 0.0f && v[1] == 0.0f && v[2] == 0.0f; }
 
 void check_indices(const std::vector<std::uint32_t>& corners, std::size_t count, const MeshData& mesh) {
   for (std::uint32_t index : corners)
@@ -58,19 +53,27 @@ dev::Triangle TriangleSource::triangle(std::size_t t) const {
   return {to_f4(mesh_->positions[c[0]]), to_f4(mesh_->positions[c[1]]), to_f4(mesh_->positions[c[2]])};
 }
 
-dev::TriangleNormals TriangleSource::normals(std::size_t t) const {
+std::vector<std::array<float, 3>> TriangleSource::unit_normals() const {
+  if (!has_normals_) return {};
+  std::vector<std::array<float, 3>> unit(mesh_->normals.size());
+  parallel_for(unit.size(), kChunk, [&](std::size_t i) { unit[i] = to_floats(unit_or_zero(mesh_->normals[i])); });
+  return unit;
+}
+
+// A vertex normal that cannot be normalised is replaced by the face normal, so that every
+// triangle of a mesh with normals interpolates valid unit vectors.
+dev::TriangleNormals TriangleSource::normals(std::size_t t, const std::vector<std::array<float, 3>>& unit) const {
   if (!has_normals_) return {};
   const std::uint32_t* c = &mesh_->corners[3 * t];
   const std::uint32_t* n = &mesh_->corner_normals[3 * t];
-  const std::array<Vec3, 3> unit = corner_normals(
-      {mesh_->positions[c[0]], mesh_->positions[c[1]], mesh_->positions[c[2]]},
-      {mesh_->normals[n[0]], mesh_->normals[n[1]], mesh_->normals[n[2]]});
   dev::TriangleNormals out{};
   for (int k = 0; k < 3; ++k) {
-    const dev::f4 v = to_f4(unit[k]);
-    out.n[3 * k] = v.x;
-    out.n[3 * k + 1] = v.y;
-    out.n[3 * k + 2] = v.z;
+    std::array<float, 3> v = unit[n[k]];
+    if (all_zero(v)) {
+      const Vec3& p0 = mesh_->positions[c[0]];
+      v = to_floats(unit_or_zero(cross(mesh_->positions[c[1]] - p0, mesh_->positions[c[2]] - p0)));
+    }
+    for (int a = 0; a < 3; ++a) out.n[3 * k + a] = v[a];
   }
   return out;
 }
@@ -98,9 +101,10 @@ dev::Mesh device_mesh(const TriangleSource& source, dev::u32 first_triangle) {
 
 void write_triangle_rows(const TriangleSource& source, const std::vector<std::uint32_t>& order,
                          std::size_t first, GeometryData& out) {
+  const std::vector<std::array<float, 3>> unit = source.unit_normals();
   parallel_for(order.size(), kChunk, [&](std::size_t i) {
     const std::uint32_t t = order[i];
-    out.triangle_normals[first + i] = source.normals(t);
+    out.triangle_normals[first + i] = source.normals(t, unit);
     if (source.loose()) out.triangle_materials[i] = source.material(t);
     out.triangle_source[first + i] = t;
   });

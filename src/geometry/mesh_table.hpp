@@ -3,6 +3,7 @@
 // (the BVH's leaf packets carry their vertices).
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -29,9 +30,13 @@ class TriangleSource {
 
   // Triangle t's vertices in single precision, as the device tests them.
   dev::Triangle triangle(std::size_t t) const;
-  // Its unit vertex normals (a corner's normal that cannot be normalised is the face normal);
-  // all zero without normals.
-  dev::TriangleNormals normals(std::size_t t) const;
+  // The mesh's vertex normals as unit vectors in single precision, zero where one cannot be
+  // normalised (empty without normals), on every core: a vertex normal is shared by several
+  // triangles, so it is normalised once rather than at each of its corners.
+  std::vector<std::array<float, 3>> unit_normals() const;
+  // Triangle t's unit vertex normals, read from `unit` (unit_normals()); a corner whose normal
+  // could not be normalised gets the face normal. All zero without normals.
+  dev::TriangleNormals normals(std::size_t t, const std::vector<std::array<float, 3>>& unit) const;
   // Whether it holds the scene's loose triangles, which alone have materials of their own.
   bool loose() const { return loose_ != nullptr; }
   // Triangle t's own material; only for the loose triangles (a mesh takes its instance's).
