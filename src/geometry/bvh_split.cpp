@@ -170,30 +170,11 @@ struct Binning {
   }
 };
 
-[[gnu::always_inline]] inline void bin_item(const BuildItem& item, const Binning& binning, BinGrid& grid) {
-  const I4 b = binning.bins_of(centers(item));
-  for (int a = 0; a < 3; ++a) grid.axis[a][b[a]].add(item);
-}
-
-// Ranges at least this large are binned into two grids, alternate items into each, then merged.
-constexpr std::size_t kTwoGridItems = 256;
-
 void bin_items(const BuildItem* items, std::size_t count, const Binning& binning, BinGrid& grid) {
-  if (count < kTwoGridItems) {
-    for (std::size_t i = 0; i < count; ++i) bin_item(items[i], binning, grid);
-    return;
+  for (std::size_t i = 0; i < count; ++i) {
+    const I4 b = binning.bins_of(centers(items[i]));
+    for (int a = 0; a < 3; ++a) grid.axis[a][b[a]].add(items[i]);
   }
-  // Neighbouring items mostly fall into the same bins, so that each update would wait on the
-  // store of the one before; two grids make two independent chains. Minima, maxima and counts
-  // come out the same whichever grid an item went to.
-  BinGrid other(binning.bins);
-  std::size_t i = 0;
-  for (; i + 1 < count; i += 2) {
-    bin_item(items[i], binning, grid);
-    bin_item(items[i + 1], binning, other);
-  }
-  if (i < count) bin_item(items[i], binning, grid);
-  grid.add(other, binning.bins);
 }
 
 // Fills `grid` with the bins of `range`, counted on every core when it is large and
