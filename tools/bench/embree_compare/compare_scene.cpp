@@ -1,8 +1,5 @@
 #include "compare_scene.hpp"
 
-#include <pmmintrin.h>
-#include <xmmintrin.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -20,12 +17,6 @@
 
 namespace clrt::compare {
 namespace {
-
-// Embree's advice for every thread that traces: denormals flushed to zero.
-void flush_denormals() {
-  _MM_SET_FLUSH_ZERO_MODE(_MM_FLUSH_ZERO_ON);
-  _MM_SET_DENORMALS_ZERO_MODE(_MM_DENORMALS_ZERO_ON);
-}
 
 std::string describe(const HostRay& r, const std::string& answers) {
   char text[160];

@@ -44,9 +44,22 @@ RTCGeometry triangle_geometry(RTCDevice device, const std::vector<Vec3>& positio
   return geometry;
 }
 
-void attach(RTCScene scene, RTCGeometry geometry) {
-  rtcAttachGeometry(scene, geometry);
+unsigned attach(RTCScene scene, RTCGeometry geometry) {
+  const unsigned id = rtcAttachGeometry(scene, geometry);
   rtcReleaseGeometry(geometry);
+  return id;
+}
+
+Vec3 unit_or_zero(const Vec3& v) {
+  const double len = length(v);
+  return len > 0 ? v / len : Vec3{};
+}
+
+// (M^-1)^T n: a normal of object space in world space.
+Vec3 normal_to_world(const Mat4& inverse, const Vec3& n) {
+  return {inverse.m[0][0] * n.x + inverse.m[1][0] * n.y + inverse.m[2][0] * n.z,
+          inverse.m[0][1] * n.x + inverse.m[1][1] * n.y + inverse.m[2][1] * n.z,
+          inverse.m[0][2] * n.x + inverse.m[1][2] * n.y + inverse.m[2][2] * n.z};
 }
 
 void record_error(void* user, RTCError, const char* message) {
@@ -99,7 +112,8 @@ EmbreeScene::EmbreeScene(const Scene& scene, int threads, RTCBuildQuality qualit
                          RTCSceneFlags flags)
     : device_(rtcNewDevice(("threads=" + std::to_string(threads)).c_str())),
       quality_(quality),
-      flags_(flags) {
+      flags_(flags),
+      scene_(scene) {
   if (!device_) throw std::runtime_error("Embree: cannot create a device");
   rtcSetDeviceErrorFunction(device_, record_error, &error_);
   const auto start = std::chrono::steady_clock::now();
@@ -142,12 +156,15 @@ RTCScene EmbreeScene::mesh_scene(const MeshData& mesh) {
 // Mesh instances become Embree instances of one shared scene per mesh file; planes are kept
 // for the host-side test.
 void EmbreeScene::add_meshes(const Scene& scene) {
-  for (const InstanceSpec& i : scene.instances) {
+  inverse_.resize(scene.instances.size());
+  for (std::size_t k = 0; k < scene.instances.size(); ++k) {
+    const InstanceSpec& i = scene.instances[k];
+    if (i.shape == ShapeKind::Plane || i.shape == ShapeKind::Mesh) inverse_[k] = i.transform.inverse();
     if (i.shape == ShapeKind::Plane) {
-      const Mat4 inverse = i.transform.inverse();
-      const double* row = inverse.m[1];
+      const double* row = inverse_[k].m[1];
       planes_.push_back({{static_cast<float>(row[0]), static_cast<float>(row[1]),
-                          static_cast<float>(row[2]), static_cast<float>(row[3])}});
+                          static_cast<float>(row[2]), static_cast<float>(row[3])},
+                         static_cast<int>(k)});
     }
     if (i.shape != ShapeKind::Mesh) continue;
     RTCScene& model = mesh_scenes_.at(static_cast<std::size_t>(i.mesh));
@@ -159,14 +176,18 @@ void EmbreeScene::add_meshes(const Scene& scene) {
       for (int c = 0; c < 4; ++c) rows[4 * r + c] = static_cast<float>(i.transform.m[r][c]);
     rtcSetGeometryTransform(instance, 0, RTC_FORMAT_FLOAT3X4_ROW_MAJOR, rows);
     rtcCommitGeometry(instance);
-    attach(top_, instance);
+    const unsigned id = attach(top_, instance);
+    if (top_instance_.size() <= id) top_instance_.resize(id + 1, -1);
+    top_instance_[id] = static_cast<int>(k);
   }
 }
 
 void EmbreeScene::add_spheres(const Scene& scene) {
   std::vector<float> points;  // x y z radius
-  for (const InstanceSpec& i : scene.instances) {
+  for (std::size_t k = 0; k < scene.instances.size(); ++k) {
+    const InstanceSpec& i = scene.instances[k];
     if (i.shape != ShapeKind::Sphere) continue;
+    sphere_instance_.push_back(static_cast<int>(k));
     const Vec3 centre = i.transform.transform_point({0, 0, 0});
     points.insert(points.end(), {static_cast<float>(centre.x), static_cast<float>(centre.y),
                                  static_cast<float>(centre.z),
@@ -178,7 +199,7 @@ void EmbreeScene::add_spheres(const Scene& scene) {
       spheres, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT4, 4 * sizeof(float), points.size() / 4));
   if (buffer) std::copy(points.begin(), points.end(), buffer);
   rtcCommitGeometry(spheres);
-  attach(top_, spheres);
+  spheres_id_ = attach(top_, spheres);
 }
 
 void EmbreeScene::add_loose_triangles(const Scene& scene) {
@@ -190,7 +211,7 @@ void EmbreeScene::add_loose_triangles(const Scene& scene) {
       corners.push_back(static_cast<std::uint32_t>(positions.size()));
       positions.push_back(v);
     }
-  attach(top_, triangle_geometry(device_, positions, corners));
+  loose_id_ = attach(top_, triangle_geometry(device_, positions, corners));
 }
 
 Bounds EmbreeScene::bounds() const {
@@ -202,29 +223,92 @@ Bounds EmbreeScene::bounds() const {
 }
 
 // As clrt's plane test: object-space height o'y + t d'y = 0, hits with kTmin < t < tmax.
-float EmbreeScene::nearest_plane(const HostRay& ray, float tmax) const {
+float EmbreeScene::nearest_plane(const HostRay& ray, float tmax, int* which) const {
   float best = tmax;
+  if (which) *which = -1;
   for (const Plane& p : planes_) {
     const float oy =
         p.row[0] * ray.origin[0] + p.row[1] * ray.origin[1] + p.row[2] * ray.origin[2] + p.row[3];
     const float dy = p.row[0] * ray.dir[0] + p.row[1] * ray.dir[1] + p.row[2] * ray.dir[2];
     if (dy == 0.0f) continue;
     const float t = -oy / dy;
-    if (t > kTmin && t < best) best = t;
+    if (t > kTmin && t < best) {
+      best = t;
+      if (which) *which = p.instance;
+    }
   }
   return best;
 }
 
-float EmbreeScene::closest_t(const HostRay& ray) const {
+RTCRayHit EmbreeScene::intersect(const HostRay& ray, int* plane) const {
   RTCRayHit hit{};
-  hit.ray = embree_ray(ray, nearest_plane(ray, INFINITY));
+  hit.ray = embree_ray(ray, nearest_plane(ray, INFINITY, plane));
   hit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
   hit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
   rtcIntersect1(top_, &context, &hit);
+  return hit;
+}
+
+float EmbreeScene::closest_t(const HostRay& ray) const {
   // tfar only shrinks on a hit: it is the plane's t, or INFINITY, when Embree found nothing.
-  return hit.ray.tfar;
+  return intersect(ray, nullptr).ray.tfar;
+}
+
+// The triangle's own normal, and its vertex normals interpolated at (u, v) as clrt does (each
+// corner's normal made unit first, the face normal where it cannot be), both in world space.
+SurfaceHit EmbreeScene::mesh_hit(const RTCHit& hit, int instance) const {
+  const InstanceSpec& spec = scene_.instances[static_cast<std::size_t>(instance)];
+  const MeshData& mesh = scene_.meshes[static_cast<std::size_t>(spec.mesh)];
+  const std::uint32_t* c = &mesh.corners[3 * std::size_t{hit.primID}];
+  const Vec3 face = cross(mesh.positions[c[1]] - mesh.positions[c[0]], mesh.positions[c[2]] - mesh.positions[c[0]]);
+  const Mat4& inverse = inverse_[static_cast<std::size_t>(instance)];
+  SurfaceHit out;
+  out.material = spec.material;
+  out.normal = unit_or_zero(normal_to_world(inverse, face));
+  out.shading_normal = out.normal;
+  if (!mesh.normals.empty()) {
+    const std::uint32_t* n = &mesh.corner_normals[3 * std::size_t{hit.primID}];
+    const double w[3] = {1.0 - hit.u - hit.v, hit.u, hit.v};
+    Vec3 sum;
+    for (int k = 0; k < 3; ++k) {
+      Vec3 corner = unit_or_zero(mesh.normals[n[k]]);
+      if (corner == Vec3{}) corner = unit_or_zero(face);
+      sum = sum + corner * w[k];
+    }
+    const Vec3 shading = unit_or_zero(normal_to_world(inverse, sum));
+    if (shading != Vec3{}) out.shading_normal = shading;
+  }
+  return out;
+}
+
+SurfaceHit EmbreeScene::closest_hit(const HostRay& ray) const {
+  int plane = -1;
+  const RTCRayHit rh = intersect(ray, &plane);
+  SurfaceHit out;
+  if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID && plane < 0) return out;
+  if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) {
+    const std::size_t k = static_cast<std::size_t>(plane);
+    const double* row = inverse_[k].m[1];
+    out.normal = out.shading_normal = unit_or_zero(Vec3{row[0], row[1], row[2]});
+    out.material = scene_.instances[k].material;
+  } else if (rh.hit.instID[0] != RTC_INVALID_GEOMETRY_ID) {
+    out = mesh_hit(rh.hit, top_instance_.at(rh.hit.instID[0]));
+  } else if (rh.hit.geomID == spheres_id_) {
+    const InstanceSpec& spec = scene_.instances[static_cast<std::size_t>(sphere_instance_.at(rh.hit.primID))];
+    const Vec3 o{ray.origin[0], ray.origin[1], ray.origin[2]}, d{ray.dir[0], ray.dir[1], ray.dir[2]};
+    out.normal = out.shading_normal = unit_or_zero(o + d * rh.ray.tfar - spec.transform.transform_point({0, 0, 0}));
+    out.material = spec.material;
+  } else if (rh.hit.geomID == loose_id_) {
+    const TriangleSpec& tri = scene_.triangles.at(rh.hit.primID);
+    out.normal = out.shading_normal = unit_or_zero(cross(tri.v1 - tri.v0, tri.v2 - tri.v0));
+    out.material = tri.material;
+  } else {
+    throw std::logic_error("Embree hit a geometry this scene did not attach");
+  }
+  out.t = rh.ray.tfar;
+  return out;
 }
 
 bool EmbreeScene::occluded(const HostRay& ray) const {

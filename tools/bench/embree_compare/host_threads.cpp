@@ -1,5 +1,8 @@
 #include "host_threads.hpp"
 
+#include <pmmintrin.h>
+#include <xmmintrin.h>
+
 #include <algorithm>
 #include <atomic>
 #include <chrono>
@@ -14,6 +17,11 @@ namespace {
 constexpr std::size_t kBlock = 1024;
 
 }  // namespace
+
+void flush_denormals() {
+  _MM_SET_FLUSH_ZERO_MODE(_MM_FLUSH_ZERO_ON);
+  _MM_SET_DENORMALS_ZERO_MODE(_MM_DENORMALS_ZERO_ON);
+}
 
 double parallel_seconds(std::size_t count, int threads,
                         const std::function<void(std::size_t, std::size_t)>& work) {

@@ -10,7 +10,9 @@
 #include "embree_scene.hpp"
 #include "geometry/geometry_data.hpp"
 #include "host_rays.hpp"
+#include "render/renderer.hpp"
 #include "render/renderer_program.hpp"
+#include "whitted_tracer.hpp"
 
 namespace {
 
@@ -82,8 +84,8 @@ TEST_CASE("Embree is given spheres under similarity transforms only") {
 }
 
 TEST_CASE("Embree's scene answers the hand-computed hits") {
-  const clrt::compare::EmbreeScene embree(hand_scene(), 1, RTC_BUILD_QUALITY_HIGH,
-                                          RTC_SCENE_FLAG_NONE);
+  const clrt::Scene scene = hand_scene();
+  const clrt::compare::EmbreeScene embree(scene, 1, RTC_BUILD_QUALITY_HIGH, RTC_SCENE_FLAG_NONE);
   for (const auto& [r, t] : kClosest) {
     INFO("ray towards " << r.dir[0] << " " << r.dir[1] << " " << r.dir[2]);
     if (std::isinf(t))
@@ -100,6 +102,35 @@ TEST_CASE("Embree's scene answers the hand-computed hits") {
   CHECK(b.lo.z == Approx(-12).epsilon(1e-4));
   CHECK(b.hi.z == Approx(5).epsilon(1e-4));
   CHECK(b.hi.x == Approx(6).epsilon(1e-4));
+}
+
+TEST_CASE("Embree's hits carry each surface's world normal and material") {
+  clrt::Scene scene = hand_scene();
+  scene.materials.resize(5);
+  scene.instances[0].material = 1;  // the sphere
+  scene.instances[1].material = 2;  // the plane
+  scene.triangles[0].material = 3;
+  scene.instances[2].material = 4;  // the mesh
+  const clrt::compare::EmbreeScene embree(scene, 1, RTC_BUILD_QUALITY_HIGH, RTC_SCENE_FLAG_NONE);
+  struct Expected {
+    HostRay ray;
+    Vec3 normal;
+    int material;
+  };
+  // The sphere's near side faces +z; the plane y = -1 faces +y; the loose triangle, counter-
+  // clockwise seen from +z, faces +z; the mesh's triangle, scaled by 2, faces +x.
+  const std::vector<Expected> expected = {{ray({0, 0, 0}, {0, 0, -1}), {0, 0, 1}, 1},
+                                          {ray({0, 0, 0}, {0, -1, 0}), {0, 1, 0}, 2},
+                                          {ray({0, 0, 0}, {0, 0, 1}), {0, 0, 1}, 3},
+                                          {ray({0, 0, 0}, {1, 0, 0}), {1, 0, 0}, 4}};
+  for (const Expected& e : expected) {
+    const clrt::compare::SurfaceHit hit = embree.closest_hit(e.ray);
+    INFO("ray towards " << e.ray.dir[0] << " " << e.ray.dir[1] << " " << e.ray.dir[2]);
+    CHECK(hit.material == e.material);
+    CHECK(clrt::length(hit.normal - e.normal) < 1e-6);
+    CHECK(clrt::length(hit.shading_normal - e.normal) < 1e-6);
+  }
+  CHECK(std::isinf(embree.closest_hit(ray({0, 0, 0}, {-1, 0, 0})).t));
 }
 
 TEST_CASE("clrt's kernels answer the hand-computed hits") {
@@ -201,4 +232,46 @@ TEST_CASE("agreement: t within 1e-3 relative, or near the origin's rounding") {
   CHECK(a.share == Approx(3.0 / 5));
   CHECK(a.examples == std::vector<std::size_t>{1, 3});
   CHECK(clrt::compare::occlusion_agreement({1, 0, 1, 0}, {1, 1, 1, 0}).share == Approx(0.75));
+}
+
+TEST_CASE("the Whitted tracer on Embree renders the scenes clrt renders, to within rounding") {
+  // Spheres, a plane and a mirror; a mesh with vertex normals under a transform; spot lights;
+  // loose triangles. Rays that graze an edge may go either way in one tracer and not the other,
+  // so a few pixels may differ; the rest agree to float rounding.
+  for (const char* name : {"reflect.ray", "mesh.ray", "lights-spot.ray", "triangles.ray"}) {
+    INFO(name);
+    const clrt::Scene scene = clrt::load_scene(std::string(CLRT_SOURCE_DIR) + "/scenes/" + name);
+    REQUIRE(clrt::compare::unsupported_shapes(scene).empty());
+    REQUIRE(clrt::compare::unsupported_lights(scene).empty());
+    clrt::RenderSetup setup;
+    setup.options = clrt::RenderOptions::from_scene(scene);
+    setup.options.width = 64;
+    setup.options.height = 48;
+    setup.options.samples = 1;
+    setup.devices = clrt::select_devices("cpu");
+    clrt::RenderStats stats;
+    const clrt::FloatImage ours = clrt::render(scene, setup, stats);
+    const clrt::compare::EmbreeScene embree(scene, 2, RTC_BUILD_QUALITY_HIGH, RTC_SCENE_FLAG_NONE);
+    const clrt::FloatImage theirs = clrt::compare::render_whitted(scene, embree, setup.options, 2);
+    REQUIRE(theirs.rgb.size() == ours.rgb.size());
+    std::size_t apart = 0, lit = 0;
+    for (std::size_t k = 0; k < ours.rgb.size(); ++k) {
+      apart += std::abs(ours.rgb[k] - theirs.rgb[k]) > 1e-3f;
+      lit += ours.rgb[k] > 0.01f;
+    }
+    CHECK(apart <= ours.rgb.size() / 100);
+    CHECK(lit > ours.rgb.size() / 4);  // not two black images
+  }
+}
+
+TEST_CASE("the Whitted tracer names the lights it cannot render") {
+  clrt::Scene scene;
+  clrt::LightSpec area;
+  area.kind = clrt::LightKind::Area;
+  scene.lights = {area, area};
+  CHECK(clrt::compare::unsupported_lights(scene) == "2 area lights");
+  scene.lights.resize(1);
+  CHECK(clrt::compare::unsupported_lights(scene) == "1 area light");
+  scene.lights[0].kind = clrt::LightKind::Spot;
+  CHECK(clrt::compare::unsupported_lights(scene).empty());
 }

@@ -1,0 +1,144 @@
+#include "whitted_tracer.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "host_threads.hpp"
+#include "render/frame_setup.hpp"
+
+namespace clrt::compare {
+namespace {
+
+Vec3 mul(const Vec3& a, const Vec3& b) { return {a.x * b.x, a.y * b.y, a.z * b.z}; }
+
+Vec3 vec3_of(const dev::f4& v) { return {v.x, v.y, v.z}; }
+
+HostRay host_ray(const Vec3& origin, const Vec3& dir, double tmax) {
+  return {{static_cast<float>(origin.x), static_cast<float>(origin.y), static_cast<float>(origin.z)},
+          {static_cast<float>(dir.x), static_cast<float>(dir.y), static_cast<float>(dir.z)},
+          static_cast<float>(tmax)};
+}
+
+// One light as seen from a point: the unit direction towards it, how far it is (infinite for a
+// directional light) and the colour that arrives (zero outside a spot's cone).
+struct Incoming {
+  Vec3 to_light;
+  double distance;
+  Vec3 colour;
+};
+
+class Tracer {
+ public:
+  Tracer(const Scene& scene, const EmbreeScene& embree, int max_depth)
+      : embree_(embree), materials_(scene.materials), background_(scene.background), max_depth_(max_depth) {
+    for (const LightSpec& l : scene.lights)
+      if (l.kind == LightKind::Ambient)
+        ambient_ = ambient_ + l.color;
+      else
+        lights_.push_back(l);
+  }
+
+  // What the ray o + t d (d unit) carrying `weight` brings back, `depth` bounces from the eye.
+  Vec3 trace(const Vec3& o, const Vec3& d, const Vec3& weight, int depth) const {
+    const SurfaceHit hit = embree_.closest_hit(host_ray(o, d, INFINITY));
+    if (!std::isfinite(hit.t)) return mul(weight, background_);
+    const MaterialSpec& m = materials_[static_cast<std::size_t>(hit.material)];
+    const Vec3 p = o + d * hit.t;
+    const bool front = dot(hit.normal, d) < 0;
+    const Vec3 ng = front ? hit.normal : -hit.normal;
+    const Vec3 n = dot(hit.shading_normal, ng) < 0 ? -hit.shading_normal : hit.shading_normal;
+    const Vec3 base = weight * std::max(0.0, 1 - m.kr - m.kt);
+    Vec3 colour = mul(mul(base, ambient_), m.color) * m.ka;
+    for (const LightSpec& light : lights_) {
+      const Incoming in = arriving(light, p);
+      const Vec3 term = mul(base, local_term(m, n, -d, in));
+      if (term == Vec3{}) continue;
+      const Vec3 from = offset(p, ng, in.to_light);
+      const bool far = std::isinf(in.distance);
+      const Vec3 towards = far ? in.to_light : normalize(light.position - from);
+      if (!embree_.occluded(host_ray(from, towards, far ? INFINITY : length(light.position - from))))
+        colour = colour + term;
+    }
+    if (depth >= max_depth_) return colour;
+    // Snell's law with eta = n1 / n2; total internal reflection sends kt along the mirror ray.
+    const double eta = front ? 1 / m.ior : m.ior, cos_i = -dot(d, n);
+    const double k = 1 - eta * eta * (1 - cos_i * cos_i);
+    const bool refracts = m.kt > 0 && k >= 0;
+    const double mirror_share = m.kr + (m.kt > 0 && !refracts ? m.kt : 0);
+    if (mirror_share > 0) {
+      const Vec3 r = d - n * (2 * dot(d, n));
+      colour = colour + trace(offset(p, ng, r), r, weight * mirror_share, depth + 1);
+    }
+    if (refracts) {
+      const Vec3 t = normalize(d * eta + n * (eta * cos_i - std::sqrt(k)));
+      colour = colour + trace(offset(p, ng, t), t, weight * m.kt, depth + 1);
+    }
+    return colour;
+  }
+
+ private:
+  // p moved by epsilon along ng to the side `dir` leaves through.
+  static Vec3 offset(const Vec3& p, const Vec3& ng, const Vec3& dir) {
+    return p + ng * (dot(ng, dir) >= 0 ? kTmin : -kTmin);
+  }
+
+  static Incoming arriving(const LightSpec& light, const Vec3& p) {
+    if (light.kind == LightKind::Directional) return {-normalize(light.direction), INFINITY, light.color};
+    const Vec3 delta = light.position - p;
+    Incoming in{delta / length(delta), length(delta), light.color};
+    if (light.kind == LightKind::Spot) {
+      const double sd = dot(normalize(light.direction), -in.to_light);
+      const bool lit = sd >= std::cos(light.angle_degrees * M_PI / 180);
+      in.colour = lit ? in.colour * std::pow(std::max(sd, 0.0), light.exponent) : Vec3{};
+    }
+    return in;
+  }
+
+  // kd Ld C (N.L) + ks Ld max(0, R.V)^n, zero where N.L <= 0.
+  static Vec3 local_term(const MaterialSpec& m, const Vec3& n, const Vec3& v, const Incoming& in) {
+    const double nl = dot(n, in.to_light);
+    if (nl <= 0) return {};
+    const Vec3 r = n * (2 * nl) - in.to_light;
+    const double highlight = m.ks == 0 ? 0 : std::pow(std::max(0.0, dot(r, v)), m.shininess);
+    return mul(in.colour, m.color) * (m.kd * nl) + in.colour * (m.ks * highlight);
+  }
+
+  const EmbreeScene& embree_;
+  const std::vector<MaterialSpec>& materials_;
+  std::vector<LightSpec> lights_;
+  Vec3 ambient_, background_;
+  int max_depth_;
+};
+
+}  // namespace
+
+std::string unsupported_lights(const Scene& scene) {
+  const auto areas = std::count_if(scene.lights.begin(), scene.lights.end(),
+                                   [](const LightSpec& l) { return l.kind == LightKind::Area; });
+  return areas == 0 ? "" : std::to_string(areas) + (areas == 1 ? " area light" : " area lights");
+}
+
+FloatImage render_whitted(const Scene& scene, const EmbreeScene& embree, const RenderOptions& options,
+                          int threads) {
+  const dev::Camera cam = make_camera(scene, options);
+  const Vec3 eye = vec3_of(cam.eye), corner = vec3_of(cam.corner), dx = vec3_of(cam.pixel_dx),
+             dy = vec3_of(cam.pixel_dy);
+  const Tracer tracer(scene, embree, options.max_depth);
+  const std::size_t width = cam.width, pixels = width * cam.height;
+  std::vector<float> rgb(3 * pixels);
+  parallel_seconds(pixels, threads, [&](std::size_t begin, std::size_t end) {
+    flush_denormals();
+    for (std::size_t k = begin; k < end; ++k) {
+      const Vec3 dir = normalize(corner + dx * (static_cast<double>(k % width) + 0.5) +
+                                 dy * (static_cast<double>(k / width) + 0.5));
+      const Vec3 c = tracer.trace(eye, dir, {1, 1, 1}, 0);
+      rgb[3 * k] = static_cast<float>(c.x);
+      rgb[3 * k + 1] = static_cast<float>(c.y);
+      rgb[3 * k + 2] = static_cast<float>(c.z);
+    }
+  });
+  return {static_cast<int>(cam.width), static_cast<int>(cam.height), std::move(rgb)};
+}
+
+}  // namespace clrt::compare
