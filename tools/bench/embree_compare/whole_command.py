@@ -10,6 +10,7 @@ says what is compared.
 Usage (from the repository root, after the build with libembree-dev installed):
     /usr/bin/python3 tools/bench/embree_compare/whole_command.py SCENE.ray... [--runs 5]
         [--resolution 1280x720] [--threads 2] [--device SPEC] [--json FILE]
+        [--clrt PATH] [--embree-render PATH]
 Exit status: 0 when clrt is at least as fast on every scene, 1 when it is slower on one or a
 run fails, 2 on a usage error.
 """
@@ -32,9 +33,9 @@ LARGEST = re.compile(r"^largest difference: (\S+)", re.M)
 
 
 def commands(scene, out, args):
-    clrt = [clrt_run.CLRT, scene, "-o", out, "--resolution", args.resolution, "--spp", "1", "-q",
+    clrt = [args.clrt, scene, "-o", out, "--resolution", args.resolution, "--spp", "1", "-q",
             "--device", args.device]
-    embree = [EMBREE_RENDER, scene, "-o", out, "--resolution", args.resolution,
+    embree = [args.embree_render, scene, "-o", out, "--resolution", args.resolution,
               "--threads", str(args.threads)]
     return clrt, embree
 
@@ -73,7 +74,7 @@ def race(scene, args):
             "embree_peak_mib": peaks["embree"], "psnr_db": psnr, "largest_difference": largest}
 
 
-def main():
+def main(arguments=None):
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("scenes", nargs="+", help=".ray scenes the Embree tracer can render")
     parser.add_argument("--runs", type=int, default=5, help="timed runs of each command")
@@ -81,11 +82,15 @@ def main():
     parser.add_argument("--threads", type=int, default=2, help="the Embree tracer's threads")
     parser.add_argument("--device", default="cpu", help="clrt's --device")
     parser.add_argument("--json", help="also write the rows to this file")
-    args = parser.parse_args()
+    parser.add_argument("--clrt", type=pathlib.Path, default=clrt_run.CLRT, help="the clrt executable")
+    parser.add_argument("--embree-render", type=pathlib.Path, default=EMBREE_RENDER,
+                        help="the clrt-embree-render executable")
+    args = parser.parse_args(arguments)
     if args.runs < 1 or args.threads < 1:
         parser.error("--runs and --threads take a whole number of at least 1")
-    if not EMBREE_RENDER.exists():
-        parser.error(f"{EMBREE_RENDER} is missing: install libembree-dev and build again")
+    for program in (args.clrt, args.embree_render):
+        if not program.exists():
+            parser.error(f"{program} is missing: build it (clrt-embree-render needs libembree-dev)")
     rows = []
     try:
         for scene in args.scenes:
