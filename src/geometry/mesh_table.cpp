@@ -15,11 +15,6 @@ constexpr std::size_t kChunk = 32768;  // triangles per task of a parallel loop:
 
 dev::f4 to_f4(const Vec3& v) { return {to_float(v.x), to_float(v.y), to_float(v.z), 0.0f}; }
 
-Vec3 unit_or_zero(const Vec3& v) {
-  const double len = length(v);
-  return len > 0 ? v / len : Vec3{};
-}
-
 std::array<float, 3> to_floats(const Vec3& v) { return {to_float(v.x), to_float(v.y), to_float(v.z)}; }
 
 // A unit vector has a component of at least 1/sqrt(3), so only unit_or_zero's zero is all zeros

@@ -28,6 +28,11 @@ constexpr Vec3 cross(const Vec3& a, const Vec3& b) {
 }
 inline double length(const Vec3& v) { return std::sqrt(dot(v, v)); }
 inline Vec3 normalize(const Vec3& v) { return v / length(v); }
+// v / |v|, or zero where v has no direction (zero, or not a number).
+inline Vec3 unit_or_zero(const Vec3& v) {
+  const double len = length(v);
+  return len > 0 ? v / len : Vec3{};
+}
 constexpr Vec3 min(const Vec3& a, const Vec3& b) {
   return {a.x < b.x ? a.x : b.x, a.y < b.y ? a.y : b.y, a.z < b.z ? a.z : b.z};
 }

@@ -50,17 +50,6 @@ unsigned attach(RTCScene scene, RTCGeometry geometry) {
   return id;
 }
 
-Vec3 unit_or_zero(const Vec3& v) {
-  const double len = length(v);
-  return len > 0 ? v / len : Vec3{};
-}
-
-// (M^-1)^T n: a normal of object space in world space.
-Vec3 normal_to_world(const Mat4& inverse, const Vec3& n) {
-  return {inverse.m[0][0] * n.x + inverse.m[1][0] * n.y + inverse.m[2][0] * n.z,
-          inverse.m[0][1] * n.x + inverse.m[1][1] * n.y + inverse.m[2][1] * n.z,
-          inverse.m[0][2] * n.x + inverse.m[1][2] * n.y + inverse.m[2][2] * n.z};
-}
 
 void record_error(void* user, RTCError, const char* message) {
   *static_cast<std::string*>(user) = message ? message : "unknown error";
@@ -156,12 +145,14 @@ RTCScene EmbreeScene::mesh_scene(const MeshData& mesh) {
 // Mesh instances become Embree instances of one shared scene per mesh file; planes are kept
 // for the host-side test.
 void EmbreeScene::add_meshes(const Scene& scene) {
-  inverse_.resize(scene.instances.size());
+  normal_matrix_.resize(scene.instances.size());
   for (std::size_t k = 0; k < scene.instances.size(); ++k) {
     const InstanceSpec& i = scene.instances[k];
-    if (i.shape == ShapeKind::Plane || i.shape == ShapeKind::Mesh) inverse_[k] = i.transform.inverse();
+    if (i.shape != ShapeKind::Plane && i.shape != ShapeKind::Mesh) continue;
+    const Mat4 inverse = i.transform.inverse();
+    normal_matrix_[k] = inverse.transposed();
     if (i.shape == ShapeKind::Plane) {
-      const double* row = inverse_[k].m[1];
+      const double* row = inverse.m[1];
       planes_.push_back({{static_cast<float>(row[0]), static_cast<float>(row[1]),
                           static_cast<float>(row[2]), static_cast<float>(row[3])},
                          static_cast<int>(k)});
@@ -263,10 +254,10 @@ SurfaceHit EmbreeScene::mesh_hit(const RTCHit& hit, int instance) const {
   const MeshData& mesh = scene_.meshes[static_cast<std::size_t>(spec.mesh)];
   const std::uint32_t* c = &mesh.corners[3 * std::size_t{hit.primID}];
   const Vec3 face = cross(mesh.positions[c[1]] - mesh.positions[c[0]], mesh.positions[c[2]] - mesh.positions[c[0]]);
-  const Mat4& inverse = inverse_[static_cast<std::size_t>(instance)];
+  const Mat4& to_world = normal_matrix_[static_cast<std::size_t>(instance)];
   SurfaceHit out;
   out.material = spec.material;
-  out.normal = unit_or_zero(normal_to_world(inverse, face));
+  out.normal = unit_or_zero(to_world.transform_vector(face));
   out.shading_normal = out.normal;
   if (!mesh.normals.empty()) {
     const std::uint32_t* n = &mesh.corner_normals[3 * std::size_t{hit.primID}];
@@ -277,7 +268,7 @@ SurfaceHit EmbreeScene::mesh_hit(const RTCHit& hit, int instance) const {
       if (corner == Vec3{}) corner = unit_or_zero(face);
       sum = sum + corner * w[k];
     }
-    const Vec3 shading = unit_or_zero(normal_to_world(inverse, sum));
+    const Vec3 shading = unit_or_zero(to_world.transform_vector(sum));
     if (shading != Vec3{}) out.shading_normal = shading;
   }
   return out;
@@ -290,15 +281,14 @@ SurfaceHit EmbreeScene::closest_hit(const HostRay& ray) const {
   if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID && plane < 0) return out;
   if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) {
     const std::size_t k = static_cast<std::size_t>(plane);
-    const double* row = inverse_[k].m[1];
-    out.normal = out.shading_normal = unit_or_zero(Vec3{row[0], row[1], row[2]});
+    out.normal = out.shading_normal = unit_or_zero(normal_matrix_[k].transform_vector({0, 1, 0}));
     out.material = scene_.instances[k].material;
   } else if (rh.hit.instID[0] != RTC_INVALID_GEOMETRY_ID) {
     out = mesh_hit(rh.hit, top_instance_.at(rh.hit.instID[0]));
   } else if (rh.hit.geomID == spheres_id_) {
     const InstanceSpec& spec = scene_.instances[static_cast<std::size_t>(sphere_instance_.at(rh.hit.primID))];
-    const Vec3 o{ray.origin[0], ray.origin[1], ray.origin[2]}, d{ray.dir[0], ray.dir[1], ray.dir[2]};
-    out.normal = out.shading_normal = unit_or_zero(o + d * rh.ray.tfar - spec.transform.transform_point({0, 0, 0}));
+    out.normal = out.shading_normal =
+        unit_or_zero(ray.origin_vec() + ray.dir_vec() * rh.ray.tfar - spec.transform.transform_point({0, 0, 0}));
     out.material = spec.material;
   } else if (rh.hit.geomID == loose_id_) {
     const TriangleSpec& tri = scene_.triangles.at(rh.hit.primID);

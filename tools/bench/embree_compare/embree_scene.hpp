@@ -79,7 +79,7 @@ class EmbreeScene {
   std::vector<int> top_instance_;
   unsigned spheres_id_ = RTC_INVALID_GEOMETRY_ID, loose_id_ = RTC_INVALID_GEOMETRY_ID;
   std::vector<int> sphere_instance_;  // by the sphere's primitive ID
-  std::vector<Mat4> inverse_;         // M^-1 of each instance that is a mesh or a plane
+  std::vector<Mat4> normal_matrix_;   // (M^-1)^T of each instance that is a mesh or a plane
   std::string error_;  // the last message of Embree's error callback
   double build_seconds_ = 0;
 };

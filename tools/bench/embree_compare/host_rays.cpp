@@ -10,6 +10,11 @@ namespace {
 
 Vec3 vec3_of(const dev::f4& v) { return {v.x, v.y, v.z}; }
 
+// Uniform in [0, 1) from the top 53 bits, the same with every standard library.
+double uniform(std::mt19937_64& bits) { return static_cast<double>(bits() >> 11) * 0x1.0p-53; }
+
+}  // namespace
+
 HostRay host_ray(const Vec3& origin, const Vec3& unit_dir, float tmax) {
   return {
       {static_cast<float>(origin.x), static_cast<float>(origin.y), static_cast<float>(origin.z)},
@@ -18,21 +23,26 @@ HostRay host_ray(const Vec3& origin, const Vec3& unit_dir, float tmax) {
       tmax};
 }
 
-// Uniform in [0, 1) from the top 53 bits, the same with every standard library.
-double uniform(std::mt19937_64& bits) { return static_cast<double>(bits() >> 11) * 0x1.0p-53; }
+CameraRays::CameraRays(const Scene& scene, const RenderOptions& options) {
+  const dev::Camera cam = make_camera(scene, options);
+  eye_ = vec3_of(cam.eye);
+  corner_ = vec3_of(cam.corner);
+  dx_ = vec3_of(cam.pixel_dx);
+  dy_ = vec3_of(cam.pixel_dy);
+  width_ = cam.width;
+  height_ = cam.height;
+}
 
-}  // namespace
+HostRay CameraRays::through(unsigned i, unsigned j) const {
+  return host_ray(eye_, normalize(corner_ + dx_ * (i + 0.5) + dy_ * (j + 0.5)), INFINITY);
+}
 
 RaySet camera_rays(const Scene& scene) {
-  const dev::Camera cam = make_camera(scene, RenderOptions::from_scene(scene));
-  const Vec3 eye = vec3_of(cam.eye), corner = vec3_of(cam.corner), dx = vec3_of(cam.pixel_dx),
-             dy = vec3_of(cam.pixel_dy);
+  const CameraRays camera(scene, RenderOptions::from_scene(scene));
   RaySet set{"camera", {}};
-  set.rays.reserve(static_cast<std::size_t>(cam.width) * cam.height);
-  for (unsigned j = 0; j < cam.height; ++j)
-    for (unsigned i = 0; i < cam.width; ++i)
-      set.rays.push_back(
-          host_ray(eye, normalize(corner + dx * (i + 0.5) + dy * (j + 0.5)), INFINITY));
+  set.rays.reserve(static_cast<std::size_t>(camera.width()) * camera.height());
+  for (unsigned j = 0; j < camera.height(); ++j)
+    for (unsigned i = 0; i < camera.width(); ++i) set.rays.push_back(camera.through(i, j));
   return set;
 }
 
@@ -64,8 +74,7 @@ RaySet shadow_rays(const Scene& scene, const RaySet& rays, const std::vector<dev
           : vec3_of(light.position);
   for (std::size_t i = 0; i < hits.size(); ++i) {
     if (hits[i].instance == CLRT_NO_HIT) continue;
-    const HostRay& r = rays.rays[i];
-    const Vec3 o{r.origin[0], r.origin[1], r.origin[2]}, d{r.dir[0], r.dir[1], r.dir[2]};
+    const Vec3 o = rays.rays[i].origin_vec(), d = rays.rays[i].dir_vec();
     Vec3 normal = vec3_of(hits[i].geometric_normal);
     if (dot(normal, d) > 0) normal = -normal;
     const Vec3 p = o + d * hits[i].geometric_normal.w + normal * kTmin;

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "math/vec3.hpp"
+#include "render/render_options.hpp"
 #include "scene/scene.hpp"
 #include "shared/ray.h"
 
@@ -18,6 +19,26 @@ struct HostRay {
   float origin[3];
   float dir[3];  // unit
   float tmax;
+
+  Vec3 origin_vec() const { return {origin[0], origin[1], origin[2]}; }
+  Vec3 dir_vec() const { return {dir[0], dir[1], dir[2]}; }
+};
+
+// The ray from `origin` along `unit_dir`, rounded to single precision.
+HostRay host_ray(const Vec3& origin, const Vec3& unit_dir, float tmax);
+
+// The renderer's camera (render/frame_setup.hpp) for the options' size: the ray through the
+// centre of pixel (i, j), rows from the top.
+class CameraRays {
+ public:
+  CameraRays(const Scene& scene, const RenderOptions& options);
+  unsigned width() const { return width_; }
+  unsigned height() const { return height_; }
+  HostRay through(unsigned i, unsigned j) const;
+
+ private:
+  Vec3 eye_, corner_, dx_, dy_;
+  unsigned width_, height_;
 };
 
 struct RaySet {

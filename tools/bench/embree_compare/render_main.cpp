@@ -2,9 +2,12 @@
 // Whitted tracer on Embree 3 (whitted_tracer.hpp), the yardstick for clrt's whole command
 // (README.md, "The whole command").
 #include <CLI/CLI.hpp>
+#include <cstdint>
 #include <cstdio>
 #include <exception>
+#include <optional>
 #include <string>
+#include <vector>
 
 #include "cli/tool_command_line.hpp"
 #include "cli/whole_number.hpp"
@@ -16,15 +19,19 @@ int main(int argc, char** argv) {
   CLI::App app{"Renders a .ray scene with a Whitted tracer on Embree 3, for timing clrt against it.",
                "clrt-embree-render"};
   clrt::identify_tool(app);
-  std::string scene_path, output, resolution;
+  std::string scene_path, output;
+  std::optional<std::vector<std::uint64_t>> size;  // --resolution's width and height
   int threads = 2;
   app.add_option("SCENE", scene_path, ".ray scene")->required();
   app.add_option("-o,--output", output, "image file (its extension names the format)")->required();
-  app.add_option("--resolution", resolution, "image size WxH (default: the scene's)")
-      ->check([](const std::string& text) -> std::string {
-        const auto size = clrt::read_number_fields(text, {"#x#", 6, false, true});
-        return size && (*size)[0] > 0 && (*size)[1] > 0 ? "" : "--resolution takes WIDTHxHEIGHT, e.g. 1280x720";
-      });
+  app.add_option_function<std::string>(
+      "--resolution",
+      [&size](const std::string& text) {
+        size = clrt::read_number_fields(text, {"#x#", 6, false, true});
+        if (!size || (*size)[0] == 0 || (*size)[1] == 0)
+          throw CLI::ValidationError("--resolution", "takes WIDTHxHEIGHT, e.g. 1280x720");
+      },
+      "image size WxH (default: the scene's)");
   app.add_option("--threads", threads, "host threads for Embree's build and the tracing")
       ->transform(clrt::whole_number(1, 4096))
       ->capture_default_str();
@@ -45,8 +52,7 @@ int main(int argc, char** argv) {
     return 2;
   }
   clrt::RenderOptions options = clrt::RenderOptions::from_scene(scene);
-  if (!resolution.empty()) {
-    const auto size = clrt::read_number_fields(resolution, {"#x#", 6, false, true});
+  if (size) {
     options.width = static_cast<int>((*size)[0]);
     options.height = static_cast<int>((*size)[1]);
   }

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <vector>
 
+#include "host_rays.hpp"
 #include "host_threads.hpp"
 #include "render/frame_setup.hpp"
 
@@ -14,12 +15,6 @@ Vec3 mul(const Vec3& a, const Vec3& b) { return {a.x * b.x, a.y * b.y, a.z * b.z
 
 Vec3 vec3_of(const dev::f4& v) { return {v.x, v.y, v.z}; }
 
-HostRay host_ray(const Vec3& origin, const Vec3& dir, double tmax) {
-  return {{static_cast<float>(origin.x), static_cast<float>(origin.y), static_cast<float>(origin.z)},
-          {static_cast<float>(dir.x), static_cast<float>(dir.y), static_cast<float>(dir.z)},
-          static_cast<float>(tmax)};
-}
-
 // One light as seen from a point: the unit direction towards it, how far it is (infinite for a
 // directional light) and the colour that arrives (zero outside a spot's cone).
 struct Incoming {
@@ -28,16 +23,17 @@ struct Incoming {
   Vec3 colour;
 };
 
+// The lights come as the renderer sets them up once per frame (render/frame_setup.hpp): the
+// ambient ones summed, directions unit, a spot's cut-off as a cosine.
 class Tracer {
  public:
-  Tracer(const Scene& scene, const EmbreeScene& embree, int max_depth)
-      : embree_(embree), materials_(scene.materials), background_(scene.background), max_depth_(max_depth) {
-    for (const LightSpec& l : scene.lights)
-      if (l.kind == LightKind::Ambient)
-        ambient_ = ambient_ + l.color;
-      else
-        lights_.push_back(l);
-  }
+  Tracer(const Scene& scene, const EmbreeScene& embree, const RenderOptions& options)
+      : embree_(embree),
+        materials_(scene.materials),
+        lights_(make_lights(scene)),
+        ambient_(vec3_of(make_params(scene, options).ambient)),
+        background_(scene.background),
+        max_depth_(options.max_depth) {}
 
   // What the ray o + t d (d unit) carrying `weight` brings back, `depth` bounces from the eye.
   Vec3 trace(const Vec3& o, const Vec3& d, const Vec3& weight, int depth) const {
@@ -50,15 +46,16 @@ class Tracer {
     const Vec3 n = dot(hit.shading_normal, ng) < 0 ? -hit.shading_normal : hit.shading_normal;
     const Vec3 base = weight * std::max(0.0, 1 - m.kr - m.kt);
     Vec3 colour = mul(mul(base, ambient_), m.color) * m.ka;
-    for (const LightSpec& light : lights_) {
+    for (const dev::Light& light : lights_) {
       const Incoming in = arriving(light, p);
       const Vec3 term = mul(base, local_term(m, n, -d, in));
       if (term == Vec3{}) continue;
       const Vec3 from = offset(p, ng, in.to_light);
-      const bool far = std::isinf(in.distance);
-      const Vec3 towards = far ? in.to_light : normalize(light.position - from);
-      if (!embree_.occluded(host_ray(from, towards, far ? INFINITY : length(light.position - from))))
-        colour = colour + term;
+      const Vec3 towards = vec3_of(light.position) - from;
+      const HostRay shadow = std::isinf(in.distance)
+                                 ? host_ray(from, in.to_light, INFINITY)
+                                 : host_ray(from, normalize(towards), static_cast<float>(length(towards)));
+      if (!embree_.occluded(shadow)) colour = colour + term;
     }
     if (depth >= max_depth_) return colour;
     // Snell's law with eta = n1 / n2; total internal reflection sends kt along the mirror ray.
@@ -83,14 +80,13 @@ class Tracer {
     return p + ng * (dot(ng, dir) >= 0 ? kTmin : -kTmin);
   }
 
-  static Incoming arriving(const LightSpec& light, const Vec3& p) {
-    if (light.kind == LightKind::Directional) return {-normalize(light.direction), INFINITY, light.color};
-    const Vec3 delta = light.position - p;
-    Incoming in{delta / length(delta), length(delta), light.color};
-    if (light.kind == LightKind::Spot) {
-      const double sd = dot(normalize(light.direction), -in.to_light);
-      const bool lit = sd >= std::cos(light.angle_degrees * M_PI / 180);
-      in.colour = lit ? in.colour * std::pow(std::max(sd, 0.0), light.exponent) : Vec3{};
+  static Incoming arriving(const dev::Light& light, const Vec3& p) {
+    if (light.kind == CLRT_LIGHT_DIRECTIONAL) return {-vec3_of(light.direction), INFINITY, vec3_of(light.color)};
+    const Vec3 delta = vec3_of(light.position) - p;
+    Incoming in{delta / length(delta), length(delta), vec3_of(light.color)};
+    if (light.kind == CLRT_LIGHT_SPOT) {
+      const double sd = dot(vec3_of(light.direction), -in.to_light);
+      in.colour = sd >= light.cos_cutoff ? in.colour * std::pow(std::max(sd, 0.0), light.spot_exponent) : Vec3{};
     }
     return in;
   }
@@ -106,7 +102,7 @@ class Tracer {
 
   const EmbreeScene& embree_;
   const std::vector<MaterialSpec>& materials_;
-  std::vector<LightSpec> lights_;
+  std::vector<dev::Light> lights_;
   Vec3 ambient_, background_;
   int max_depth_;
 };
@@ -121,24 +117,21 @@ std::string unsupported_lights(const Scene& scene) {
 
 FloatImage render_whitted(const Scene& scene, const EmbreeScene& embree, const RenderOptions& options,
                           int threads) {
-  const dev::Camera cam = make_camera(scene, options);
-  const Vec3 eye = vec3_of(cam.eye), corner = vec3_of(cam.corner), dx = vec3_of(cam.pixel_dx),
-             dy = vec3_of(cam.pixel_dy);
-  const Tracer tracer(scene, embree, options.max_depth);
-  const std::size_t width = cam.width, pixels = width * cam.height;
+  const CameraRays camera(scene, options);
+  const Tracer tracer(scene, embree, options);
+  const std::size_t width = camera.width(), pixels = width * camera.height();
   std::vector<float> rgb(3 * pixels);
   parallel_seconds(pixels, threads, [&](std::size_t begin, std::size_t end) {
     flush_denormals();
     for (std::size_t k = begin; k < end; ++k) {
-      const Vec3 dir = normalize(corner + dx * (static_cast<double>(k % width) + 0.5) +
-                                 dy * (static_cast<double>(k / width) + 0.5));
-      const Vec3 c = tracer.trace(eye, dir, {1, 1, 1}, 0);
+      const HostRay ray = camera.through(static_cast<unsigned>(k % width), static_cast<unsigned>(k / width));
+      const Vec3 c = tracer.trace(ray.origin_vec(), ray.dir_vec(), {1, 1, 1}, 0);
       rgb[3 * k] = static_cast<float>(c.x);
       rgb[3 * k + 1] = static_cast<float>(c.y);
       rgb[3 * k + 2] = static_cast<float>(c.z);
     }
   });
-  return {static_cast<int>(cam.width), static_cast<int>(cam.height), std::move(rgb)};
+  return {static_cast<int>(camera.width()), static_cast<int>(camera.height()), std::move(rgb)};
 }
 
 }  // namespace clrt::compare
