@@ -15,7 +15,7 @@
 #ifndef CLRT_MEGAKERNEL_DEPTH
 #define CLRT_MEGAKERNEL_DEPTH 16
 #endif
-#if CLRT_MEGAKERNEL_DEPTH > 63
+#if CLRT_MEGAKERNEL_DEPTH > 62
 #error "CLRT_MEGAKERNEL_DEPTH must fit the 64-bit mask of levels"
 #endif
 
@@ -30,9 +30,10 @@ __kernel void megakernel(SCENE_PARAMS, __global const RenderParams* params,
   if (i >= sample_count) return;
   const Camera cam = *camera;
   /* Depth first, each branch pushes its refraction then its reflection: one pending ray per
-   * level on the current path, two at the deepest, so max depth + 1 entries suffice. */
+   * level on the current path, two at the deepest, so max depth + 1 entries suffice. Levels
+   * run to max depth + 1: a path's last ray, drawn at the cap, only gathers light. */
   Ray stack[CLRT_MEGAKERNEL_DEPTH + 1];
-  float3 level[CLRT_MEGAKERNEL_DEPTH + 1];
+  float3 level[CLRT_MEGAKERNEL_DEPTH + 2];
   ulong levels_seen = 0ul;
   uint counts[CLRT_RAY_KINDS] = {0u};
   uint top = 0;
@@ -51,7 +52,7 @@ __kernel void megakernel(SCENE_PARAMS, __global const RenderParams* params,
     levels_seen |= bit;
   }
   float3 total = (float3)(0.0f);
-  for (uint d = 0; d <= CLRT_MEGAKERNEL_DEPTH; ++d)
+  for (uint d = 0; d <= CLRT_MEGAKERNEL_DEPTH + 1; ++d)
     if (levels_seen & (1ul << d)) total += level[d];
   sample_colour[i] = as_f4(total);
   for (uint k = 0; k < CLRT_RAY_KINDS; ++k) ray_counts[i * CLRT_RAY_KINDS + k] = counts[k];

@@ -136,6 +136,10 @@ CLRT_INLINE float3 path_step(const Ray* ray, const Hit* hit, __global const Mate
   const bool missed = hit->instance == CLRT_NO_HIT;
   float3 c = crossed_emission(ray, lights, params, missed ? INFINITY : hit->geometric_normal.w);
   if (missed) return c + miss_colour(ray, params);
+  /* Past the depth cap a ray only gathers the light it meets: the cap vertex still draws a
+   * direction, so that its next-event estimates' MIS weights have their other strategy, and the
+   * light its mirror and glass lobes bring (which no shadow ray samples) is not lost. */
+  if (ray->depth > params->max_depth) return c;
   const ShadePoint sp = shade_point(ray, hit, materials);
   __global const Material* m = &materials[sp.material];
   const PathLobes lobes = path_lobes(m);
@@ -152,7 +156,6 @@ CLRT_INLINE float3 path_step(const Ray* ray, const Hit* hit, __global const Mate
       }
     }
   }
-  if (ray->depth >= params->max_depth) return c;
   float3 dir, weight;
   float pdf, radiance_scale;
   uint kind;

@@ -10,8 +10,13 @@ WaveSizes wavefront_sizes(const IntegratorConfig& config, const DeviceFrame& fra
   return wave_sizes(config.capacity, frame.host.camera.samples, frame.host.params.shadow_samples);
 }
 
+// A path's last ray, drawn at the depth cap, is one level deeper (kernels/render/path_step.h).
 std::uint32_t pass_limit(const DeviceFrame& frame) {
-  return frame.host.params.mode == CLRT_MODE_CAST ? 1 : frame.host.params.max_depth + 1;
+  switch (frame.host.params.mode) {
+    case CLRT_MODE_CAST: return 1;
+    case CLRT_MODE_PATH: return frame.host.params.max_depth + 2;
+    default: return frame.host.params.max_depth + 1;
+  }
 }
 
 std::vector<DeviceBuffer> wavefront_buffers(const WaveSizes& s) {

@@ -28,6 +28,10 @@ void fov(LoaderState& s, const CommandArgs& a) {
   const double degrees = a.number(0);
   if (degrees <= 0 || degrees >= 180)
     throw a.error_at(0, "fov must be > 0 and < 180 degrees, found " + excerpt(a.word(0).text));
+  if (degrees < limits::kMinFovDegrees)
+    throw a.error_at(0, "fov " + excerpt(a.word(0).text) + " is too narrow for the device's single "
+                        "precision: the narrowest is " + short_number(limits::kMinFovDegrees) +
+                        " degrees");
   s.scene.camera.fov_degrees = degrees;
 }
 

@@ -1,5 +1,6 @@
 #include "scene/light_kinds.hpp"
 
+#include <limits>
 #include <stdexcept>
 
 #include "scene/limits.hpp"
@@ -39,12 +40,35 @@ void spot(LightSpec& light, const CommandArgs& a) {
   }
 }
 
+// The device samples an area light and weighs its samples by the cross product of its edges (its
+// normal, as long as its area), in single precision: that product must neither vanish, overflow
+// nor underflow there when squared, and the edges must be far enough from parallel for its
+// direction to be known. Otherwise path mode's samples of the light were NaN.
+void check_area_edges(const CommandArgs& a, const Vec3& u, const Vec3& v) {
+  const float ux = static_cast<float>(u.x), uy = static_cast<float>(u.y), uz = static_cast<float>(u.z);
+  const float vx = static_cast<float>(v.x), vy = static_cast<float>(v.y), vz = static_cast<float>(v.z);
+  const float nx = uy * vz - uz * vy, ny = uz * vx - ux * vz, nz = ux * vy - uy * vx;
+  const float n2 = nx * nx + ny * ny + nz * nz;
+  const double sine = length(cross(u, v)) / (length(u) * length(v));
+  if (n2 >= std::numeric_limits<float>::min() && n2 <= std::numeric_limits<float>::max() &&
+      sine >= limits::kMinAreaLightEdgeSine)
+    return;
+  throw a.error_at(kFirst + 3,
+                   sine >= limits::kMinAreaLightEdgeSine
+                       ? "the area light's edges span an area of " + short_number(length(cross(u, v))) +
+                             ", too small or too large for the device's single precision"
+                       : "the area light's edges u and v are parallel (the sine of the angle "
+                         "between them must be at least " +
+                             short_number(limits::kMinAreaLightEdgeSine) + ")");
+}
+
 // area x y z ux uy uz vx vy vz [samples]
 void area(LightSpec& light, const CommandArgs& a) {
   a.require_count({9, 10}, kFirst, "light");
   light.position = a.vec3(kFirst);
   light.edge_u = a.nonzero_vec3(kFirst + 3, "the area light's edge u");
   light.edge_v = a.nonzero_vec3(kFirst + 6, "the area light's edge v");
+  check_area_edges(a, light.edge_u, light.edge_v);
   const std::size_t samples = kFirst + 9;
   light.samples = a.count() > samples
                       ? a.whole_number(samples, 1, static_cast<int>(limits::kMaxLightSamples),

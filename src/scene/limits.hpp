@@ -44,6 +44,17 @@ constexpr std::size_t kMaxConcavePolygonCorners = 4096;
 constexpr std::int64_t kMaxImageSide = 65536;
 constexpr std::int64_t kMaxPixels = std::int64_t{1} << 28;
 
+// The narrowest field of view, in degrees. The device builds a camera ray as f F + x R + y U in
+// single precision, with the focal length f = width / (2 tan(fov / 2)) in pixels, and normalises
+// it: at this fov and the widest image, f is 4e15 and its square far from overflowing (at 1e-17
+// degrees it overflowed and every ray was NaN).
+constexpr double kMinFovDegrees = 1e-9;
+
+// An area light's edges must be further from parallel than this sine of the angle between them:
+// nearer, their cross product (the light's normal, as long as its area), taken by the device in
+// single precision, loses its direction.
+constexpr double kMinAreaLightEdgeSine = 1e-4;
+
 // Camera samples per pixel, and maximum ray depth: the command line's caps, the same in a file.
 constexpr std::int64_t kMaxSamples = 65536;
 constexpr std::int64_t kMaxDepth = 65536;

@@ -56,6 +56,11 @@ void angle(NffState& s, const CommandArgs& a) {
   s.angle_degrees = a.number(0);
   if (s.angle_degrees <= 0 || s.angle_degrees >= 180)
     throw a.error_at(0, "the angle must be > 0 and < 180 degrees, found " + a.word(0).text);
+  // clrt's fov is wider than NFF's angle (fov_from_nff_angle), so this bounds it too.
+  if (s.angle_degrees < limits::kMinFovDegrees)
+    throw a.error_at(0, "the angle " + a.word(0).text + " is too narrow for the device's single "
+                        "precision: the narrowest is " + short_number(limits::kMinFovDegrees) +
+                        " degrees");
 }
 
 // clrt has no near plane (camera rays start at the eye), so hither is read and checked only.

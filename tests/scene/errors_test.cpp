@@ -24,6 +24,9 @@ TEST_CASE("an unknown command is reported at the command word", "[scene][errors]
 TEST_CASE("a word that is not a number is reported at that word", "[scene][errors]") {
   require_error("translate 1 two 3\n", 1, 13, "expected a number, found 'two'");
   require_error("fov 45deg\n", 1, 5, "expected a number");
+  // Narrower, the focal length's square overflows the device's floats and every ray is NaN.
+  require_error("fov 1e-17\n", 1, 5, "too narrow for the device's single precision");
+  CHECK(clrt::test::load_text("fov 1e-9\n").camera.fov_degrees == 1e-9);
   require_error("fov 4,5\n", 1, 5, "expected a number");
   require_error("fov 0x10\n", 1, 5, "expected a number");
   require_error("fov \"45\"\n", 1, 5, "expected a number");

@@ -95,5 +95,13 @@ TEST_CASE("light range rules", "[scene][lights][errors]") {
   require_error("light 1 1 1 area 0 4 0 1 0 0 0 0 0\n", 1, 30,
                 "edge v must not be a zero-length vector");
   require_error("light 1 1 1 area 0 4 0 1 0 0 0 0 1 0\n", 1, 36, "whole number from 1 to 65536");
+  // Edges the device cannot make an area of in single precision: every path-mode sample of
+  // such a light was NaN.
+  require_error("light 1 1 1 area 0 4 0 1 0 0 2 0 0\n", 1, 24, "edges u and v are parallel");
+  require_error("light 1 1 1 area 0 4 0 1 0 0 1 1e-5 0\n", 1, 24, "edges u and v are parallel");
+  require_error("light 1 1 1 area 0 4 0 1e-12 0 0 0 0 1e-12\n", 1, 24, "too small or too large");
+  require_error("light 1 1 1 area 0 4 0 1e11 0 0 0 0 1e11\n", 1, 24, "too small or too large");
+  CHECK(load_text("light 1 1 1 area 0 4 0 1e-9 0 0 0 0 1e-9\nlight 1 1 1 area 0 4 0 1 0 0 1 1e-3 0\n")
+            .lights.size() == 2);
   require_error("light 1 1 1 area 0 4 0 1 0 0 0 0 1 2.5\n", 1, 36, "whole number from 1 to 65536");
 }

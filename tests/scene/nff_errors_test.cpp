@@ -123,6 +123,7 @@ TEST_CASE("NFF: the view's numbers in their ranges", "[scene][nff][errors]") {
            "\nresolution " + resolution + "\n";
   };
   require_nff_error(view("0", "0", "8 8"), 5, 7, "the angle must be > 0 and < 180 degrees");
+  require_nff_error(view("1e-17", "0", "8 8"), 5, 7, "too narrow for the device's single precision");
   require_nff_error(view("180", "0", "8 8"), 5, 7, "found 180");
   require_nff_error(view("45", "-1", "8 8"), 6, 8, "hither must be >= 0, found -1");
   require_nff_error(view("45", "0", "0 8"), 7, 12, "the image width must be a whole number from 1 to 65536");
