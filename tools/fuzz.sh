@@ -46,13 +46,19 @@ for target in "${targets[@]}"; do
   mkdir -p "$work/corpus"
   earlier=$(count_findings "$work")
   dict=tests/fuzz/dictionaries/$target.dict
-  # Leaks are reported too; the harnesses load no OpenCL, so none is PoCL's or LLVM's.
+  # Path-mode renders read the same scenes as the reader's own target.
+  [[ $target == fuzz_path_render ]] && dict=tests/fuzz/dictionaries/fuzz_ray_scene.dict
+  # Leaks are reported too: the harnesses but one load no OpenCL, so none is PoCL's or LLVM's.
+  # fuzz_path_render renders on PoCL, whose compiler keeps what it allocates until exit, and
+  # takes longer per input.
+  extra=()
+  [[ $target == fuzz_path_render ]] && extra=(-detect_leaks=0)
   # The harness writes each input under $TMPDIR; a crashed run cannot remove it, so keep it here.
   mkdir -p "$work/tmp"
   status=0
   keep_going=()
   [[ ${FUZZ_KEEP_GOING:-0} == 1 ]] && keep_going=(-fork=1 -ignore_crashes=1 -ignore_timeouts=1 -ignore_ooms=1)
-  TMPDIR=$work/tmp "build-fuzz/tests/fuzz/$target" "${keep_going[@]}" "$work/corpus" "tests/fuzz/seeds/$target" \
+  TMPDIR=$work/tmp "build-fuzz/tests/fuzz/$target" "${keep_going[@]}" "${extra[@]}" "$work/corpus" "tests/fuzz/seeds/$target" \
     -dict="$dict" -max_total_time="$seconds" -max_len="$(max_len "$target")" \
     -rss_limit_mb=2048 -malloc_limit_mb=1024 -timeout=20 -print_final_stats=1 \
     -artifact_prefix="$work/" >"$work/log.txt" 2>&1 || status=$?

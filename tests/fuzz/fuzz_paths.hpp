@@ -14,6 +14,9 @@ enum class Outcome { Rejected, Accepted };
 
 // A .ray scene through the loader, the BVH build and the frame set-up.
 Outcome ray_scene(const std::string& path);
+// A .ray scene rendered in path mode at a few pixels, with both integrators, on the test
+// device (CLRT_TEST_DEVICE, else the first CPU device): every value must be finite.
+Outcome path_render(const std::string& path);
 // An OBJ mesh through load_obj_mesh().
 Outcome obj_mesh(const std::string& path);
 // An image through read_image(), which picks the reader by the path's extension.

@@ -32,7 +32,7 @@ TEST_CASE("every fuzz target's folder of found inputs is one this test replays",
                                           "fuzz_image_fsf", "fuzz_image_ppm", "fuzz_image_png",
                                           "fuzz_image_pfm", "fuzz_image_exr",
                                           "fuzz_program_cache", "fuzz_stitch_tiles",
-                                          "fuzz_polygon", "open"};
+                                          "fuzz_polygon", "fuzz_path_render", "open"};
   for (const auto& entry : fs::directory_iterator(kRegressions))
     if (entry.is_directory()) CHECK(replayed.count(entry.path().filename().string()) == 1);
 }
@@ -74,5 +74,18 @@ TEST_CASE("cache entries, tiles and polygons, found or seeded, keep every promis
       const Outcome expected = file.filename() == "overlap.txt" ? Outcome::Rejected : Outcome::Accepted;
       CHECK(path(file.string()) == expected);
     }
+  }
+}
+
+TEST_CASE("path-mode scenes, found or seeded, render finite values or are refused", "[fuzz][path]") {
+  // Those named refused-* are scenes the reader now refuses; the others must render.
+  std::set<fs::path> files = inputs_of("fuzz_path_render");
+  REQUIRE_FALSE(files.empty());
+  const fs::path seeds = fs::path(CLRT_SOURCE_DIR) / "tests" / "fuzz" / "seeds" / "fuzz_path_render";
+  for (const auto& entry : fs::directory_iterator(seeds)) files.insert(entry.path());
+  for (const fs::path& file : files) {
+    INFO(file);
+    const bool refused = file.filename().string().rfind("refused-", 0) == 0;
+    CHECK(clrt::fuzz::path_render(file.string()) == (refused ? Outcome::Rejected : Outcome::Accepted));
   }
 }
