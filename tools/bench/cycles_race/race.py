@@ -1,0 +1,389 @@
+#!/usr/bin/env python3
+"""Races clrt's path tracer (`--mode path`) against Blender Cycles (PyPI bpy 4.5) on the same
+scenes: noise at equal samples per pixel, wall-clock time, and time to equal quality.
+
+Per scene:
+ (a) a converged reference of each renderer (--ref-spp samples, cached under
+     BUILD/tools/bench/cycles_race/references, keyed by a hash of the scene, its meshes, the
+     renderer and the settings); their image means must agree to within --tolerance (1%) in
+     every channel, or the scene is not the same in both and the race stops (exit 1);
+ (b) at each --spp, --seeds renders with seeds 1, 2, ... of each renderer: the per-pixel RMSE
+     against the renderer's own reference and against the other's, and clrt RMSE / Cycles RMSE;
+ (c) the wall-clock time of each whole command (clrt: `clrt ... -o out.exr`; Cycles: the render
+     call, and the whole python process), clrt and Cycles alternated, median of --runs;
+ (d) efficiency 1 / (RMSE^2 time), and clrt's speed-up at equal quality, the ratio of
+     efficiencies (against Cycles' render call and against its whole process).
+Prints a Markdown table and writes a JSON record (--json; default
+BUILD/tools/bench/cycles_race/race.json). README.md beside this file says why each step is so.
+
+Usage (from the repository root, after tools/bench/cycles_race/install.sh build):
+    python3 tools/bench/cycles_race/race.py [--spp 16,64] [--seeds 3] [--runs 3]
+        [--resolution 128x128] [--ref-spp 2048] [--clrt PATH] [--venv PATH] [SCENE...]
+SCENE is a .ray path or a name: cornell1, knot, units_point, units_area (default: cornell1 knot).
+Run by any python3, it restarts itself with the venv's python (bpy reads the EXRs).
+Exit status: 0 done, 1 the references disagree or a render failed, 2 a usage error, 77 no venv.
+"""
+import argparse
+import hashlib
+import json
+import os
+import pathlib
+import platform
+import shutil
+import subprocess
+import sys
+import tempfile
+import time
+
+HERE = pathlib.Path(__file__).resolve().parent
+REPO = HERE.parents[2]
+sys.path.insert(0, str(HERE.parent))  # tools/bench: clrt_run
+sys.path.insert(0, str(HERE))
+import clrt_run  # noqa: E402
+import metrics  # noqa: E402
+
+SCENES = {"cornell1": HERE / "scenes" / "cornell1.ray", "knot": None,
+          "units_point": HERE / "scenes" / "units_point.ray",
+          "units_area": HERE / "scenes" / "units_area.ray"}
+DEFAULT_SCENES = ["cornell1", "knot"]
+KNOT_OBJ = "knot-100k-flat.obj"
+REFERENCE_SEED = 1000003  # far from the race's seeds 1, 2, ...
+
+
+def default_build():
+    return pathlib.Path(os.environ.get("CLRT_BUILD", REPO / "build"))
+
+
+def parse_args(argv):
+    p = argparse.ArgumentParser(description=__doc__.split("\n\n")[0],
+                                formatter_class=argparse.RawDescriptionHelpFormatter)
+    p.add_argument("scenes", nargs="*", help="scene names or .ray paths (default: cornell1 knot)")
+    p.add_argument("--build", type=pathlib.Path, default=default_build(), help="the build tree (default: build)")
+    p.add_argument("--clrt", type=pathlib.Path, help="clrt binary (default: $CLRT or BUILD/clrt)")
+    p.add_argument("--venv", type=pathlib.Path, help="the venv with bpy (default: BUILD/cycles-venv)")
+    p.add_argument("--spp", default="16,64", help="samples per pixel of the raced renders, comma-separated")
+    p.add_argument("--seeds", type=int, default=3, help="independent renders per renderer and spp for the RMSE")
+    p.add_argument("--runs", type=int, default=3, help="timed runs per renderer and spp (median)")
+    p.add_argument("--resolution", default="128x128", help="WxH")
+    p.add_argument("--ref-spp", type=int, default=2048, help="samples per pixel of the references")
+    p.add_argument("--threads", type=int, default=2, help="CPU threads of each renderer")
+    p.add_argument("--tolerance", type=float, default=0.01, help="largest relative difference of the references' means")
+    p.add_argument("--json", type=pathlib.Path, help="where to write the record")
+    p.add_argument("--keep", type=pathlib.Path, help="keep every image in this folder")
+    args = p.parse_args(argv)
+    args.clrt = args.clrt or pathlib.Path(os.environ.get("CLRT", args.build / "clrt"))
+    args.venv = args.venv or args.build / "cycles-venv"
+    try:
+        args.spp = [int(s) for s in args.spp.split(",")]
+        w, _, h = args.resolution.lower().partition("x")
+        args.size = (int(w), int(h))
+    except ValueError:
+        p.error("--spp takes numbers separated by commas, --resolution WxH")
+    if min(args.spp) < 1 or min(args.size) < 1 or args.seeds < 1 or args.runs < 1 or args.ref_spp < 1:
+        p.error("counts and sizes must be positive")
+    args.scenes = args.scenes or DEFAULT_SCENES
+    return args
+
+
+def restart_in_venv(args):
+    """bpy reads the EXRs (and numpy does the sums): run under the venv's python."""
+    try:
+        import bpy  # noqa: F401
+        import numpy  # noqa: F401
+        return
+    except ImportError:
+        pass
+    python = args.venv / "bin" / "python"
+    if not python.exists():
+        print(f"race.py: no Cycles venv at {args.venv} (bash tools/bench/cycles_race/install.sh "
+              f"{args.build}); skipped", file=sys.stderr)
+        sys.exit(77)
+    if os.environ.get("CYCLES_RACE_RESTARTED"):
+        sys.exit(f"race.py: {python} cannot import bpy and numpy")
+    os.environ["CYCLES_RACE_RESTARTED"] = "1"
+    os.execv(str(python), [str(python), str(pathlib.Path(__file__).resolve()), *sys.argv[1:]])
+
+
+# ---------------------------------------------------------------------------------------------
+# scenes
+
+
+def flatten_obj(source, target):
+    """Writes `source` (an OBJ with a normal at every corner) without its normals: flat faces."""
+    faces = 0
+    with open(source, encoding="utf-8") as f, open(target, "w", encoding="utf-8") as out:
+        out.write(f"# {pathlib.Path(source).name} of clrt-make-scenes --scale 0.1 without its vertex normals "
+                  "(flat shading), for tools/bench/cycles_race\n")
+        for line in f:
+            if line.startswith("v "):
+                out.write(line)
+            elif line.startswith("f "):
+                out.write("f " + " ".join(w.split("/")[0] for w in line.split()[1:]) + "\n")
+                faces += 1
+    return faces
+
+
+def prepare_knot(build):
+    """The mesh scene: knot.ray copied next to the flat knot OBJ in the build tree, which
+    clrt-make-scenes makes (its knot-1m.obj at --scale 0.1 has 100,014 triangles)."""
+    folder = build / "tools" / "bench" / "cycles_race" / "scenes"
+    folder.mkdir(parents=True, exist_ok=True)
+    obj = folder / KNOT_OBJ
+    if not obj.exists():
+        maker = build / "tools" / "make_scenes" / "clrt-make-scenes"
+        if not maker.exists():
+            sys.exit(f"race.py: {maker} is missing (cmake --build {build}); it makes the knot mesh")
+        with tempfile.TemporaryDirectory() as tmp:
+            subprocess.run([str(maker), "--scale", "0.1", tmp], check=True, stdout=subprocess.DEVNULL)
+            part = obj.with_suffix(".part")
+            faces = flatten_obj(pathlib.Path(tmp) / "knot-1m.obj", part)
+            part.rename(obj)
+        print(f"race.py: wrote {obj} ({faces} triangles)", file=sys.stderr)
+    scene = folder / "knot.ray"
+    shutil.copyfile(HERE / "scenes" / "knot.ray", scene)
+    return scene
+
+
+def resolve_scene(name, build):
+    if name == "knot":
+        return prepare_knot(build)
+    if name in SCENES:
+        return SCENES[name]
+    path = pathlib.Path(name)
+    if not path.exists():
+        sys.exit(f"race.py: no scene {name} (names: {', '.join(SCENES)})")
+    return path
+
+
+def scene_digest(path):
+    """The scene file and every mesh it names (hash of their bytes)."""
+    h = hashlib.sha256(path.read_bytes())
+    for line in path.read_text(encoding="utf-8").splitlines():
+        words = line.split("#", 1)[0].split()
+        if len(words) == 2 and words[0].lower() == "mesh":
+            h.update((path.parent / words[1].strip('"')).read_bytes())
+    return h.hexdigest()
+
+
+# ---------------------------------------------------------------------------------------------
+# renders
+
+
+class Renderers:
+    def __init__(self, args, workdir):
+        self.args, self.workdir = args, workdir
+        self.python = str(args.venv / "bin" / "python")
+        self.converter = HERE / "ray_to_cycles.py"
+        self.env = clrt_run.pocl_threads(args.threads)
+
+    def clrt(self, scene, spp, seed, out, size):
+        command = [self.args.clrt, scene, "--mode", "path", "--spp", spp, "--seed", seed,
+                   "--resolution", f"{size[0]}x{size[1]}", "--threads", self.args.threads,
+                   "--exr-pixel", "float", "-o", out, "-q"]
+        run = clrt_run.run(command, self.env)
+        return {"process_s": run.wall, "cpu_s": run.cpu, "peak_mib": run.peak_mib}
+
+    def cycles(self, scene, spp, seed, out, size):
+        command = [self.python, self.converter, scene, "-o", out, "--spp", spp, "--seed", seed,
+                   "--resolution", f"{size[0]}x{size[1]}", "--threads", self.args.threads]
+        run = clrt_run.run(command)
+        report = [line for line in run.stdout.splitlines() if line.startswith("{")]
+        if not report:
+            raise clrt_run.RunFailed(f"ray_to_cycles.py printed no report:\n{run.stdout[-2000:]}")
+        info = json.loads(report[-1])
+        return {"process_s": run.wall, "render_s": info["render_s"], "build_s": info["build_s"],
+                "cpu_s": run.cpu, "peak_mib": run.peak_mib}
+
+
+def read_image(path):
+    import ray_to_cycles
+    return ray_to_cycles.read_exr(path)
+
+
+def reference(renderers, name, scene, args):
+    """The renderer's converged image, rendered once per scene and settings."""
+    folder = args.build / "tools" / "bench" / "cycles_race" / "references"
+    folder.mkdir(parents=True, exist_ok=True)
+    h = hashlib.sha256()
+    h.update(scene_digest(scene).encode())
+    h.update(f"{args.size} {args.ref_spp} {REFERENCE_SEED} {args.threads}".encode())
+    if name == "clrt":
+        h.update(pathlib.Path(args.clrt).read_bytes())
+    else:
+        for source in (HERE / "ray_to_cycles.py", REPO / "tools" / "mitsuba" / "ray_to_mitsuba.py",
+                       REPO / "tools" / "mitsuba" / "obj_mesh.py"):
+            h.update(source.read_bytes())
+        import bpy
+        h.update(bpy.app.version_string.encode())
+    path = folder / f"{scene.stem}-{args.size[0]}x{args.size[1]}-{name}-{h.hexdigest()[:16]}.exr"
+    if not path.exists():
+        print(f"race.py: rendering {name}'s reference of {scene.name} ({args.ref_spp} spp)...", file=sys.stderr)
+        part = path.with_name(path.stem + ".part.exr")
+        started = time.perf_counter()
+        getattr(renderers, name)(scene, args.ref_spp, REFERENCE_SEED, part, args.size)
+        part.rename(path)
+        print(f"race.py:   {time.perf_counter() - started:.1f} s", file=sys.stderr)
+    return path, read_image(path)
+
+
+def flat(image):
+    return image.ravel().tolist()
+
+
+def race_scene(renderers, label, scene, args, workdir):
+    import numpy as np
+    record = {"scene": label, "path": str(scene)}
+    refs = {}
+    for name in ("clrt", "cycles"):
+        path, image = reference(renderers, name, scene, args)
+        refs[name] = image
+        record[f"{name}_reference"] = {"path": str(path), "spp": args.ref_spp,
+                                       "mean_rgb": image.mean(axis=(0, 1)).tolist()}
+    differences = metrics.relative_differences(record["clrt_reference"]["mean_rgb"],
+                                               record["cycles_reference"]["mean_rgb"])
+    record["reference_mean_difference_rgb"] = differences
+    record["references_agree"] = metrics.means_agree(record["clrt_reference"]["mean_rgb"],
+                                                     record["cycles_reference"]["mean_rgb"], args.tolerance)
+    print(f"race.py: {label}: clrt's reference mean differs from Cycles' by "
+          f"{', '.join(f'{100 * d:+.2f}%' for d in differences)} (R, G, B)", file=sys.stderr)
+    if not record["references_agree"]:
+        return record
+
+    # Warm-up, untimed: the scene files and meshes into the page cache, clrt's kernels into
+    # PoCL's cache, bpy's libraries into memory.
+    renderers.clrt(scene, 1, 1, workdir / "warm.exr", args.size)
+    renderers.cycles(scene, 1, 1, workdir / "warm.exr", args.size)
+
+    record["spp"] = []
+    for spp in args.spp:
+        runs = {"clrt": [], "cycles": []}
+        errors = {"clrt": [], "cycles": [], "clrt_vs_cycles_ref": [], "cycles_vs_clrt_ref": []}
+        for i in range(max(args.seeds, args.runs)):
+            seed = i + 1
+            for name in ("clrt", "cycles"):  # alternated, so that load falls on both alike
+                out = workdir / f"{scene.stem}-{name}-{spp}-{seed}.exr"
+                runs[name].append(getattr(renderers, name)(scene, spp, seed, out, args.size))
+                if i < args.seeds:
+                    image = flat(read_image(out))
+                    other = "cycles" if name == "clrt" else "clrt"
+                    errors[name].append(metrics.rmse(image, flat(refs[name])))
+                    errors[f"{name}_vs_{other}_ref"].append(metrics.rmse(image, flat(refs[other])))
+                if args.keep:
+                    args.keep.mkdir(parents=True, exist_ok=True)
+                    shutil.copyfile(out, args.keep / out.name)
+                out.unlink()
+        row = {"spp": spp, "seeds": args.seeds, "runs": args.runs, "times": runs, "rmse_per_seed": errors}
+        row["clrt_rmse"] = metrics.pooled_rmse(errors["clrt"])
+        row["cycles_rmse"] = metrics.pooled_rmse(errors["cycles"])
+        row["clrt_rmse_vs_cycles_ref"] = metrics.pooled_rmse(errors["clrt_vs_cycles_ref"])
+        row["cycles_rmse_vs_clrt_ref"] = metrics.pooled_rmse(errors["cycles_vs_clrt_ref"])
+        row["rmse_ratio"] = row["clrt_rmse"] / row["cycles_rmse"]
+        row["clrt_s"] = metrics.median(r["process_s"] for r in runs["clrt"][:args.runs])
+        row["cycles_render_s"] = metrics.median(r["render_s"] for r in runs["cycles"][:args.runs])
+        row["cycles_process_s"] = metrics.median(r["process_s"] for r in runs["cycles"][:args.runs])
+        row["clrt_efficiency"] = metrics.efficiency(row["clrt_rmse"], row["clrt_s"])
+        row["cycles_efficiency_render"] = metrics.efficiency(row["cycles_rmse"], row["cycles_render_s"])
+        row["cycles_efficiency_process"] = metrics.efficiency(row["cycles_rmse"], row["cycles_process_s"])
+        row["speedup_vs_render"] = metrics.speedup(row["clrt_rmse"], row["clrt_s"], row["cycles_rmse"],
+                                                   row["cycles_render_s"])
+        row["speedup_vs_process"] = metrics.speedup(row["clrt_rmse"], row["clrt_s"], row["cycles_rmse"],
+                                                    row["cycles_process_s"])
+        record["spp"].append(row)
+        print(f"race.py: {label} {spp} spp: RMSE clrt {row['clrt_rmse']:.4g}, Cycles {row['cycles_rmse']:.4g}; "
+              f"time clrt {row['clrt_s']:.2f} s, Cycles {row['cycles_render_s']:.2f} s "
+              f"({row['cycles_process_s']:.2f} s process)", file=sys.stderr)
+    return record
+
+
+# ---------------------------------------------------------------------------------------------
+# the record
+
+
+def cpu_model():
+    try:
+        for line in open("/proc/cpuinfo", encoding="utf-8"):
+            if line.lower().startswith("model name"):
+                return line.split(":", 1)[1].strip()
+    except OSError:
+        pass
+    return platform.processor() or "unknown"
+
+
+def git_commit():
+    try:
+        head = subprocess.run(["git", "-C", str(REPO), "rev-parse", "--short", "HEAD"], capture_output=True,
+                              text=True, check=True).stdout.strip()
+        dirty = subprocess.run(["git", "-C", str(REPO), "status", "--porcelain", "--untracked-files=no"],
+                               capture_output=True, text=True).stdout.strip() != ""
+        return head, dirty
+    except (OSError, subprocess.CalledProcessError):
+        return "unknown", None
+
+
+def markdown(record):
+    lines = ["| scene | spp | RMSE clrt | RMSE Cycles | clrt / Cycles | clrt vs Cycles' ref | Cycles vs clrt's ref "
+             "| clrt s | Cycles render s | Cycles process s | speed-up (render) | speed-up (process) |",
+             "|---|---|---|---|---|---|---|---|---|---|---|---|"]
+    for scene in record["scenes"]:
+        if not scene.get("references_agree"):
+            d = ", ".join(f"{100 * x:+.2f}%" for x in scene["reference_mean_difference_rgb"])
+            lines.append(f"| {scene['scene']} | references disagree: {d} |" + " |" * 10)
+            continue
+        for r in scene["spp"]:
+            lines.append(
+                f"| {scene['scene']} | {r['spp']} | {r['clrt_rmse']:.4f} | {r['cycles_rmse']:.4f} | {r['rmse_ratio']:.2f} "
+                f"| {r['clrt_rmse_vs_cycles_ref']:.4f} | {r['cycles_rmse_vs_clrt_ref']:.4f} | {r['clrt_s']:.2f} "
+                f"| {r['cycles_render_s']:.2f} | {r['cycles_process_s']:.2f} | {r['speedup_vs_render']:.2f} "
+                f"| {r['speedup_vs_process']:.2f} |")
+    means = ["", "Reference means, clrt against Cycles (R, G, B): " + "; ".join(
+        f"{s['scene']} " + ", ".join(f"{100 * x:+.2f}%" for x in s["reference_mean_difference_rgb"])
+        for s in record["scenes"])]
+    return "\n".join(lines + means)
+
+
+def main(argv=None):
+    args = parse_args(sys.argv[1:] if argv is None else argv)
+    restart_in_venv(args)
+    if not pathlib.Path(args.clrt).exists():
+        sys.exit(f"race.py: no clrt at {args.clrt} (--clrt or $CLRT)")
+    import bpy
+    scenes = [(name, resolve_scene(name, args.build)) for name in args.scenes]
+    head, dirty = git_commit()
+    record = {
+        "tool": "tools/bench/cycles_race/race.py",
+        "machine": {"cpu": cpu_model(), "cores": os.cpu_count(), "load_before": list(os.getloadavg())},
+        "versions": {"bpy": bpy.app.version_string, "clrt_commit": head, "clrt_tree_dirty": dirty,
+                     "clrt": str(args.clrt), "python": platform.python_version()},
+        "settings": {"resolution": list(args.size), "spp": args.spp, "seeds": args.seeds, "runs": args.runs,
+                     "ref_spp": args.ref_spp, "threads": args.threads, "tolerance": args.tolerance},
+        "scenes": [],
+    }
+    status = 0
+    with tempfile.TemporaryDirectory(prefix="cycles_race-") as tmp:
+        renderers = Renderers(args, pathlib.Path(tmp))
+        try:
+            for label, scene in scenes:
+                result = race_scene(renderers, label, scene, args, pathlib.Path(tmp))
+                record["scenes"].append(result)
+                if not result["references_agree"]:
+                    print(f"race.py: error: {label}: the two references' means differ by more than "
+                          f"{100 * args.tolerance:g}%: the scenes are not matched; stopping", file=sys.stderr)
+                    status = 1
+                    break
+        except clrt_run.RunFailed as e:
+            print(f"race.py: error: a render failed: {e}", file=sys.stderr)
+            record["error"] = str(e)
+            status = 1
+    record["machine"]["load_after"] = list(os.getloadavg())
+    out = args.json or args.build / "tools" / "bench" / "cycles_race" / "race.json"
+    out.parent.mkdir(parents=True, exist_ok=True)
+    out.write_text(json.dumps(record, indent=1) + "\n", encoding="utf-8")
+    print(markdown(record))
+    print(f"\nrecord: {out}; machine: {record['machine']['cpu']}, {record['machine']['cores']} cores, load "
+          f"{record['machine']['load_before'][0]:.2f} before, {record['machine']['load_after'][0]:.2f} after; "
+          f"bpy {record['versions']['bpy']}, clrt {head}{' (tree with uncommitted changes)' if dirty else ''}")
+    return status
+
+
+if __name__ == "__main__":
+    sys.exit(main())
