@@ -331,8 +331,8 @@ def markdown(record):
             continue
         for r in scene["spp"]:
             lines.append(
-                f"| {scene['scene']} | {r['spp']} | {r['clrt_rmse']:.4f} | {r['cycles_rmse']:.4f} | {r['rmse_ratio']:.2f} "
-                f"| {r['clrt_rmse_vs_cycles_ref']:.4f} | {r['cycles_rmse_vs_clrt_ref']:.4f} | {r['clrt_s']:.2f} "
+                f"| {scene['scene']} | {r['spp']} | {r['clrt_rmse']:.4g} | {r['cycles_rmse']:.4g} | {r['rmse_ratio']:.2f} "
+                f"| {r['clrt_rmse_vs_cycles_ref']:.4g} | {r['cycles_rmse_vs_clrt_ref']:.4g} | {r['clrt_s']:.2f} "
                 f"| {r['cycles_render_s']:.2f} | {r['cycles_process_s']:.2f} | {r['speedup_vs_render']:.2f} "
                 f"| {r['speedup_vs_process']:.2f} |")
     means = ["", "Reference means, clrt against Cycles (R, G, B): " + "; ".join(
