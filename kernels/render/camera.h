@@ -8,11 +8,14 @@
 #define CLRT_RENDER_CAMERA_H
 
 #include "common.h"
-#include "random.h"
+#include "sobol.h"
 
-/* One sample goes through the pixel centre; more are stratified with one jitter per cell of
- * the camera's grid. The random stream is keyed by the pixel's place in the whole image, never
- * in the region or the wave, so every region of a frame has the full render's bits. */
+/* The stratified sampler: one sample goes through the pixel centre; more are stratified with one
+ * jitter per cell of the camera's grid, and each ray's stream is a hash of the sample and its
+ * branches. The Sobol sampler (path mode) jitters every sample by its pixel's scrambled Sobol
+ * points, and the ray carries the pixel's stream and the sample's index (render/path_step.h).
+ * Streams are keyed by the pixel's place in the whole image, never in the region or the wave,
+ * so every region of a frame has the full render's bits. */
 CLRT_INLINE Ray wave_camera_ray(const Camera* cam, uint region_x, uint region_y, uint region_width,
                                 uint first_pixel, uint first_sample, uint pixel_samples,
                                 uint index) {
@@ -20,15 +23,18 @@ CLRT_INLINE Ray wave_camera_ray(const Camera* cam, uint region_x, uint region_y,
   const uint k = first_sample + index % pixel_samples;
   const uint x = region_x + in_region % region_width;
   const uint y = region_y + in_region / region_width;
-  const uint path = camera_path(cam->seed, y * cam->width + x, k);
-  const float2 offset = cam->samples == 1
-                            ? (float2)(0.5f, 0.5f)
-                            : stratified(k, cam->grid_u, cam->grid_v, jitter2(path, CLRT_CAMERA_JITTER));
+  const bool sobol = cam->sampler == CLRT_SAMPLER_SOBOL;
+  const uint pixel = y * cam->width + x;
+  const uint path = sobol ? pixel_stream(cam->seed, pixel) : camera_path(cam->seed, pixel, k);
+  const float2 offset =
+      sobol ? sobol_sample(sample_key(path, 0u, CLRT_CAMERA_JITTER), k)
+      : cam->samples == 1 ? (float2)(0.5f, 0.5f)
+                          : stratified(k, cam->grid_u, cam->grid_v, jitter2(path, CLRT_CAMERA_JITTER));
   const float3 dir = xyz(cam->corner) + ((float)x + offset.x) * xyz(cam->pixel_dx) +
                      ((float)y + offset.y) * xyz(cam->pixel_dy);
   Ray ray;
   ray.origin = cam->eye;
-  ray.dir = as_f4(normalize3(dir));
+  ray.dir = (f4)(normalize3(dir), sobol ? (float)k : 0.0f);
   ray.weight = (f4)(1.0f, 1.0f, 1.0f, 0.0f);
   ray.sample = index;
   ray.depth = 0u;

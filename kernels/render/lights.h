@@ -19,10 +19,11 @@ typedef struct LightSample {
   float density;
 } LightSample;
 
-/* Sample j of `light` from point p; `path` is the shading point's random stream. Area lights
- * split their intensity evenly over their stratified samples. The switch names every kind:
- * the host uploads no other (src/render/frame_setup.cpp). */
-CLRT_INLINE LightSample sample_light(__global const Light* light, uint j, float3 p, uint path) {
+/* Sample j of `light` from point p; u is the pair of random numbers that places an area light's
+ * sample in its stratum (light_jitter), unused by the other kinds. Area lights split their
+ * intensity evenly over their stratified samples. The switch names every kind: the host uploads
+ * no other (src/render/frame_setup.cpp). */
+CLRT_INLINE LightSample sample_light(__global const Light* light, uint j, float3 p, float2 u) {
   LightSample s;
   s.intensity = xyz(light->color);
   s.position = xyz(light->position);
@@ -35,8 +36,7 @@ CLRT_INLINE LightSample sample_light(__global const Light* light, uint j, float3
       s.density = 0.0f;
       return s;
     case CLRT_LIGHT_AREA: {
-      const float2 uv = stratified(j, light->grid_u, light->grid_v,
-                                   jitter2(path, light->first_sample + j));
+      const float2 uv = stratified(j, light->grid_u, light->grid_v, u);
       s.position += uv.x * xyz(light->edge_u) + uv.y * xyz(light->edge_v);
       s.intensity /= (float)light->samples;
       break;
@@ -71,5 +71,9 @@ CLRT_INLINE LightSample sample_light(__global const Light* light, uint j, float3
   }
   return s;
 }
+
+/* Whether sample_light reads its random numbers for `light`: only area lights do, so the others
+ * need not draw them. */
+CLRT_INLINE bool light_is_sampled(__global const Light* light) { return light->kind == CLRT_LIGHT_AREA; }
 
 #endif

@@ -6,21 +6,30 @@
  * solid-angle density with which the smooth lobes drew its direction (0 from the camera and
  * after a mirror or glass bounce), which multiple importance sampling needs where the ray
  * crosses an area light; origin.w (after the camera ray) is the product of the refractions'
- * radiance scales along the path, which Russian roulette leaves out. */
+ * radiance scales along the path, which Russian roulette leaves out. Every ray of a path keeps
+ * its pixel's stream (path) and its sample's index (dir.w), from which each vertex draws its
+ * scrambled Sobol samples (render/sobol.h), one pair per use and depth. */
 #ifndef CLRT_RENDER_PATH_STEP_H
 #define CLRT_RENDER_PATH_STEP_H
 
 #include "path_bsdf.h"
 #include "shade_point.h"
+#include "sobol.h"
 #include "whitted_sink.h"
 
-/* Random-stream indices of a vertex's own choices; light samples use 0, 1, ... and the camera
- * jitter 0xffffffff, so no two share numbers. */
+/* The uses of a vertex's own pairs of random numbers: the direction, and the lobe choice (x)
+ * with Russian roulette (y); light samples use 0, 1, ... and the camera jitter 0xffffffff, so
+ * no two share numbers. */
 #define CLRT_PATH_DIRECTION 0xfffffffeu
 #define CLRT_PATH_CHOICE 0xfffffffdu
 
 /* The first vertex depth at which Russian roulette may end a path. */
 #define CLRT_PATH_ROULETTE_DEPTH 2u
+
+/* The ray's pair of random numbers for `use` at its depth. */
+CLRT_INLINE float2 path_sample(const Ray* ray, uint use) {
+  return sobol_sample(sample_key(ray->path, ray->depth, use), (uint)ray->dir.w);
+}
 
 /* Where o + t d with t in (tmin, tmax) crosses the parallelogram of area light `light`: t, or
  * INFINITY when it does not; *cos_light is |cos| between d and the light's normal and *area
@@ -85,14 +94,13 @@ CLRT_INLINE float3 light_estimate(const ShadePoint* sp, const PathLobes* lobes,
   return f * dot3(sp->n, ls->to_light) * ls->intensity * (ls->geometry * w);
 }
 
-/* The direction the path continues in, its weight f cos / pdf (with the lobe choice), the
- * density for MIS, the ray kind and the refraction's radiance scale within the weight (1 unless
- * it refracts); false when the path ends here. */
+/* The direction the path continues in, drawn with the pair u for the direction and x in [0, 1)
+ * for the lobe: its weight f cos / pdf (with the lobe choice), the density for MIS, the ray kind
+ * and the refraction's radiance scale within the weight (1 unless it refracts); false when the
+ * path ends here. */
 CLRT_INLINE bool continue_path(const Ray* ray, const ShadePoint* sp, const PathLobes* lobes,
-                               __global const Material* m, float3* dir, float3* weight, float* pdf,
-                               uint* kind, float* radiance_scale) {
-  const float2 u = jitter2(ray->path, CLRT_PATH_DIRECTION);
-  const float x = jitter2(ray->path, CLRT_PATH_CHOICE).x;
+                               __global const Material* m, float2 u, float x, float3* dir,
+                               float3* weight, float* pdf, uint* kind, float* radiance_scale) {
   const float3 d = xyz(ray->dir);
   *pdf = 0.0f;
   *kind = CLRT_RAY_REFLECTION;
@@ -148,7 +156,9 @@ CLRT_INLINE float3 path_step(const Ray* ray, const Hit* hit, __global const Mate
     for (uint l = 0; l < params->light_count; ++l) {
       __global const Light* light = &lights[l];
       for (uint j = 0; j < light->samples; ++j) {
-        const LightSample ls = sample_light(light, j, sp.p, ray->path);
+        const uint use = light->first_sample + j;
+        const LightSample ls = sample_light(light, j, sp.p,
+                                            light_is_sampled(light) ? path_sample(ray, use) : (float2)(0.0f));
         const float3 term = beta * light_estimate(&sp, &lobes, light, &ls);
         if (all(term == (float3)(0.0f))) continue;
         const ShadowRay sr = shadow_ray_to(&sp, &ls, term, owner, params->epsilon);
@@ -159,23 +169,29 @@ CLRT_INLINE float3 path_step(const Ray* ray, const Hit* hit, __global const Mate
   float3 dir, weight;
   float pdf, radiance_scale;
   uint kind;
-  if (!continue_path(ray, &sp, &lobes, m, &dir, &weight, &pdf, &kind, &radiance_scale)) return c;
+  const float2 choice = path_sample(ray, CLRT_PATH_CHOICE);
+  if (!continue_path(ray, &sp, &lobes, m, path_sample(ray, CLRT_PATH_DIRECTION), choice.x, &dir,
+                     &weight, &pdf, &kind, &radiance_scale))
+    return c;
   float3 throughput = beta * weight;
   /* The refractions' radiance scales so far (origin.w of a path's rays; a camera ray's is 1):
    * roulette ignores them, or a path in glass, cut down to 1/ior^2 on the way in, would be
    * rouletted and then multiplied by ior^2 on the way out (pbrt-v4 does the same). */
   const float scale = (ray->depth == 0u ? 1.0f : ray->origin.w) * radiance_scale;
-  /* Russian roulette from the third vertex on: a path keeps going with probability min(1, its
-   * largest channel). Sparing the first two keeps one-bounce light (and a furnace test) free of
-   * roulette noise. */
+  /* Russian roulette from the third vertex on: a path keeps going with probability min(1, the
+   * square root of its largest channel), as Cycles does: gentler than the channel itself, whose
+   * cuts added noise at equal samples. Sparing the first two keeps one-bounce light (and a
+   * furnace test) free of roulette noise. */
   const float keep =
-      ray->depth < CLRT_PATH_ROULETTE_DEPTH ? 1.0f : fmin(1.0f, max3(throughput) / scale);
+      ray->depth < CLRT_PATH_ROULETTE_DEPTH ? 1.0f : fmin(1.0f, sqrt(max3(throughput) / scale));
   if (keep < 1.0f) {
-    if (!(jitter2(ray->path, CLRT_PATH_CHOICE).y < keep)) return c;
+    if (!(choice.y < keep)) return c;
     throughput /= keep;
   }
   Ray next = child_ray(ray, offset_origin(sp.p, sp.ng, dir, params->epsilon), dir, 1.0f,
                        CLRT_BRANCH_REFLECT, kind);
+  next.dir.w = ray->dir.w;
+  next.path = ray->path;
   next.origin.w = scale;
   next.weight = (f4)(throughput, pdf);
   sink_child(sink, CLRT_SPAWN_REFLECTION, &next);

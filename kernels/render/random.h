@@ -18,9 +18,12 @@ CLRT_INLINE uint hash_combine(uint a, uint b) {
 /* Uniform in [0, 1) from the top 24 bits: exactly representable floats. */
 CLRT_INLINE float uniform_float(uint h) { return (float)(h >> 8) * (1.0f / 16777216.0f); }
 
+/* The random stream of a pixel: (seed, pixel). */
+CLRT_INLINE uint pixel_stream(uint seed, uint pixel) { return hash_combine(hash_u32(seed), pixel); }
+
 /* The random stream of a camera ray: (seed, pixel, sample). */
 CLRT_INLINE uint camera_path(uint seed, uint pixel, uint sample) {
-  return hash_combine(hash_combine(hash_u32(seed), pixel), sample);
+  return hash_combine(pixel_stream(seed, pixel), sample);
 }
 
 #define CLRT_BRANCH_REFLECT 1u

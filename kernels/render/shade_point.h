@@ -56,7 +56,8 @@ CLRT_INLINE float3 ambient_colour(const ShadePoint* s, __global const Material* 
  * (a resumable cursor over both, tried first, ran forever now and then on Intel's CPU runtime). */
 CLRT_INLINE float3 light_term(const ShadePoint* s, __global const Material* materials,
                               __global const Light* light, uint j, uint path, LightSample* sample) {
-  *sample = sample_light(light, j, s->p, path);
+  const float2 u = light_is_sampled(light) ? jitter2(path, light->first_sample + j) : (float2)(0.0f);
+  *sample = sample_light(light, j, s->p, u);
   return s->base * direct_term(&materials[s->material], s->n, s->v, sample->to_light,
                                sample->intensity);
 }

@@ -27,12 +27,14 @@ CLRT_SHARED_BEGIN
 typedef struct Ray {
   f4 origin;  /* xyz, already offset from the surface it leaves; w: in path mode, see
                * render/path_step.h, else 0 */
-  f4 dir;     /* xyz unit direction; w unused */
+  f4 dir;     /* xyz unit direction; w: in path mode the camera sample's index within its pixel
+               * (exact as a float: at most 65535), which its Sobol samples need, else 0 */
   f4 weight;  /* rgb share of the sample's colour this ray carries; w: in path mode the density
                * its direction was drawn with (render/path_step.h), else 0 */
   u32 sample; /* camera sample index within the current wave */
   u32 depth;  /* 0 for camera rays */
-  u32 path;   /* hash of the branch choices since the camera ray: seeds this ray's random numbers */
+  u32 path;   /* seeds this ray's random numbers: the hash of the branch choices since the camera
+               * ray; in path mode the pixel's stream, the same for all of a pixel's rays */
   u32 kind;   /* CLRT_RAY_* */
 } Ray;
 CLRT_CHECK_SIZE(Ray, 64);

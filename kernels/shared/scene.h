@@ -5,6 +5,10 @@
 
 CLRT_SHARED_BEGIN
 
+/* How camera samples, and the random numbers of the rays that follow them, are drawn. */
+#define CLRT_SAMPLER_STRATIFIED 0u /* Whitted modes: a jittered grid, hashed streams */
+#define CLRT_SAMPLER_SOBOL 1u      /* path mode: scrambled Sobol samples (render/sobol.h) */
+
 typedef struct Camera {
   f4 eye;       /* xyz; w unused */
   f4 corner;    /* direction (not unit) through the top-left corner of pixel (0, 0); w unused */
@@ -14,7 +18,8 @@ typedef struct Camera {
   u32 samples;          /* camera samples per pixel */
   u32 grid_u, grid_v;   /* stratification grid: grid_u * grid_v == samples */
   u32 seed;
-  u32 pad[2];
+  u32 sampler;          /* CLRT_SAMPLER_* */
+  u32 pad;
 } Camera;
 CLRT_CHECK_SIZE(Camera, 96);
 

@@ -43,7 +43,9 @@ __kernel void sample_lobes(__global const Material* material, float4 normal, flo
   float3 dir, weight;
   float pdf, scale;
   uint kind;
-  const bool goes_on = continue_path(&ray, &sp, &lobes, material, &dir, &weight, &pdf, &kind, &scale);
+  const float2 choice = path_sample(&ray, CLRT_PATH_CHOICE);
+  const bool goes_on = continue_path(&ray, &sp, &lobes, material, path_sample(&ray, CLRT_PATH_DIRECTION),
+                                     choice.x, &dir, &weight, &pdf, &kind, &scale);
   directions[i] = (float4)(dir, goes_on ? (float)kind : -1.0f);
   weights[i] = (float4)(weight, pdf);
 }

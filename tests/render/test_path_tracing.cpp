@@ -1,6 +1,6 @@
 // Path mode against physics: white furnaces (a closed energy balance that must come out exactly,
-// sample by sample) and convergence (the error against a long render falls as N^-1/2; a plateau
-// would mean bias, a steeper fall correlated samples).
+// sample by sample), closed forms, and convergence (the error against a long render falls at
+// least as N^-1/2; a plateau would mean bias).
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -120,8 +120,14 @@ TEST_CASE("the error against a long render falls as one over the root of the sam
     sxy += x[i] * y[i];
   }
   const double slope = (n * sxy - sx * sy) / (n * sxx - sx * sx);
-  INFO("log-log slope " << slope);
-  CHECK(slope == Approx(-0.5).margin(0.05));
+  const double last = (y.back() - y[y.size() - 2]) / (x.back() - x[x.size() - 2]);
+  INFO("log-log slope " << slope << ", from 256 to 1024 samples " << last);
+  // Independent samples fall as N^-1/2; Sobol samples, stratified in every pair of dimensions
+  // they use, fall faster where the integrand is smooth (measured: -0.60). Slower than -0.45
+  // would be a bias, and a flat end above all: the error stops falling.
+  CHECK(slope <= -0.45);
+  CHECK(slope >= -0.8);
+  CHECK(last <= -0.4);
 }
 
 namespace {

@@ -43,18 +43,22 @@ class NormalisedPhong(mi.BSDF):
             return 0.0, 0.0
         lobe = self._cos_n(si.wi, wo)
         n = self.exponent
-        return (self.weight * (n + 2) / (2 * math.pi) * lobe * wo.z,
-                (n + 1) / (2 * math.pi) * lobe)
+        # Exponent 0 is 1 / pi over the hemisphere, a Lambertian lobe, drawn by cosine as clrt does.
+        pdf = wo.z / math.pi if n == 0 else (n + 1) / (2 * math.pi) * lobe
+        return self.weight * (n + 2) / (2 * math.pi) * lobe * wo.z, pdf
 
     def sample(self, ctx, si, sample1, sample2, active=True):
         bs = mi.BSDFSample3f()
         if si.wi.z <= 0 or not ctx.is_enabled(mi.BSDFFlags.GlossyReflection):
             return bs, mi.Color3f(0.0)
-        cos_alpha = sample2[0] ** (1.0 / (self.exponent + 1))
-        sin_alpha = math.sqrt(max(0.0, 1.0 - cos_alpha * cos_alpha))
-        phi = 2 * math.pi * sample2[1]
-        local = mi.Vector3f(sin_alpha * math.cos(phi), sin_alpha * math.sin(phi), cos_alpha)
-        wo = mi.Frame3f(_mirror(si.wi)).to_world(local)
+        if self.exponent == 0:
+            wo = mi.warp.square_to_cosine_hemisphere(sample2)
+        else:
+            cos_alpha = sample2[0] ** (1.0 / (self.exponent + 1))
+            sin_alpha = math.sqrt(max(0.0, 1.0 - cos_alpha * cos_alpha))
+            phi = 2 * math.pi * sample2[1]
+            local = mi.Vector3f(sin_alpha * math.cos(phi), sin_alpha * math.sin(phi), cos_alpha)
+            wo = mi.Frame3f(_mirror(si.wi)).to_world(local)
         value, pdf = self._value_pdf(si, wo)
         if pdf <= 0:
             return bs, mi.Color3f(0.0)
