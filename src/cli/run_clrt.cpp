@@ -18,6 +18,7 @@
 #include "image/fsf_animation.hpp"
 #include "cli/image_write_options.hpp"
 #include "cli/out_of_memory.hpp"
+#include "cli/picture_options.hpp"
 #include "cli/preview_window.hpp"
 #include "image/output_target.hpp"
 #include "render/frame_setup.hpp"
@@ -60,6 +61,7 @@ ImageOutput resolve_image_output(const CliOptions& cli, const FramePlan& frames)
   try {
     if (cli.no_write) return {"", cli.format.value_or(ImageFormat::Png)};
     output = resolve_output(output_path(cli), cli.format);
+    check_picture_output(cli, output);
     if (output.is_stdout()) {
       if (frames.count() > 1 && output.format != ImageFormat::Fsf)
         throw UsageError("several frames go to standard output only as FSF (--format fsf)");
@@ -149,12 +151,14 @@ int render_frames(const CliOptions& cli, Scene& scene, const FramePlan& frames,
       cli.preview ? open_preview(region, progress) : nullptr;
   Renderer renderer(scene, built_geometry(scene, progress), setup, std::move(devices.prepared),
                     &progress);
-  const bool eight_bit = !holds_floats(output.format);
+  const DisplayTransform display = display_transform(cli, setup.options.mode);
+  // With a transform beyond the contract's quantisation the writer needs the floats.
+  const bool eight_bit = renders_bytes(output, display);
   std::unique_ptr<FsfAnimationWriter> animation;
   if (frames.animated && output.format == ImageFormat::Fsf && !writes_nothing(output))
     animation = std::make_unique<FsfAnimationWriter>(output, static_cast<int>(region.width),
                                                      static_cast<int>(region.height),
-                                                     frames.count());
+                                                     frames.count(), display);
   const std::string size = std::to_string(region.width) + "x" + std::to_string(region.height);
   if (frames.animated) progress.frames(frames.count());
   for (std::uint32_t frame = frames.first; frame <= frames.last; ++frame) {
@@ -174,7 +178,7 @@ int render_frames(const CliOptions& cli, Scene& scene, const FramePlan& frames,
             animation->add_frame(pixels);
           else if (!writes_nothing(output))
             write_image(frame_output(output, frames, frame), pixels,
-                        image_write_options(cli.exr_pixel, "clrt"));
+                        image_write_options(cli.exr_pixel, display, "clrt"));
         },
         image);
     stats.write_seconds += seconds_since(write_start);

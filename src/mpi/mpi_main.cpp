@@ -11,6 +11,7 @@
 #include "cli/heap_policy.hpp"
 #include "cli/image_write_options.hpp"
 #include "cli/options.hpp"
+#include "cli/picture_options.hpp"
 #include "cli/run_clrt.hpp"
 #include "image/interrupt_cleanup.hpp"
 #include "mpi/mpi_options.hpp"
@@ -93,8 +94,9 @@ int run(const mpi::Session& session, const CliOptions& cli, const mpi::TileSize&
   if (!all_went_well(session, mine, status, progress)) return status;
 
   const PixelRect region = render_region(setup.options);
+  const DisplayTransform display = display_transform(cli, setup.options.mode);
   // Only rank 0 knows the output: the tiles travel in the pixels it needs.
-  std::string eight_bit_flag = holds_floats(output.format) ? "0" : "1";
+  std::string eight_bit_flag = renders_bytes(output, display) ? "1" : "0";
   session.broadcast(eight_bit_flag);
   const bool eight_bit = eight_bit_flag == "1";
   progress.start("rendering", region.pixel_count());
@@ -116,7 +118,7 @@ int run(const mpi::Session& session, const CliOptions& cli, const mpi::TileSize&
             pixels.placement = Placement{static_cast<int>(region.x), static_cast<int>(region.y),
                                          setup.options.width, setup.options.height};
           if (!writes_nothing(output))
-            write_image(output, pixels, image_write_options(cli.exr_pixel, "clrt-mpi"));
+            write_image(output, pixels, image_write_options(cli.exr_pixel, display, "clrt-mpi"));
         },
         image);
   });
