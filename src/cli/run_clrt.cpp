@@ -16,6 +16,7 @@
 #include "device/device_select.hpp"
 #include "geometry/geometry_data.hpp"
 #include "image/fsf_animation.hpp"
+#include "cli/dark_scene_note.hpp"
 #include "cli/image_write_options.hpp"
 #include "cli/out_of_memory.hpp"
 #include "cli/picture_options.hpp"
@@ -143,8 +144,11 @@ int render_frames(const CliOptions& cli, Scene& scene, const FramePlan& frames,
                   const ImageOutput& output, RenderStats& stats, Progress& progress,
                   Devices& devices, Clock::time_point start) {
   const RenderSetup setup = checked_render_setup(cli, scene, devices.entries);
-  if (!cli.quiet)
+  if (!cli.quiet) {
     for (const DeviceEntry& d : setup.devices) progress.message(device_line(d));
+    if (const auto note = dark_scene_note(scene, setup.options.mode))
+      progress.message("clrt: note: " + cli.scene + ": " + *note);
+  }
   const PixelRect region = render_region(setup.options);
   check_output_space(output, frames, region);
   const std::unique_ptr<PreviewWindow> preview =

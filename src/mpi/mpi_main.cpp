@@ -9,6 +9,7 @@
 #include <optional>
 
 #include "cli/heap_policy.hpp"
+#include "cli/dark_scene_note.hpp"
 #include "cli/image_write_options.hpp"
 #include "cli/options.hpp"
 #include "cli/picture_options.hpp"
@@ -95,6 +96,9 @@ int run(const mpi::Session& session, const CliOptions& cli, const mpi::TileSize&
 
   const PixelRect region = render_region(setup.options);
   const DisplayTransform display = display_transform(cli, setup.options.mode);
+  if (session.first() && !cli.quiet)
+    if (const auto note = dark_scene_note(scene, setup.options.mode))
+      progress.message("clrt-mpi: note: " + cli.scene + ": " + *note);
   // Only rank 0 knows the output: the tiles travel in the pixels it needs.
   std::string eight_bit_flag = renders_bytes(output, display) ? "1" : "0";
   session.broadcast(eight_bit_flag);

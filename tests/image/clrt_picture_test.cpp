@@ -140,3 +140,22 @@ TEST_CASE("the picture options' usage errors", "[cli][picture]") {
   CHECK_THAT(clamp.err, Contains("--max-sample-value: 0 is not above 0"));
   CHECK(clrt_run(dir, scene + "--max-sample-value 10 -q -o none").status == 0);
 }
+
+TEST_CASE("a Whitted scene in path mode gets one note that the image may be dark",
+          "[cli][picture]") {
+  ScratchDir dir;
+  const std::string small = " --resolution 8x8 --spp 1 -o none";
+  const ToolResult path = clrt_run(dir, kLightsPoint + small + " --mode path");
+  CHECK(path.status == 0);
+  CHECK_THAT(path.err, Contains("clrt: note: " + std::string(CLRT_SOURCE_DIR) +
+                                "/scenes/lights-point.ray: in path mode ambient light is not "
+                                "used and point and spot lights fall off with distance (1/d^2)"));
+  CHECK_THAT(path.err, Contains("the image may be dark"));
+  const std::size_t first = path.err.find("clrt: note:");
+  CHECK(path.err.find("clrt: note:", first + 1) == std::string::npos);
+  CHECK(clrt_run(dir, kLightsPoint + small + " --mode path -q").err.empty());
+  CHECK_THAT(clrt_run(dir, kLightsPoint + small).err, !Contains("note:"));
+  // An area light, or a background bright enough to light the scene: no note.
+  CHECK_THAT(clrt_run(dir, kCornell + small + " --mode path").err, !Contains("note:"));
+  CHECK_THAT(clrt_run(dir, kTest2 + small + " --mode path").err, !Contains("note:"));
+}
