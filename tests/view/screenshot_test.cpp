@@ -196,6 +196,8 @@ TEST_CASE("clrt-view's keys, sent through the X server, flip, show the differenc
       {XK_Tab, [](ViewState& s) { s.flipped = Picture::B; }},
       {XK_g, [](ViewState& s) { s.tone.gamma = kDisplayGamma; }},
       {XK_equal, [](ViewState& s) { s.tone.exposure = kExposureStep; }},
+      {XK_e, [](ViewState& s) { s.tone.srgb = true; }},
+      {XK_f, [](ViewState& s) { s.tone.curve = ToneCurve::Filmic; }},
       {XK_d, [](ViewState& s) { s.show_difference = true; }},
       {XK_s, [](ViewState& s) { s.side_by_side = true; }},
   };
