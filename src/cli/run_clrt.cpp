@@ -133,9 +133,11 @@ struct Devices {
 };
 
 // --preview's window, or a warning and nothing: the render goes on without it.
-std::unique_ptr<PreviewWindow> open_preview(const PixelRect& region, Progress& progress) {
+std::unique_ptr<PreviewWindow> open_preview(const PixelRect& region,
+                                            const DisplayTransform& display, Progress& progress) {
   std::string why;
-  std::unique_ptr<PreviewWindow> window = PreviewWindow::open(region.width, region.height, why);
+  std::unique_ptr<PreviewWindow> window =
+      PreviewWindow::open(region.width, region.height, display, why);
   if (!window) progress.message("clrt: warning: --preview: " + why + "; rendering without it");
   return window;
 }
@@ -151,11 +153,11 @@ int render_frames(const CliOptions& cli, Scene& scene, const FramePlan& frames,
   }
   const PixelRect region = render_region(setup.options);
   check_output_space(output, frames, region);
+  const DisplayTransform display = display_transform(cli, setup.options.mode);
   const std::unique_ptr<PreviewWindow> preview =
-      cli.preview ? open_preview(region, progress) : nullptr;
+      cli.preview ? open_preview(region, display, progress) : nullptr;
   Renderer renderer(scene, built_geometry(scene, progress), setup, std::move(devices.prepared),
                     &progress);
-  const DisplayTransform display = display_transform(cli, setup.options.mode);
   // With a transform beyond the contract's quantisation the writer needs the floats.
   const bool eight_bit = renders_bytes(output, display);
   std::unique_ptr<FsfAnimationWriter> animation;

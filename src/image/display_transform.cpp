@@ -50,6 +50,12 @@ std::vector<std::string> tone_curve_names() {
   return names;
 }
 
+std::string tone_curve_name(ToneCurve curve) {
+  for (const auto& [name, known] : kCurveNames)
+    if (curve == known) return name;
+  return "clamp";
+}
+
 std::optional<ToneCurve> tone_curve_from_name(const std::string& name) {
   for (const auto& [known, curve] : kCurveNames)
     if (name == known) return curve;

@@ -42,6 +42,7 @@ std::uint8_t display_byte(float linear, const DisplayTransform& display);
 
 // The words the tools take for the curves: clamp, filmic.
 std::vector<std::string> tone_curve_names();
+std::string tone_curve_name(ToneCurve curve);
 std::optional<ToneCurve> tone_curve_from_name(const std::string& name);
 
 }  // namespace clrt
