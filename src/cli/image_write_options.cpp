@@ -4,8 +4,10 @@
 
 namespace clrt {
 
-WriteOptions image_write_options(ExrPixel exr_pixel, const std::string& program) {
+WriteOptions image_write_options(ExrPixel exr_pixel, const DisplayTransform& display,
+                                 const std::string& program) {
   WriteOptions options{exr_pixel};
+  options.display = display;
   options.warn = [program](const std::string& message) {
     std::cerr << program << ": warning: " << message << "\n";
   };

@@ -10,6 +10,7 @@
 
 #include "cli/argument_words.hpp"
 #include "cli/decimal_number.hpp"
+#include "cli/picture_options.hpp"
 #include "cli/tool_command_line.hpp"
 #include "cli/whole_number.hpp"
 #include "math/number_fields.hpp"
@@ -49,6 +50,7 @@ void add_output_options(CLI::App& app, CliOptions& o) {
          },
          "EXR channels: half (default) or float")
       ->check(CLI::IsMember({"half", "float"}, CLI::ignore_case));
+  add_picture_options(app, o);
 }
 
 void add_image_options(CLI::App& app, CliOptions& o) {
@@ -86,6 +88,10 @@ void add_shading_options(CLI::App& app, CliOptions& o) {
          "trace (Whitted: shadows, reflection, refraction), cast (local shading only) or path "
          "(Monte Carlo path tracing: indirect light, docs/path-tracing.md)")
       ->check(CLI::IsMember(modes, CLI::ignore_case));
+  app.add_option("--max-sample-value", o.max_sample_value,
+                 "clamp each channel of every camera sample to at most this before samples are "
+                 "averaged: fewer fireflies, a biased image (default: no clamp)")
+      ->check(positive_decimal_number());
   app.add_option("--seed", o.seed, "seed of the random numbers (jitter, area lights)")
       ->transform(seed_number())
       ->capture_default_str();
@@ -206,6 +212,7 @@ RenderOptions resolve_render_options(const CliOptions& cli, const Scene& scene) 
   if (cli.samples) r.samples = *cli.samples;
   if (cli.max_depth) r.max_depth = *cli.max_depth;
   if (cli.mode) r.mode = *cli.mode;
+  if (cli.max_sample_value) r.max_sample_value = static_cast<float>(*cli.max_sample_value);
   r.seed = cli.seed;
   r.wavefront = cli.wavefront;
   r.local_size = cli.local_size;

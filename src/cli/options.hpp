@@ -26,6 +26,9 @@ struct CliOptions {
   bool no_write = false;  // --no-write or -o none: render and report, write nothing
   std::optional<ImageFormat> format;    // --format: the output's format, else its extension
   ExrPixel exr_pixel = ExrPixel::Half;  // --exr-pixel
+  double exposure = 0;                  // --exposure: stops, for 8-bit outputs
+  ToneCurve tonemap = ToneCurve::Clamp;  // --tonemap: the curve of 8-bit outputs
+  std::optional<double> max_sample_value;  // --max-sample-value: the firefly clamp
   std::optional<int> width, height, samples, max_depth;
   std::optional<RenderMode> mode;
   std::uint32_t seed = 0;

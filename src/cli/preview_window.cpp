@@ -8,6 +8,7 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <vector>
@@ -31,6 +32,7 @@ std::string viewer_path() {
 }
 
 std::unique_ptr<PreviewWindow> PreviewWindow::open(std::uint32_t width, std::uint32_t height,
+                                                   const DisplayTransform& display,
                                                    std::string& why) {
   const std::string viewer = viewer_path();
   if (access(viewer.c_str(), X_OK) != 0) {
@@ -45,8 +47,15 @@ std::unique_ptr<PreviewWindow> PreviewWindow::open(std::uint32_t width, std::uin
   posix_spawn_file_actions_t actions;
   posix_spawn_file_actions_init(&actions);
   posix_spawn_file_actions_adddup2(&actions, ends[1], 0);
-  std::vector<char*> argv = {const_cast<char*>(viewer.c_str()), const_cast<char*>("--preview"),
-                             nullptr};
+  // One word with "=", so that a negative exposure is not taken for an option.
+  char exposure[48];
+  std::snprintf(exposure, sizeof exposure, "--exposure=%.17g", display.exposure);
+  std::vector<std::string> args = {viewer, "--preview", exposure, "--tonemap",
+                                   tone_curve_name(display.curve)};
+  if (display.srgb) args.emplace_back("--srgb");
+  std::vector<char*> argv;
+  for (std::string& arg : args) argv.push_back(arg.data());
+  argv.push_back(nullptr);
   pid_t pid = -1;
   const int spawned = posix_spawn(&pid, viewer.c_str(), &actions, nullptr, argv.data(), environ);
   posix_spawn_file_actions_destroy(&actions);

@@ -9,16 +9,18 @@
 #include <mutex>
 #include <string>
 
+#include "image/display_transform.hpp"
 #include "render/pixel_store.hpp"
 
 namespace clrt {
 
 class PreviewWindow final : public PixelStore {
  public:
-  // Starts clrt-view and waits until its window is open. Nothing when that fails: `why` then
-  // says what happened (no clrt-view beside clrt, no display), and the render goes on without.
+  // Starts clrt-view and waits until its window is open; it shows the pixels through `display`,
+  // as the 8-bit file is written. Nothing when that fails: `why` then says what happened (no
+  // clrt-view beside clrt, no display), and the render goes on without.
   static std::unique_ptr<PreviewWindow> open(std::uint32_t width, std::uint32_t height,
-                                             std::string& why);
+                                             const DisplayTransform& display, std::string& why);
   ~PreviewWindow() override;  // ends the stream; the window stays open for the user
   PreviewWindow(const PreviewWindow&) = delete;
   PreviewWindow& operator=(const PreviewWindow&) = delete;

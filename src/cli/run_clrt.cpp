@@ -16,8 +16,10 @@
 #include "device/device_select.hpp"
 #include "geometry/geometry_data.hpp"
 #include "image/fsf_animation.hpp"
+#include "cli/dark_scene_note.hpp"
 #include "cli/image_write_options.hpp"
 #include "cli/out_of_memory.hpp"
+#include "cli/picture_options.hpp"
 #include "cli/preview_window.hpp"
 #include "image/output_target.hpp"
 #include "render/frame_setup.hpp"
@@ -60,6 +62,7 @@ ImageOutput resolve_image_output(const CliOptions& cli, const FramePlan& frames)
   try {
     if (cli.no_write) return {"", cli.format.value_or(ImageFormat::Png)};
     output = resolve_output(output_path(cli), cli.format);
+    check_picture_output(cli, output);
     if (output.is_stdout()) {
       if (frames.count() > 1 && output.format != ImageFormat::Fsf)
         throw UsageError("several frames go to standard output only as FSF (--format fsf)");
@@ -130,9 +133,11 @@ struct Devices {
 };
 
 // --preview's window, or a warning and nothing: the render goes on without it.
-std::unique_ptr<PreviewWindow> open_preview(const PixelRect& region, Progress& progress) {
+std::unique_ptr<PreviewWindow> open_preview(const PixelRect& region,
+                                            const DisplayTransform& display, Progress& progress) {
   std::string why;
-  std::unique_ptr<PreviewWindow> window = PreviewWindow::open(region.width, region.height, why);
+  std::unique_ptr<PreviewWindow> window =
+      PreviewWindow::open(region.width, region.height, display, why);
   if (!window) progress.message("clrt: warning: --preview: " + why + "; rendering without it");
   return window;
 }
@@ -141,20 +146,25 @@ int render_frames(const CliOptions& cli, Scene& scene, const FramePlan& frames,
                   const ImageOutput& output, RenderStats& stats, Progress& progress,
                   Devices& devices, Clock::time_point start) {
   const RenderSetup setup = checked_render_setup(cli, scene, devices.entries);
-  if (!cli.quiet)
+  if (!cli.quiet) {
     for (const DeviceEntry& d : setup.devices) progress.message(device_line(d));
+    if (const auto note = dark_scene_note(scene, setup.options.mode))
+      progress.message("clrt: note: " + cli.scene + ": " + *note);
+  }
   const PixelRect region = render_region(setup.options);
   check_output_space(output, frames, region);
+  const DisplayTransform display = display_transform(cli, setup.options.mode);
   const std::unique_ptr<PreviewWindow> preview =
-      cli.preview ? open_preview(region, progress) : nullptr;
+      cli.preview ? open_preview(region, display, progress) : nullptr;
   Renderer renderer(scene, built_geometry(scene, progress), setup, std::move(devices.prepared),
                     &progress);
-  const bool eight_bit = !holds_floats(output.format);
+  // With a transform beyond the contract's quantisation the writer needs the floats.
+  const bool eight_bit = renders_bytes(output, display);
   std::unique_ptr<FsfAnimationWriter> animation;
   if (frames.animated && output.format == ImageFormat::Fsf && !writes_nothing(output))
     animation = std::make_unique<FsfAnimationWriter>(output, static_cast<int>(region.width),
                                                      static_cast<int>(region.height),
-                                                     frames.count());
+                                                     frames.count(), display);
   const std::string size = std::to_string(region.width) + "x" + std::to_string(region.height);
   if (frames.animated) progress.frames(frames.count());
   for (std::uint32_t frame = frames.first; frame <= frames.last; ++frame) {
@@ -174,7 +184,7 @@ int render_frames(const CliOptions& cli, Scene& scene, const FramePlan& frames,
             animation->add_frame(pixels);
           else if (!writes_nothing(output))
             write_image(frame_output(output, frames, frame), pixels,
-                        image_write_options(cli.exr_pixel, "clrt"));
+                        image_write_options(cli.exr_pixel, display, "clrt"));
         },
         image);
     stats.write_seconds += seconds_since(write_start);

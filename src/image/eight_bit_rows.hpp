@@ -1,17 +1,20 @@
 // 8-bit rows for the PNG, PPM and FSF writers, from either kind of image, one row at a time: a
-// float image is quantised row by row into a scratch row, never copied whole.
+// float image goes through its display transform and is quantised row by row into a scratch
+// row, never copied whole; an 8-bit image's bytes are written as they are.
 #pragma once
 
 #include <cstddef>
 #include <cstdint>
 
+#include "image/display_transform.hpp"
 #include "image/image.hpp"
 
 namespace clrt::image_detail {
 
 class EightBitRows {
  public:
-  explicit EightBitRows(const FloatImage& image) : float_(&image) {}
+  explicit EightBitRows(const FloatImage& image, const DisplayTransform& display = {})
+      : float_(&image), display_(display) {}
   explicit EightBitRows(const Rgba8Image& image) : rgba_(&image) {}
 
   int width() const { return float_ ? float_->width : rgba_->width; }
@@ -31,6 +34,7 @@ class EightBitRows {
  private:
   const FloatImage* float_ = nullptr;
   const Rgba8Image* rgba_ = nullptr;
+  DisplayTransform display_;
 };
 
 // The contract's quantisation of one channel (see quantize()).

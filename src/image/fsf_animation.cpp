@@ -7,8 +7,9 @@
 namespace clrt {
 
 FsfAnimationWriter::FsfAnimationWriter(const ImageOutput& output, int width, int height,
-                                       std::uint32_t frames)
+                                       std::uint32_t frames, const DisplayTransform& display)
     : name_(output.is_stdout() ? "standard output" : output.path),
+      display_(display),
       width_(width),
       height_(height),
       frames_(frames) {
@@ -21,7 +22,7 @@ FsfAnimationWriter::FsfAnimationWriter(const ImageOutput& output, int width, int
 FsfAnimationWriter::~FsfAnimationWriter() = default;
 
 void FsfAnimationWriter::add_frame(const FloatImage& frame) {
-  add_rows(image_detail::EightBitRows(frame));
+  add_rows(image_detail::EightBitRows(frame, display_));
 }
 
 void FsfAnimationWriter::add_frame(const Rgba8Image& frame) {

@@ -17,8 +17,10 @@ class EightBitRows;
 class FsfAnimationWriter {
  public:
   // A file is written to a temporary and put in place by finish(); standard output is written
-  // as frames come. Throws ImageError for an output that cannot be opened.
-  FsfAnimationWriter(const ImageOutput& output, int width, int height, std::uint32_t frames);
+  // as frames come. Float frames go through `display`. Throws ImageError for an output that
+  // cannot be opened.
+  FsfAnimationWriter(const ImageOutput& output, int width, int height, std::uint32_t frames,
+                     const DisplayTransform& display = {});
   ~FsfAnimationWriter();
 
   // The next frame; its size must be the animation's.
@@ -32,6 +34,7 @@ class FsfAnimationWriter {
 
   std::unique_ptr<image_detail::ByteSink> sink_;
   std::string name_;
+  DisplayTransform display_;
   int width_, height_;
   std::uint32_t frames_, written_ = 0;
 };

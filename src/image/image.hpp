@@ -9,6 +9,7 @@
 #include <variant>
 #include <vector>
 
+#include "image/display_transform.hpp"
 #include "image/png_encoding.hpp"
 
 namespace clrt {
@@ -57,8 +58,8 @@ class ImageError : public std::runtime_error {
 };
 
 // The contract's quantisation: clamp each channel to [0, 1], scale by 255, round to nearest;
-// alpha 255.
-Rgba8Image quantize(const FloatImage& image);
+// alpha 255. With a display transform, each value goes through it first.
+Rgba8Image quantize(const FloatImage& image, const DisplayTransform& display = {});
 // Frame `frame` as value / 255 per channel (exact in float, and quantize() gives the bytes back);
 // alpha is dropped.
 FloatImage to_float(const Rgba8Image& image, std::size_t frame = 0);
@@ -88,6 +89,9 @@ struct WriteOptions {
 
   ExrPixel exr_pixel;
   PngEncoding png;  // a level outside 0-9 is an ImageError before anything is written
+  // How a float image becomes 8-bit (PNG, PPM, FSF); PFM and EXR keep the floats, and an 8-bit
+  // image's bytes are written as they are.
+  DisplayTransform display;
   // Told, once per image, what its format could not hold ("out.exr: 12 of the 300 samples ...":
   // finite values beyond a half float's range); nothing: not told.
   std::function<void(const std::string&)> warn;

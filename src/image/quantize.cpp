@@ -7,9 +7,9 @@
 
 namespace clrt {
 
-Rgba8Image quantize(const FloatImage& image) {
+Rgba8Image quantize(const FloatImage& image, const DisplayTransform& display) {
   image_detail::check_image(image, "cannot quantize");
-  const image_detail::EightBitRows rows(image);
+  const image_detail::EightBitRows rows(image, display);
   const std::size_t row_bytes = 4 * static_cast<std::size_t>(image.width);
   std::vector<std::uint8_t> rgba(row_bytes * static_cast<std::size_t>(image.height));
   for (int y = 0; y < image.height; ++y)

@@ -16,15 +16,21 @@ using image_detail::EightBitRows;
 const FloatImage& as_float(const FloatImage& image) { return image; }
 FloatImage as_float(const Rgba8Image& image) { return to_float(image); }
 
+// A float image's rows through the display transform; an 8-bit image's bytes as they are.
+EightBitRows rows_of(const FloatImage& image, const WriteOptions& options) {
+  return EightBitRows(image, options.display);
+}
+EightBitRows rows_of(const Rgba8Image& image, const WriteOptions&) { return EightBitRows(image); }
+
 template <typename Image>
 void encode(ImageFormat format, const Image& image, const WriteOptions& options, ByteSink& sink) {
   switch (format) {
     case ImageFormat::Fsf:
-      return image_detail::encode_fsf(EightBitRows(image), sink);
+      return image_detail::encode_fsf(rows_of(image, options), sink);
     case ImageFormat::Png:
-      return image_detail::encode_png(EightBitRows(image), options.png, sink);
+      return image_detail::encode_png(rows_of(image, options), options.png, sink);
     case ImageFormat::Ppm:
-      return image_detail::encode_ppm(EightBitRows(image), sink);
+      return image_detail::encode_ppm(rows_of(image, options), sink);
     case ImageFormat::Pfm:
       return image_detail::encode_pfm(as_float(image), sink);
     case ImageFormat::Exr:

@@ -9,8 +9,10 @@
 #include <optional>
 
 #include "cli/heap_policy.hpp"
+#include "cli/dark_scene_note.hpp"
 #include "cli/image_write_options.hpp"
 #include "cli/options.hpp"
+#include "cli/picture_options.hpp"
 #include "cli/run_clrt.hpp"
 #include "image/interrupt_cleanup.hpp"
 #include "mpi/mpi_options.hpp"
@@ -93,8 +95,12 @@ int run(const mpi::Session& session, const CliOptions& cli, const mpi::TileSize&
   if (!all_went_well(session, mine, status, progress)) return status;
 
   const PixelRect region = render_region(setup.options);
+  const DisplayTransform display = display_transform(cli, setup.options.mode);
+  if (session.first() && !cli.quiet)
+    if (const auto note = dark_scene_note(scene, setup.options.mode))
+      progress.message("clrt-mpi: note: " + cli.scene + ": " + *note);
   // Only rank 0 knows the output: the tiles travel in the pixels it needs.
-  std::string eight_bit_flag = holds_floats(output.format) ? "0" : "1";
+  std::string eight_bit_flag = renders_bytes(output, display) ? "1" : "0";
   session.broadcast(eight_bit_flag);
   const bool eight_bit = eight_bit_flag == "1";
   progress.start("rendering", region.pixel_count());
@@ -116,7 +122,7 @@ int run(const mpi::Session& session, const CliOptions& cli, const mpi::TileSize&
             pixels.placement = Placement{static_cast<int>(region.x), static_cast<int>(region.y),
                                          setup.options.width, setup.options.height};
           if (!writes_nothing(output))
-            write_image(output, pixels, image_write_options(cli.exr_pixel, "clrt-mpi"));
+            write_image(output, pixels, image_write_options(cli.exr_pixel, display, "clrt-mpi"));
         },
         image);
   });

@@ -129,6 +129,44 @@ TEST_CASE("convert: PFM and EXR are read, and float to 8-bit quantises as clrt d
   CHECK(read_bytes(eight_png) == read_bytes(direct));
 }
 
+TEST_CASE("convert: --srgb, --exposure and --tonemap shape a float image's way into 8 bits",
+          "[img][convert][display]") {
+  ScratchDir dir;
+  const std::string pfm = dir.file("r.pfm");
+  clrt::write_image(pfm, kRender);
+  // By hand: sRGB's 1.055 v^(1/2.4) - 0.055 (12.92 v up to 0.0031308), clamped, * 255, rounded.
+  const std::vector<std::uint8_t> srgb{89, 188, 255, 255, 0, 137, 225, 255,
+                                       3,  243, 255, 255, 0, 124, 170, 255};
+  for (const char* name : {"s.png", "s.ppm", "s.fsf", "s.gif"}) {
+    INFO(name);
+    REQUIRE(convert(dir, pfm, dir.file(name), " --srgb").status == 0);
+    if (std::string(name) != "s.gif") CHECK(clrt::read_image(dir.file(name)).frames[0] == srgb);
+  }
+  // Exposure doubles per stop: +1 reads 0.1 as 0.2 (51), 0.25 as 0.5 (128).
+  REQUIRE(convert(dir, pfm, dir.file("e.png"), " --exposure 1").status == 0);
+  const std::vector<std::uint8_t> doubled{51, 255, 255, 255, 0, 128, 255, 255,
+                                          1,  255, 255, 255, 0, 102, 204, 255};
+  CHECK(clrt::read_image(dir.file("e.png")).frames[0] == doubled);
+  // Filmic: 0.5 -> 0.6163 (157), 1.5 -> 0.8768 (224).
+  REQUIRE(convert(dir, pfm, dir.file("f.png"), " --tonemap filmic").status == 0);
+  const clrt::Rgba8Image filmic = clrt::read_image(dir.file("f.png"));
+  CHECK(filmic.frames[0][1] == 157);
+  CHECK(filmic.frames[0][2] == 224);
+  // Without them the conversion keeps the contract's bytes (the case above).
+  REQUIRE(convert(dir, pfm, dir.file("plain.png"), " --tonemap clamp --exposure 0").status == 0);
+  CHECK(clrt::read_image(dir.file("plain.png")).frames == clrt::quantize(kRender).frames);
+
+  const ToolResult eight = convert(dir, dir.file("s.png"), dir.file("t.png"), " --srgb");
+  CHECK(eight.status == 2);
+  CHECK_THAT(eight.err, Contains("holds 8-bit values already"));
+  const ToolResult floats = convert(dir, pfm, dir.file("t.exr"), " --exposure 2");
+  CHECK(floats.status == 2);
+  CHECK_THAT(floats.err, Contains("keeps the floats as they are"));
+  const ToolResult typo = convert(dir, pfm, dir.file("t.png"), " --tonemap filmc");
+  CHECK(typo.status == 2);
+  CHECK_THAT(typo.err, Contains("(did you mean filmic?)"));
+}
+
 TEST_CASE("convert: into a half EXR, samples beyond the largest half are counted in a warning",
           "[img][convert]") {
   ScratchDir dir;

@@ -196,6 +196,8 @@ TEST_CASE("clrt-view's keys, sent through the X server, flip, show the differenc
       {XK_Tab, [](ViewState& s) { s.flipped = Picture::B; }},
       {XK_g, [](ViewState& s) { s.tone.gamma = kDisplayGamma; }},
       {XK_equal, [](ViewState& s) { s.tone.exposure = kExposureStep; }},
+      {XK_e, [](ViewState& s) { s.tone.srgb = true; }},
+      {XK_f, [](ViewState& s) { s.tone.curve = ToneCurve::Filmic; }},
       {XK_d, [](ViewState& s) { s.show_difference = true; }},
       {XK_s, [](ViewState& s) { s.side_by_side = true; }},
   };
@@ -211,17 +213,24 @@ TEST_CASE("clrt --preview shows the render in clrt-view as it fills in, and the 
           "written",
           "[view][screenshot][preview]") {
   if (!XScreen::available()) CLRT_SKIP_TEST("Xvfb is not installed");
+  // The window shows what the file holds, also through path mode's sRGB and the tone options.
+  const std::vector<std::string> picture =
+      GENERATE(std::vector<std::string>{},
+               std::vector<std::string>{"--mode", "path", "--exposure=-0.5", "--tonemap", "filmic"});
   ScratchDir dir;
   const std::string png = dir.file("reflect.png"), plain = dir.file("plain.png");
   const std::string scene = std::string(CLRT_SOURCE_DIR) + "/scenes/reflect.ray";
+  std::vector<std::string> command{CLRT_EXE, scene, "--resolution", "24x18", "-q"};
+  command.insert(command.end(), picture.begin(), picture.end());
   XScreen screen;
   const std::string log = dir.file("clrt.log");
-  const pid_t clrt =
-      screen.start({CLRT_EXE, scene, "--resolution", "24x18", "--preview", "-q", "-o", png}, log);
+  std::vector<std::string> previewed = command;
+  previewed.insert(previewed.end(), {"--preview", "-o", png});
+  const pid_t clrt = screen.start(previewed, log);
   REQUIRE(screen.wait(clrt) == 0);
   CHECK(text_of(log).find("warning") == std::string::npos);
-  const pid_t without = screen.start({CLRT_EXE, scene, "--resolution", "24x18", "-q", "-o", plain},
-                                     dir.file("plain.log"));
+  command.insert(command.end(), {"-o", plain});
+  const pid_t without = screen.start(command, dir.file("plain.log"));
   REQUIRE(screen.wait(without) == 0);
   const std::vector<std::uint8_t> bytes = read_png(png).frames[0];
   CHECK(bytes == read_png(plain).frames[0]);

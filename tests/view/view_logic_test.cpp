@@ -31,13 +31,31 @@ TEST_CASE("tone mapping at exposure 0 and gamma 1 gives the bytes clrt's PNG hol
 }
 
 TEST_CASE("exposure doubles per stop and gamma encodes, worked by hand", "[view][tone]") {
-  CHECK(tone_map_channel(0.25f, {1, 1}) == 128);       // 0.5 * 255 = 127.5, rounded up
-  CHECK(tone_map_channel(0.25f, {-1, 1}) == 32);       // 0.125 * 255 = 31.9
-  CHECK(tone_map_channel(0.5f, {0, 2.2}) == 186);      // 0.5^(1/2.2) = 0.7297
-  CHECK(tone_map_channel(0.25f, {1, 2.2}) == 186);
-  CHECK(tone_map_channel(3.0f, {0, 2.2}) == 255);      // clamped before the power
-  CHECK(tone_map_channel(-0.5f, {2, 2.2}) == 0);
-  CHECK(tone_map_channel(std::nanf(""), {1, 2.2}) == 0);
+  CHECK(display_byte(0.25f, {1, 1}) == 128);       // 0.5 * 255 = 127.5, rounded up
+  CHECK(display_byte(0.25f, {-1, 1}) == 32);       // 0.125 * 255 = 31.9
+  CHECK(display_byte(0.5f, {0, 2.2}) == 186);      // 0.5^(1/2.2) = 0.7297
+  CHECK(display_byte(0.25f, {1, 2.2}) == 186);
+  CHECK(display_byte(3.0f, {0, 2.2}) == 255);      // clamped before the power
+  CHECK(display_byte(-0.5f, {2, 2.2}) == 0);
+  CHECK(display_byte(std::nanf(""), {1, 2.2}) == 0);
+}
+
+TEST_CASE("sRGB and the filmic curve on the screen are the bytes clrt's writers give",
+          "[view][tone]") {
+  const FloatImage image{3, 1, {0.0f, 0.001f, 0.5f, 0.18f, 1.0f, 7.0f, -3.0f, 0.3f, 0.9f}};
+  for (const ToneSettings& tone : {ToneSettings{0, 1, ToneCurve::Clamp, true},
+                                   ToneSettings{1, 1, ToneCurve::Filmic, false},
+                                   ToneSettings{-0.5, 1, ToneCurve::Filmic, true}}) {
+    const Rgba8Image bytes = quantize(image, tone);
+    for (int i = 0; i < 3; ++i) {
+      const std::uint32_t pixel = tone_map_pixel(&image.rgb[3 * i], tone);
+      CHECK((pixel >> 16) == bytes.frames[0][4 * i]);
+      CHECK(((pixel >> 8) & 0xff) == bytes.frames[0][4 * i + 1]);
+      CHECK((pixel & 0xff) == bytes.frames[0][4 * i + 2]);
+    }
+  }
+  CHECK(display_byte(0.5f, {0, 1, ToneCurve::Clamp, true}) == 188);   // 0.7354 * 255
+  CHECK(display_byte(0.5f, {0, 2.2, ToneCurve::Clamp, true}) == 188);  // sRGB, not the gamma
 }
 
 TEST_CASE("layout: one picture, or A and B side by side with their difference, and the pixel "
@@ -99,6 +117,10 @@ TEST_CASE("the readout names the pictures, the frame, the tone and the values un
   state.frame = 1;
   CHECK(readout_text({"turn.fsf", ""}, frames, state, false, std::nullopt) ==
         "turn.fsf | frame 2/3 paused | exposure +0.0 gamma 1.0");
+  state.tone.curve = ToneCurve::Filmic;
+  state.tone.srgb = true;
+  CHECK(readout_text({"turn.fsf", ""}, frames, state, false, std::nullopt) ==
+        "turn.fsf | frame 2/3 paused | exposure +0.0 filmic sRGB");
 }
 
 TEST_CASE("playback advances by the frame rate and loops, a step by hand pauses it",
@@ -126,7 +148,7 @@ TEST_CASE("playback advances by the frame rate and loops, a step by hand pauses 
   CHECK(playback.playing);
 }
 
-TEST_CASE("keys: exposure, gamma, flip, difference, side by side, zoom, quit", "[view][controls]") {
+TEST_CASE("keys: exposure, gamma, sRGB, filmic, flip, difference, side by side, zoom, quit", "[view][controls]") {
   const AnyImage b = kTwoByOne;
   const ViewSources two = make_sources(kTwoByOne, &b), one = make_sources(kTwoByOne, nullptr);
   ViewState state;
@@ -137,8 +159,15 @@ TEST_CASE("keys: exposure, gamma, flip, difference, side by side, zoom, quit", "
   CHECK(state.tone.exposure == kExposureStep);
   apply_key(Key::Gamma, state, playback, two);
   CHECK(state.tone.gamma == kDisplayGamma);
+  apply_key(Key::Srgb, state, playback, two);
+  CHECK(state.tone.srgb);
+  apply_key(Key::Filmic, state, playback, two);
+  CHECK(state.tone.curve == ToneCurve::Filmic);
+  apply_key(Key::Gamma, state, playback, two);  // back to gamma 1, and sRGB off
+  CHECK((state.tone.gamma == 1 && !state.tone.srgb));
+  apply_key(Key::Srgb, state, playback, two);
   apply_key(Key::ExposureReset, state, playback, two);
-  CHECK((state.tone.exposure == 0 && state.tone.gamma == 1));
+  CHECK(state.tone.identity());
   apply_key(Key::Flip, state, playback, two);
   CHECK(state.flipped == Picture::B);
   apply_key(Key::Difference, state, playback, two);

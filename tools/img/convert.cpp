@@ -1,11 +1,13 @@
 // clrt-img convert IN OUT: any format clrt reads into any it writes. 8-bit to 8-bit and float
-// to float keep every value; float to 8-bit quantises as clrt does; 8-bit to float gives
-// value / 255. All frames of an FSF go into an FSF, or into one file each through a pattern
-// such as turn-%04d.png, or into an animated GIF at --fps frames per second; other outputs take
-// the frame --frame names.
+// to float keep every value; float to 8-bit quantises as clrt does, after --exposure,
+// --tonemap and --srgb when asked; 8-bit to float gives value / 255. All frames of an FSF go
+// into an FSF, or into one file each through a pattern such as turn-%04d.png, or into an
+// animated GIF at --fps frames per second; other outputs take the frame --frame names.
 #include <cmath>
 #include <memory>
 
+#include "cli/decimal_number.hpp"
+#include "cli/word_choice.hpp"
 #include "command_line.hpp"
 #include "frame_pattern.hpp"
 #include "gif_writer.hpp"
@@ -21,7 +23,20 @@ struct ConvertOptions {
   std::optional<ImageFormat> format;
   std::optional<ExrPixel> exr_pixel;
   double fps = 25;
+  DisplayTransform display;  // float to 8-bit only
 };
+
+// The display transform shapes a float image's way into 8 bits; anywhere else it would be
+// dropped in silence.
+void check_display(const ConvertOptions& options, ImageFormat input, bool float_output) {
+  if (options.display.identity()) return;
+  const char* asked = "--exposure, --tonemap and --srgb apply where a float image (pfm, exr) "
+                      "becomes 8-bit; ";
+  if (!holds_floats(input))
+    throw UsageError(asked + options.input + " holds 8-bit values already");
+  if (float_output)
+    throw UsageError(asked + options.output + " keeps the floats as they are");
+}
 
 void write_converted(const std::string& path, const ImageOutput& output, const AnyImage& image,
                      const WriteOptions& options) {
@@ -53,13 +68,15 @@ void check_convert_memory(const ConvertOptions& options, ImageFormat written, bo
 int convert_to_gif(const ConvertOptions& options) {
   if (options.format)
     throw UsageError("--format does not apply to a GIF output, which its name chooses");
-  input_format(options.input);  // an input no reader takes is a usage error, as below
+  // An input no reader takes is a usage error, as below.
+  check_display(options, input_format(options.input), false);
   // The GIF's indexed frames are held whole as a PNG's rows are, at a byte a pixel or less.
   check_convert_memory(options, ImageFormat::Png, !options.frame, ExrPixel::Half);
   AnyImage image = read_any_image(options.input);
   if (options.frame) image = pick_frame(image, options.frame, options.input, kHowToPick);
   const Rgba8Image* rgba = std::get_if<Rgba8Image>(&image);
-  const Rgba8Image quantized = rgba ? Rgba8Image{} : quantize(std::get<FloatImage>(image));
+  const Rgba8Image quantized =
+      rgba ? Rgba8Image{} : quantize(std::get<FloatImage>(image), options.display);
   const int delay_cs = static_cast<int>(std::lround(100 / options.fps));
   write_gif(options.output, rgba ? *rgba : quantized, delay_cs);
   return 0;
@@ -72,8 +89,10 @@ int convert(const ConvertOptions& options) {
   // A pattern's first name stands for all of them: they differ in the number alone.
   const ImageOutput output = output_argument(
       numbered ? frame_file_name(options.output, 1) : options.output, options.format);
-  const WriteOptions write_options =
+  check_display(options, input, holds_floats(output.format));
+  WriteOptions write_options =
       write_options_for(options.exr_pixel, holds_float32(options.input, input));
+  write_options.display = options.display;
   check_convert_memory(options, output.format,
                        output.format == ImageFormat::Fsf && !options.frame && !numbered,
                        write_options.exr_pixel);
@@ -114,6 +133,19 @@ void add_convert(CLI::App& app, Command& command) {
                   "frames per second of a GIF animation (default 25; GIF keeps hundredths of a "
                   "second, so the delay is rounded to one)")
       ->check(CLI::Range(0.1, 100.0));
+  sub->add_option("--exposure", options->display.exposure,
+                  "float to 8-bit: multiply every value by 2^STOPS first (default 0)")
+      ->check(decimal_number());
+  sub->add_option_function<std::string>(
+         "--tonemap",
+         [options](const std::string& name) {
+           options->display.curve = *tone_curve_from_name(name);
+         },
+         "float to 8-bit: the tone curve, clamp (default) or filmic")
+      ->transform(word_choice(tone_curve_names()));
+  sub->add_flag("--srgb", options->display.srgb,
+                "float to 8-bit: encode with sRGB's curve, as clrt --mode path writes its 8-bit "
+                "images (default: values as they are, as the Whitted modes write them)");
   sub->callback([&command, options] { command = [options] { return convert(*options); }; });
 }
 

@@ -19,7 +19,16 @@ bool apply_key(Key key, ViewState& state, Playback& playback, const ViewSources&
     case Key::ExposureUp: state.tone.exposure += kExposureStep; break;
     case Key::ExposureDown: state.tone.exposure -= kExposureStep; break;
     case Key::ExposureReset: state.tone = {}; break;
-    case Key::Gamma: state.tone.gamma = state.tone.gamma == 1 ? kDisplayGamma : 1; break;
+    case Key::Gamma:
+      // sRGB's encoding would hide the gamma: off, so that the key always shows its change.
+      state.tone.gamma = state.tone.gamma == 1 ? kDisplayGamma : 1;
+      state.tone.srgb = false;
+      break;
+    case Key::Srgb: state.tone.srgb = !state.tone.srgb; break;
+    case Key::Filmic:
+      state.tone.curve =
+          state.tone.curve == ToneCurve::Filmic ? ToneCurve::Clamp : ToneCurve::Filmic;
+      break;
     case Key::PlayPause:
       playback.playing = !playback.playing;
       playback.carried = 0;

@@ -9,8 +9,10 @@ namespace clrt::view {
 enum class Key {
   ExposureUp,    // + or =
   ExposureDown,  // -
-  ExposureReset, // 0: exposure 0, gamma 1
-  Gamma,         // g: gamma 1 <-> 2.2
+  ExposureReset, // 0: exposure 0, gamma 1, no curve, no sRGB
+  Gamma,         // g: gamma 1 <-> 2.2, sRGB off
+  Srgb,          // e: sRGB's encoding on / off
+  Filmic,        // f: the filmic curve on / off
   PlayPause,     // space
   NextFrame,     // right
   PreviousFrame, // left

@@ -7,6 +7,7 @@
 #include <optional>
 
 #include "cli/tool_command_line.hpp"
+#include "cli/word_choice.hpp"
 #include "window.hpp"
 
 namespace {
@@ -14,6 +15,8 @@ namespace {
 struct ViewOptions {
   std::string a, b;
   double exposure = 0, gamma = 1, fps = 25;
+  std::string tonemap = "clamp";
+  bool srgb = false;
   int frame = 1;
   std::optional<int> zoom;
   bool pause = false, side_by_side = false, difference = false, show_b = false, preview = false;
@@ -26,6 +29,12 @@ void add_options(CLI::App& app, ViewOptions& options) {
   app.add_option("--gamma", options.gamma,
                  "show value^(1/gamma) (default 1: the bytes clrt's PNG holds)")
       ->check(CLI::Range(0.1, 10.0));
+  app.add_option("--tonemap", options.tonemap,
+                 "the tone curve: clamp (default: values above 1 are white) or filmic")
+      ->transform(clrt::word_choice(clrt::tone_curve_names()));
+  app.add_flag("--srgb", options.srgb,
+               "encode with sRGB's curve instead of the gamma, as clrt --mode path writes its "
+               "8-bit images");
   app.add_option("--frame", options.frame, "the frame to start at, from 1")
       ->check(CLI::PositiveNumber);
   app.add_option("--fps", options.fps, "frames per second of an animation (default 25)")
@@ -66,7 +75,8 @@ int view(const ViewOptions& options) {
     }
   }
   ViewState state;
-  state.tone = {options.exposure, options.gamma};
+  state.tone = {options.exposure, options.gamma, *clrt::tone_curve_from_name(options.tonemap),
+                options.srgb};
   state.side_by_side = options.side_by_side;
   state.show_difference = options.difference;
   state.flipped = options.show_b ? Picture::B : Picture::A;

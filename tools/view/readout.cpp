@@ -29,9 +29,15 @@ std::string readout_text(const ViewNames& names, const ViewSources& sources,
     text += " | frame " + std::to_string(state.frame + 1) + "/" +
             std::to_string(sources.frame_count()) + (playing ? "" : " paused");
   char tone[64];
-  std::snprintf(tone, sizeof tone, " | exposure %+.1f gamma %.1f", state.tone.exposure,
-                state.tone.gamma);
+  std::snprintf(tone, sizeof tone, " | exposure %+.1f", state.tone.exposure);
   text += tone;
+  if (state.tone.curve == ToneCurve::Filmic) text += " filmic";
+  if (state.tone.srgb) {
+    text += " sRGB";
+  } else {
+    std::snprintf(tone, sizeof tone, " gamma %.1f", state.tone.gamma);
+    text += tone;
+  }
   if (!hit) return text;
   text += " | (" + std::to_string(hit->x) + ", " + std::to_string(hit->y) + ")";
   text += values("A", ViewSources::frame_of(sources.a, state.frame), hit->x, hit->y);

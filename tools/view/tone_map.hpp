@@ -1,20 +1,19 @@
-// How clrt-view turns linear floats into the 8-bit pixels on the screen: exposure (in stops)
-// scales the value, gamma encodes it, then clrt's own quantisation (clamp to [0, 1], scale by
-// 255, round to nearest). At exposure 0 and gamma 1 a float image shows the bytes clrt's PNG of
-// it holds, and an 8-bit image (read as value / 255) shows its own bytes.
+// How clrt-view turns linear floats into the 8-bit pixels on the screen: the display transform
+// clrt's writers use (image/display_transform.hpp), so that at exposure 0, gamma 1, no curve
+// and no sRGB a float image shows the bytes clrt's PNG of it holds (a Whitted render's; with
+// --srgb, a path-mode render's), and an 8-bit image (read as value / 255) shows its own bytes.
 #pragma once
 
 #include <cstdint>
 #include <vector>
 
+#include "image/display_transform.hpp"
 #include "image/image.hpp"
 
 namespace clrt::view {
 
-struct ToneSettings {
-  double exposure = 0;  // stops: each +1 doubles every value
-  double gamma = 1;     // the value shown is value^(1/gamma)
-};
+// {exposure, gamma} as the viewer always took them, the curve and sRGB after.
+using ToneSettings = DisplayTransform;
 
 // Pixels as the window holds them: 0x00RRGGBB, row 0 at the top.
 struct Canvas {
@@ -23,7 +22,6 @@ struct Canvas {
   std::uint32_t at(int x, int y) const { return pixels[std::size_t(y) * width + x]; }
 };
 
-std::uint8_t tone_map_channel(float value, const ToneSettings& tone);
 std::uint32_t tone_map_pixel(const float* rgb, const ToneSettings& tone);
 
 }  // namespace clrt::view

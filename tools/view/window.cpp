@@ -15,6 +15,8 @@ std::optional<Key> key_of(const SDL_Keysym& key) {
     case SDLK_MINUS: case SDLK_KP_MINUS: return Key::ExposureDown;
     case SDLK_0: return Key::ExposureReset;
     case SDLK_g: return Key::Gamma;
+    case SDLK_e: return Key::Srgb;
+    case SDLK_f: return Key::Filmic;
     case SDLK_SPACE: return Key::PlayPause;
     case SDLK_RIGHT: return Key::NextFrame;
     case SDLK_LEFT: return Key::PreviousFrame;

@@ -1,0 +1,20 @@
+// A word for a scene lit for the Whitted modes and rendered in path mode, where its lights mean
+// something else (docs/path-tracing.md#units) and the image often comes out nearly black.
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "render/render_options.hpp"
+#include "scene/scene.hpp"
+
+namespace clrt {
+
+// Why the image may be dark, or nothing: in path mode, for a scene with an ambient, point or
+// spot light but no area or directional light and a background no channel of which exceeds
+// kDimBackground (the background lights a path-mode scene; a black one lights nothing).
+std::optional<std::string> dark_scene_note(const Scene& scene, RenderMode mode);
+
+constexpr double kDimBackground = 0.1;
+
+}  // namespace clrt
