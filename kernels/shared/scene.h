@@ -114,7 +114,10 @@ typedef struct RenderParams {
   u32 max_depth;
   u32 mode;           /* CLRT_MODE_* */
   float epsilon;
-  u32 pad[3];
+  float max_sample_value; /* a camera sample whose largest channel exceeds it is scaled down to it
+                           * before a pixel's samples are summed (--max-sample-value); INFINITY:
+                           * never */
+  u32 pad[2];
 } RenderParams;
 CLRT_CHECK_SIZE(RenderParams, 64);
 

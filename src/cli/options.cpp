@@ -89,8 +89,8 @@ void add_shading_options(CLI::App& app, CliOptions& o) {
          "(Monte Carlo path tracing: indirect light, docs/path-tracing.md)")
       ->check(CLI::IsMember(modes, CLI::ignore_case));
   app.add_option("--max-sample-value", o.max_sample_value,
-                 "clamp each channel of every camera sample to at most this before samples are "
-                 "averaged: fewer fireflies, a biased image (default: no clamp)")
+                 "scale every camera sample whose largest channel exceeds this down to it before "
+                 "samples are averaged: fewer fireflies, a biased image (default: no clamp)")
       ->check(positive_decimal_number());
   app.add_option("--seed", o.seed, "seed of the random numbers (jitter, area lights)")
       ->transform(seed_number())

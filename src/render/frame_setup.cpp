@@ -138,6 +138,7 @@ dev::RenderParams make_params(const Scene& scene, const RenderOptions& options) 
     case RenderMode::Path: p.mode = CLRT_MODE_PATH; break;
   }
   p.epsilon = kEpsilon;
+  p.max_sample_value = options.max_sample_value;
   return p;
 }
 

@@ -52,7 +52,7 @@ MegakernelIntegrator::MegakernelIntegrator(DeviceContext& device, const compute:
     : frame_(frame),
       config_(config),
       wave_rays_(static_cast<std::uint32_t>(megakernel_sizes(config, frame).capacity)),
-      resolver_(device, program, wave_rays_, wave_rays_),
+      resolver_(device, program, wave_rays_, wave_rays_, frame.host.params.max_sample_value),
       launcher_(device, config.local_size, config.profile),
       profiler_(launcher_, program, config.profile, 1,
                 wave_rays_ / Profiler::kCountChunk + 1, config.timeline),

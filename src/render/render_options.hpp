@@ -25,9 +25,9 @@ struct RenderOptions {
   int max_depth = 5;
   RenderMode mode = RenderMode::Trace;
   std::uint32_t seed = 0;
-  // --max-sample-value (pbrt-v4's maxcomponentvalue): each channel of every camera sample's
-  // radiance is clamped to at most this before the samples of a pixel are averaged, which
-  // removes fireflies at the price of bias. Infinity: no clamp, the unbiased estimate.
+  // --max-sample-value (pbrt-v4's maxcomponentvalue): a camera sample whose largest channel
+  // exceeds this is scaled down to it before the samples of a pixel are averaged, which removes
+  // fireflies at the price of bias. Infinity: no clamp, the unbiased estimate.
   float max_sample_value = std::numeric_limits<float>::infinity();
   // Rays in flight per queue: device memory grows with it, never with the image size.
   // 0 picks the device class's (src/device/device_tuning.cpp).

@@ -4,6 +4,8 @@
 // against its kernel's signature as the device reports it.
 #pragma once
 
+#include <limits>
+
 #include "device/kernel_args.hpp"
 #include "geometry/device_geometry.hpp"
 #include "shared/ray.h"
@@ -141,9 +143,11 @@ struct ResolveArgs {
   static constexpr const char* kName = "resolve";
   Global<const dev::f4> sample_colour;
   cl_uint samples = 0, first_sample = 0, total_samples = 0, pixel_count = 0;
+  cl_float max_sample_value = std::numeric_limits<float>::infinity();  // no clamp
   Global<dev::f4> pixels;
 
-  CLRT_KERNEL_ARGS(sample_colour, samples, first_sample, total_samples, pixel_count, pixels)
+  CLRT_KERNEL_ARGS(sample_colour, samples, first_sample, total_samples, pixel_count,
+                   max_sample_value, pixels)
 };
 
 struct MegakernelArgs {

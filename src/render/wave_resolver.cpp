@@ -9,8 +9,8 @@ std::vector<DeviceBuffer> WaveResolver::buffers(std::uint64_t samples, std::uint
 }
 
 WaveResolver::WaveResolver(DeviceContext& device, const compute::program& program,
-                           std::uint32_t samples, std::uint32_t pixels)
-    : device_(device), resolve_(program), host_pixels_(pixels) {
+                           std::uint32_t samples, std::uint32_t pixels, float max_sample_value)
+    : device_(device), max_sample_value_(max_sample_value), resolve_(program), host_pixels_(pixels) {
   CLRT_WAVE_RESOLVER_BUFFERS(CLRT_BUFFER_ALLOCATE)
   for (const DeviceBuffer& b : buffers(samples, pixels)) bytes_ += b.bytes;
 }
@@ -28,7 +28,8 @@ void WaveResolver::resolve(Launcher& launcher, RoundOutput& output, std::uint32_
     device_.queue().enqueue_write_buffer(pixels_.buffer, 0, sizeof(dev::f4) * pixel_count,
                                          output.sums_before(first));
   launcher.launch(resolve_,
-                  {sample_colour_, round.count, round.first, round.total, pixel_count, pixels_},
+                  {sample_colour_, round.count, round.first, round.total, pixel_count,
+                   max_sample_value_, pixels_},
                   pixel_count, 0);
   device_.queue().enqueue_read_buffer(pixels_.buffer, 0, sizeof(dev::f4) * pixel_count,
                                       host_pixels_.data());

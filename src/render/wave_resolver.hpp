@@ -19,8 +19,9 @@ namespace clrt {
 
 class WaveResolver {
  public:
+  // Camera samples brighter than max_sample_value are scaled down to it (RenderParams).
   WaveResolver(DeviceContext& device, const compute::program& program, std::uint32_t samples,
-               std::uint32_t pixels);
+               std::uint32_t pixels, float max_sample_value);
   // What the constructor allocates.
   static std::vector<DeviceBuffer> buffers(std::uint64_t samples, std::uint64_t pixels);
 
@@ -37,6 +38,7 @@ class WaveResolver {
 
  private:
   DeviceContext& device_;
+  float max_sample_value_;
   CLRT_WAVE_RESOLVER_BUFFERS(CLRT_BUFFER_MEMBER)
   std::uint64_t bytes_ = 0;
   TypedKernel<ResolveArgs> resolve_;

@@ -205,6 +205,26 @@ TEST_CASE("resolve is the mean of each pixel's samples", "[accumulate]") {
   }
 }
 
+TEST_CASE("resolve scales a sample brighter than the largest value down to it, hue kept",
+          "[accumulate]") {
+  // pbrt-v4's maxcomponentvalue: a sample whose largest channel exceeds the limit is multiplied
+  // by limit / largest; the others are left as they are.
+  const std::vector<dev::f4> sample_colour = {{1, 2, 4, 0}, {0.5f, 0.25f, 0.125f, 0}, {8, 1, 0, 0},
+                                              {3, 3, 3, 0}};
+  ResolveArgs args;
+  args.sample_colour = test::upload(sample_colour);
+  args.samples = args.total_samples = 4;
+  args.pixel_count = 1;
+  args.max_sample_value = 2;
+  args.pixels = test::allocate<dev::f4>(1);
+  test::run(test::renderer_program(), args, 1);
+  const dev::f4 result = test::download(args.pixels, 1)[0];
+  const Vec3 expected = (Vec3{0.5, 1, 2} + Vec3{0.5, 0.25, 0.125} + Vec3{2, 0.25, 0} + Vec3{2, 2, 2}) / 4;
+  CHECK(result.x == Approx(expected.x).epsilon(1e-6));
+  CHECK(result.y == Approx(expected.y).epsilon(1e-6));
+  CHECK(result.z == Approx(expected.z).epsilon(1e-6));
+}
+
 // A pixel's samples resolved in rounds (src/render/sample_rounds.hpp): each round adds its
 // samples to the sums the previous one left, the last divides, and the result has the bits of
 // one resolve over all samples.

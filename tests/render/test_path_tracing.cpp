@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -196,4 +197,20 @@ TEST_CASE("light that reaches the last vertex through a mirror counts", "[path]"
     });
     for (float v : image.rgb) CHECK(v == Approx(1.5f).epsilon(1e-6));
   }
+}
+
+TEST_CASE("the maximum sample value (--max-sample-value) holds every pixel to it", "[path]") {
+  const std::string scene = test_scene("path-lobes.ray");
+  const auto brightest = [&](float limit) {
+    const FloatImage image = render_file(scene, [&](RenderOptions& o) {
+      o.mode = RenderMode::Path;
+      o.samples = 4;
+      o.max_sample_value = limit;
+    });
+    return *std::max_element(image.rgb.begin(), image.rgb.end());
+  };
+  const float open = brightest(std::numeric_limits<float>::infinity());
+  INFO("brightest value without a limit " << open);
+  REQUIRE(open > 0.5f);
+  CHECK(brightest(0.5f) <= 0.5f * (1 + 1e-6f));
 }
