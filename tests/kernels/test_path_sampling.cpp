@@ -5,6 +5,7 @@
 // against the Fresnel equations; and each sample's weight against f cos / pdf.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -49,7 +50,20 @@ __kernel void sample_lobes(__global const Material* material, float4 normal, flo
   directions[i] = (float4)(dir, goes_on ? (float)kind : -1.0f);
   weights[i] = (float4)(weight, pdf);
 }
+
+/* Samples 0 .. count - 1 of the pair `key`. */
+__kernel void sobol_points(uint key, uint count, __global float4* points) {
+  const uint i = get_global_id(0);
+  if (i < count) points[i] = (float4)(sobol_sample(key, i), 0.0f, 0.0f);
+}
 )CL";
+
+struct SobolPointsArgs {
+  static constexpr const char* kName = "sobol_points";
+  cl_uint key = 0, count = 0;
+  Global<dev::f4> points;
+  CLRT_KERNEL_ARGS(key, count, points)
+};
 
 struct SampleLobesArgs {
   static constexpr const char* kName = "sample_lobes";
@@ -408,4 +422,49 @@ TEST_CASE("any exponent the reader accepts gives finite weights and densities", 
       CHECK(bad == 0);
     }
   }
+}
+
+TEST_CASE("a pixel's first 2^m Sobol samples of any pair form a (0, m, 2)-net", "[kernels][path]") {
+  // Every elementary interval of area 2^-m (2^a columns by 2^(m - a) rows, for each a) holds
+  // exactly one of them: stratified in x, in y and in every shape between, however scrambled.
+  for (const cl_uint key : {0u, 1u, 0x9e3779b9u, 123456789u}) {
+    for (const int m : {2, 5, 8}) {
+      const cl_uint count = 1u << m;
+      const Global<dev::f4> points = allocate<dev::f4>(count);
+      run(test_program(kKernels), SobolPointsArgs{key, count, points}, count);
+      const std::vector<dev::f4> p = download(points, count);
+      for (int a = 0; a <= m; ++a) {
+        INFO("key " << key << ", 2^" << m << " samples, intervals of " << (1 << a) << " x " << (1 << (m - a)));
+        std::vector<int> hits(count, 0);
+        for (const dev::f4& q : p) {
+          REQUIRE((q.x >= 0 && q.x < 1 && q.y >= 0 && q.y < 1));
+          const int column = static_cast<int>(q.x * (1 << a)), row = static_cast<int>(q.y * (1 << (m - a)));
+          ++hits[row * (1 << a) + column];
+        }
+        CHECK(std::count(hits.begin(), hits.end(), 1) == static_cast<long>(count));
+      }
+    }
+  }
+}
+
+TEST_CASE("different pairs' Sobol samples are not correlated", "[kernels][path]") {
+  // Two keys' 4096 points, paired sample by sample: their x coordinates' correlation is that of
+  // independent numbers (within 4 standard errors, 4 / sqrt(4096)), as the shuffled indices give.
+  const cl_uint count = 4096;
+  const auto points_of = [&](cl_uint key) {
+    const Global<dev::f4> points = allocate<dev::f4>(count);
+    run(test_program(kKernels), SobolPointsArgs{key, count, points}, count);
+    return download(points, count);
+  };
+  const std::vector<dev::f4> a = points_of(17u), b = points_of(18u);
+  double sa = 0, sb = 0, sab = 0, saa = 0, sbb = 0;
+  for (cl_uint i = 0; i < count; ++i) {
+    const double x = a[i].x, y = b[i].x;
+    sa += x, sb += y, sab += x * y, saa += x * x, sbb += y * y;
+  }
+  const double n = count;
+  const double r = (sab / n - sa / n * sb / n) /
+                   std::sqrt((saa / n - sa / n * sa / n) * (sbb / n - sb / n * sb / n));
+  INFO("correlation " << r);
+  CHECK(std::fabs(r) < 4 / std::sqrt(n));
 }
