@@ -20,7 +20,7 @@ CliOptions parsed(std::vector<std::string> args) {
 
 }  // namespace
 
-TEST_CASE("--max-sample-value reaches RenderOptions::max_sample_value", "[cli][picture]") {
+TEST_CASE("the maximum sample value (--max-sample-value) reaches RenderOptions::max_sample_value", "[cli][picture]") {
   const Scene scene;
   CHECK(std::isinf(resolve_render_options(parsed({}), scene).max_sample_value));
   CHECK(resolve_render_options(parsed({"--max-sample-value", "4.5"}), scene).max_sample_value ==

@@ -89,7 +89,7 @@ TEST_CASE("in the Whitted modes clrt's 8-bit outputs keep the contract's quantis
   }
 }
 
-TEST_CASE("--exposure and --tonemap shape the 8-bit outputs of every mode", "[cli][picture]") {
+TEST_CASE("exposure and the tone curve (--exposure, --tonemap) shape the 8-bit outputs of every mode", "[cli][picture]") {
   SECTION("path mode: exposure, filmic, sRGB") {
     ScratchDir dir;
     const clrt::FloatImage floats = render_all(dir, kCornell + kSmall + " --mode path",

@@ -94,7 +94,7 @@ TEST_CASE("the identity transform is the contract's quantisation", "[image][disp
   CHECK(clrt::quantize(image).frames.at(0) == expected);
 }
 
-TEST_CASE("8-bit writers put a float image through WriteOptions::display; float ones do not",
+TEST_CASE("8-bit writers put a float image through WriteOptions::display, float ones do not",
           "[image][display]") {
   clrt::test::ScratchDir dir;
   const FloatImage image{2, 1, {0.5f, 0.2f, 0.001f, 1.0f, 0.0f, 0.25f}};

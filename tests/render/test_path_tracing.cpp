@@ -104,9 +104,16 @@ TEST_CASE("the error against a long render falls as one over the root of the sam
     };
   };
   const FloatImage reference = render_file(scene, with(32768, 1));
+  // The squared errors of four seeds pooled: one seed's error wanders by 10-20% from its trend
+  // (local slopes from -0.36 to -0.73 were measured), which would hide a plateau or fake one.
   std::vector<double> x, y;
   for (int samples : {4, 16, 64, 256, 1024}) {
-    const double error = rms_difference(render_file(scene, with(samples, 2)), reference);
+    double squares = 0;
+    for (std::uint32_t seed = 2; seed <= 5; ++seed) {
+      const double e = rms_difference(render_file(scene, with(samples, seed)), reference);
+      squares += e * e;
+    }
+    const double error = std::sqrt(squares / 4);
     INFO(samples << " samples: RMS error " << error);
     CHECK(error > 0);
     x.push_back(std::log(static_cast<double>(samples)));
@@ -124,11 +131,12 @@ TEST_CASE("the error against a long render falls as one over the root of the sam
   const double last = (y.back() - y[y.size() - 2]) / (x.back() - x[x.size() - 2]);
   INFO("log-log slope " << slope << ", from 256 to 1024 samples " << last);
   // Independent samples fall as N^-1/2; Sobol samples, stratified in every pair of dimensions
-  // they use, fall faster where the integrand is smooth (measured: -0.60). Slower than -0.45
-  // would be a bias, and a flat end above all: the error stops falling.
+  // they use, fall faster where the integrand is smooth (measured: -0.57 to -0.58, the last
+  // step -0.45 to -0.49). A bias as large as the noise at 1024 samples would flatten the last
+  // step to about -0.33.
   CHECK(slope <= -0.45);
   CHECK(slope >= -0.8);
-  CHECK(last <= -0.4);
+  CHECK(last <= -0.35);
 }
 
 namespace {
