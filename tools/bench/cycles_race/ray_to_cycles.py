@@ -92,13 +92,17 @@ def reset():
     return bpy.context.scene
 
 
-def diffuse_material(name, colour):
+def node_material(name):
+    """A new material with an empty node tree: the tree, and its output node."""
     import bpy
     m = bpy.data.materials.new(name)
     m.use_nodes = True
-    nodes = m.node_tree.nodes
-    nodes.clear()
-    out = nodes.new("ShaderNodeOutputMaterial")
+    m.node_tree.nodes.clear()
+    return m, m.node_tree.nodes, m.node_tree.nodes.new("ShaderNodeOutputMaterial")
+
+
+def diffuse_material(name, colour):
+    m, nodes, out = node_material(name)
     bsdf = nodes.new("ShaderNodeBsdfDiffuse")
     bsdf.inputs["Color"].default_value = (*[float(c) for c in colour], 1.0)
     bsdf.inputs["Roughness"].default_value = 0.0  # 0: Lambertian (above 0: Oren-Nayar)
@@ -110,12 +114,7 @@ def area_light_material(name, radiance):
     """Emits `radiance` from both sides and is otherwise invisible: Emission + Transparent BSDF
     (white) through an Add Shader, so that paths and shadow rays pass through, as clrt's area
     lights do not block."""
-    import bpy
-    m = bpy.data.materials.new(name)
-    m.use_nodes = True
-    nodes = m.node_tree.nodes
-    nodes.clear()
-    out = nodes.new("ShaderNodeOutputMaterial")
+    m, nodes, out = node_material(name)
     emission = nodes.new("ShaderNodeEmission")
     emission.inputs["Color"].default_value = (*[float(c) for c in radiance], 1.0)
     emission.inputs["Strength"].default_value = 1.0
