@@ -13,6 +13,7 @@
 #include "cli/picture_options.hpp"
 #include "cli/tool_command_line.hpp"
 #include "cli/whole_number.hpp"
+#include "cli/word_choice.hpp"
 #include "math/number_fields.hpp"
 #include "render/integrator_names.hpp"
 
@@ -42,14 +43,14 @@ void add_output_options(CLI::App& app, CliOptions& o) {
   app.add_option_function<std::string>(
          "--format", [&](const std::string& name) { o.format = format_from_name(name); },
          "the output's format, whatever its extension: png ppm fsf pfm exr")
-      ->check(CLI::IsMember(format_names(), CLI::ignore_case));
+      ->transform(word_choice(format_names()));
   app.add_option_function<std::string>(
          "--exr-pixel",
          [&](const std::string& pixel) {
            o.exr_pixel = CLI::detail::to_lower(pixel) == "float" ? ExrPixel::Float : ExrPixel::Half;
          },
          "EXR channels: half (default) or float")
-      ->check(CLI::IsMember({"half", "float"}, CLI::ignore_case));
+      ->transform(word_choice({"half", "float"}));
   add_picture_options(app, o);
 }
 
@@ -87,7 +88,7 @@ void add_shading_options(CLI::App& app, CliOptions& o) {
          "--mode", [&](const std::string& mode) { o.mode = modes.at(CLI::detail::to_lower(mode)); },
          "trace (Whitted: shadows, reflection, refraction), cast (local shading only) or path "
          "(Monte Carlo path tracing: indirect light, docs/path-tracing.md)")
-      ->check(CLI::IsMember(modes, CLI::ignore_case));
+      ->transform(word_choice({"trace", "cast", "path"}));
   app.add_option("--max-sample-value", o.max_sample_value,
                  "scale every camera sample whose largest channel exceeds this down to it before "
                  "samples are averaged: fewer fireflies, a biased image (default: no clamp)")
@@ -119,7 +120,7 @@ void add_device_options(CLI::App& app, CliOptions& o) {
   app.add_option_function<std::string>(
          "--integrator", [&](const std::string& name) { o.integrator = *parse_integrator(name); },
          integrator_summaries() + " (every integrator renders the same image)")
-      ->check(CLI::IsMember(integrator_names(), CLI::ignore_case));
+      ->transform(word_choice(integrator_names()));
   app.add_option("--wavefront", o.wavefront,
                  "rays in flight per queue: device memory grows with it "
                  "(default: 16384 on CPU devices, 1048576 on others)")
@@ -129,7 +130,7 @@ void add_device_options(CLI::App& app, CliOptions& o) {
          [&](const std::string& order) { o.shade_by_class = CLI::detail::to_lower(order) == "class"; },
          "queue (default): the wavefront shades each pass's hits in queue order; class: misses, "
          "local-only surfaces, then mirrors and glass, one launch each (same image)")
-      ->check(CLI::IsMember({"queue", "class"}, CLI::ignore_case));
+      ->transform(word_choice({"queue", "class"}));
   app.add_option("--lanes", o.lanes,
                  "waves in flight per device, each with its own queues (default: per device class)")
       ->transform(whole_number(1, 16));
@@ -174,7 +175,7 @@ std::unique_ptr<CLI::App> clrt_command_line(CliOptions& o, StatsRequest& stats,
   app->add_flag("--stats", stats.flag,
                 "print rays by kind, times and queue sizes to stdout (--stats=json: as JSON)");
   app->add_option("--stats-format", stats.format, "text or json")
-      ->check(CLI::IsMember({"text", "json"}));
+      ->transform(word_choice({"text", "json"}));
   app->add_flag("-q,--quiet", o.quiet, "print nothing but errors (no device line, no progress)");
   return app;
 }

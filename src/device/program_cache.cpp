@@ -45,7 +45,8 @@ std::optional<std::filesystem::path> ProgramCache::folder_from_environment(bool 
   if (const char* own = std::getenv("CLRT_CACHE_DIR"))
     return *own == '\0' ? std::nullopt : std::optional<std::filesystem::path>(own);
   if (keeps_compiled_kernels) return std::nullopt;
-  if (auto xdg = environment_path("XDG_CACHE_HOME")) return *xdg / "clrt";
+  // The XDG base directory specification: a relative path there is invalid and is ignored.
+  if (auto xdg = environment_path("XDG_CACHE_HOME"); xdg && xdg->is_absolute()) return *xdg / "clrt";
   if (auto home = environment_path("HOME")) return *home / ".cache" / "clrt";
   return std::nullopt;
 }

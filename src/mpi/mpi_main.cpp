@@ -132,7 +132,8 @@ int run(const mpi::Session& session, const CliOptions& cli, const mpi::TileSize&
     return mine.status;
   }
   report.total_seconds = std::chrono::duration<double>(Clock::now() - start).count();
-  const std::string ranks = " from " + std::to_string(session.size()) + " ranks";
+  const std::string ranks =
+      " from " + std::to_string(session.size()) + (session.size() == 1 ? " rank" : " ranks");
   const std::string where = output.is_stdout() ? "standard output" : output.path;
   progress.finish(writes_nothing(output) ? "rendered" + ranks + ", wrote nothing (--no-write)"
                                          : "wrote " + where + ranks);

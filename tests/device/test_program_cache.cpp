@@ -131,6 +131,9 @@ TEST_CASE("the folder comes from CLRT_CACHE_DIR, XDG_CACHE_HOME or HOME", "[prog
     ScopedEnv home("HOME", "/home/user");
     CHECK(ProgramCache::folder_from_environment(false) == std::filesystem::path("/home/user/.cache/clrt"));
     CHECK_FALSE(ProgramCache::folder_from_environment(true));
+    // A relative XDG_CACHE_HOME is invalid by the XDG specification: HOME's cache is used.
+    ScopedEnv relative("XDG_CACHE_HOME", "relative/cache");
+    CHECK(ProgramCache::folder_from_environment(false) == std::filesystem::path("/home/user/.cache/clrt"));
   }
   ScopedEnv home("HOME", nullptr);
   CHECK_FALSE(ProgramCache::folder_from_environment(false));

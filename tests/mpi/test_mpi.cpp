@@ -135,3 +135,16 @@ TEST_CASE("clrt-mpi --help lists what it accepts: --tile, and no animation optio
     CHECK(count_of(r.output, "clrt-mpi: error:") == 1);
   }
 }
+
+TEST_CASE("clrt-mpi counts its ranks in words: from 1 rank, from 2 ranks", "[mpi]") {
+  ScratchDir dir;
+  for (const int ranks : {1, 2}) {
+    const std::string out = dir.file("count" + std::to_string(ranks) + ".png");
+    const CommandResult r = run_mpi(mpirun(ranks) + quoted(test_scene("reflect.ray")) +
+                                    " --resolution 16x12 -o " + out);
+    INFO(r.output);
+    REQUIRE(r.exit_code == 0);
+    CHECK(r.output.find(ranks == 1 ? " from 1 rank" : " from 2 ranks") != std::string::npos);
+    CHECK(r.output.find(" from 1 ranks") == std::string::npos);
+  }
+}

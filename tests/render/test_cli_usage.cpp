@@ -103,6 +103,27 @@ TEST_CASE("a number that is no number says so, one out of range names the range"
   CHECK(ten.output.find("(20x12, 10 samples per pixel)") != std::string::npos);
 }
 
+TEST_CASE("a word an option does not take names the words it does, and the nearest",
+          "[cli][usage]") {
+  ScratchDir dir;
+  for (const auto& [args, message] : std::vector<std::pair<std::string, std::string>>{
+           {"--mode paht", "clrt: error: --mode: paht is not one of trace, cast, path (did you mean path?)\n"},
+           {"--mode xyz", "clrt: error: --mode: xyz is not one of trace, cast, path\n"},
+           {"--integrator megakernal",
+            "clrt: error: --integrator: megakernal is not one of wavefront, megakernel (did you mean "
+            "megakernel?)\n"},
+           {"--exr-pixel flaot", "clrt: error: --exr-pixel: flaot is not one of half, float (did you mean float?)\n"},
+           {"--shade-order clas", "clrt: error: --shade-order: clas is not one of queue, class (did you mean class?)\n"},
+           {"--stats-format jsn", "clrt: error: --stats-format: jsn is not one of text, json (did you mean json?)\n"}}) {
+    const CommandResult r = run_clrt(args + " " + scene_args(dir));
+    INFO(args << ": " << r.output);
+    CHECK(r.exit_code == 2);
+    CHECK(r.output.rfind(message, 0) == 0);
+  }
+  // Any case, as before.
+  CHECK(run_clrt("--mode PATH --spp 1 -q " + scene_args(dir)).exit_code == 0);
+}
+
 TEST_CASE("every tool words a bad number as clrt does", "[cli][usage]") {
   for (const auto& [tool, args, message] : std::vector<std::tuple<std::string, std::string, std::string>>{
            {CLRT_IMG_EXE, "diff a.png b.png --threshold x",

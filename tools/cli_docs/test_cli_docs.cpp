@@ -60,7 +60,7 @@ TEST_CASE("the man page and docs/cli.md list every option --help lists", "[cli][
 
 TEST_CASE("the bash completion completes options and their words", "[cli][docs]") {
   CHECK(completions("clrt --sp") == "--spp\n");
-  CHECK(completions("clrt scene.ray --mode \"\"") == "cast path trace\n");
+  CHECK(completions("clrt scene.ray --mode \"\"") == "trace cast path\n");  // in --help's order
   CHECK(completions("clrt --integrator w") == "wavefront\n");
   CHECK(completions("clrt --frame") == "--frames --frame-range\n");
   CHECK(completions("clrt --spp \"\"") == "\n");  // a number: nothing to offer

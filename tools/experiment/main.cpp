@@ -16,6 +16,7 @@
 #include "scene/limits.hpp"
 #include "cli/tool_command_line.hpp"
 #include "cli/whole_number.hpp"
+#include "cli/word_choice.hpp"
 #include "device/opencl.hpp"
 #include "render/integrator.hpp"
 #include "experiment_plan.hpp"
@@ -137,9 +138,9 @@ int main(int argc, char** argv) {
   app.add_option("--spp", plan.spp, "samples per pixel for every scene (default: each scene's)")
       ->transform(clrt::whole_number(1, clrt::limits::kMaxSamples));
   app.add_option("--mode", plan.mode, "clrt's --mode for every run: trace (default), cast or path")
-      ->check(CLI::IsMember({"trace", "cast", "path"}));
+      ->transform(clrt::word_choice({"trace", "cast", "path"}));
   app.add_option("--format", plan.format, "image format clrt writes and the runner compares")
-      ->check(CLI::IsMember({"pfm", "png", "exr", "ppm"}))
+      ->transform(clrt::word_choice({"pfm", "png", "exr", "ppm"}))
       ->capture_default_str();
   app.add_option("--out", plan.out_dir, "folder for results.json, runs.csv, report.md, plots")
       ->capture_default_str();

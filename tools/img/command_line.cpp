@@ -4,6 +4,7 @@
 #include <iostream>
 
 #include "cli/whole_number.hpp"
+#include "cli/word_choice.hpp"
 #include "image/image_info.hpp"
 
 namespace clrt::img {
@@ -13,7 +14,7 @@ void add_format_option(CLI::App& command, std::optional<ImageFormat>& format) {
       .add_option_function<std::string>(
           "--format", [&format](const std::string& name) { format = format_from_name(name); },
           "the output's format, needed for standard output (-); otherwise its extension")
-      ->check(CLI::IsMember(format_names(), CLI::ignore_case));
+      ->transform(word_choice(format_names()));
 }
 
 void add_exr_pixel_option(CLI::App& command, std::optional<ExrPixel>& pixel) {
@@ -24,7 +25,7 @@ void add_exr_pixel_option(CLI::App& command, std::optional<ExrPixel>& pixel) {
             pixel = CLI::detail::to_lower(name) == "float" ? ExrPixel::Float : ExrPixel::Half;
           },
           "EXR channels: half or float (default: float when an input holds 32-bit floats)")
-      ->check(CLI::IsMember({"half", "float"}, CLI::ignore_case));
+      ->transform(word_choice({"half", "float"}));
 }
 
 CLI::Option* add_frame_option(CLI::App& command, const std::string& name,
