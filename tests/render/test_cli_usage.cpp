@@ -25,6 +25,17 @@ std::string scene_args(const ScratchDir& dir) {
   return quoted(test_scene("test2.ray")) + " --resolution 20x12 -o " + dir.file("out.pfm");
 }
 
+// Each pair's arguments, given with a scene, end with exit 2 and a message that starts as given.
+void check_usage_errors(const ScratchDir& dir,
+                        const std::vector<std::pair<std::string, std::string>>& cases) {
+  for (const auto& [args, message] : cases) {
+    const CommandResult r = run_clrt(args + " " + scene_args(dir));
+    INFO(args << ": " << r.output);
+    CHECK(r.exit_code == 2);
+    CHECK(r.output.rfind(message, 0) == 0);
+  }
+}
+
 }  // namespace
 
 TEST_CASE("the stats option is a flag in any position, and its JSON form too", "[cli][usage]") {
@@ -80,7 +91,7 @@ TEST_CASE("an unknown option is named, with the nearest real one when one is clo
 TEST_CASE("a number that is no number says so, one out of range names the range",
           "[cli][usage]") {
   ScratchDir dir;
-  for (const auto& [args, message] : std::vector<std::pair<std::string, std::string>>{
+  check_usage_errors(dir, {
            {"--spp abc", "clrt: error: --spp: abc is not a whole number\n"},
            {"--spp 2.5", "clrt: error: --spp: 2.5 is not a whole number\n"},
            {"--spp 0", "clrt: error: --spp: 0 is not in the range 1 to 65536\n"},
@@ -91,12 +102,7 @@ TEST_CASE("a number that is no number says so, one out of range names the range"
            {"--orbit abc", "clrt: error: --orbit: abc is not a number\n"},
            {"--orbit 1e999", "clrt: error: --orbit: 1e999 is not a number\n"},
            {"--orbit nan", "clrt: error: --orbit: nan is not a number\n"},
-           {"--frames -3", "clrt: error: --frames: -3 is not in the range 1 to 16777216\n"}}) {
-    const CommandResult r = run_clrt(args + " " + scene_args(dir));
-    INFO(args << ": " << r.output);
-    CHECK(r.exit_code == 2);
-    CHECK(r.output.rfind(message, 0) == 0);
-  }
+           {"--frames -3", "clrt: error: --frames: -3 is not in the range 1 to 16777216\n"}});
   // Decimal, whatever the leading zeros (CLI11 alone would read 010 as octal 8).
   const CommandResult ten = run_clrt("--spp 010 --stats -q " + scene_args(dir));
   CHECK(ten.exit_code == 0);
@@ -106,7 +112,7 @@ TEST_CASE("a number that is no number says so, one out of range names the range"
 TEST_CASE("a word an option does not take names the words it does, and the nearest",
           "[cli][usage]") {
   ScratchDir dir;
-  for (const auto& [args, message] : std::vector<std::pair<std::string, std::string>>{
+  check_usage_errors(dir, {
            {"--mode paht", "clrt: error: --mode: paht is not one of trace, cast, path (did you mean path?)\n"},
            {"--mode xyz", "clrt: error: --mode: xyz is not one of trace, cast, path\n"},
            {"--integrator megakernal",
@@ -114,12 +120,7 @@ TEST_CASE("a word an option does not take names the words it does, and the neare
             "megakernel?)\n"},
            {"--exr-pixel flaot", "clrt: error: --exr-pixel: flaot is not one of half, float (did you mean float?)\n"},
            {"--shade-order clas", "clrt: error: --shade-order: clas is not one of queue, class (did you mean class?)\n"},
-           {"--stats-format jsn", "clrt: error: --stats-format: jsn is not one of text, json (did you mean json?)\n"}}) {
-    const CommandResult r = run_clrt(args + " " + scene_args(dir));
-    INFO(args << ": " << r.output);
-    CHECK(r.exit_code == 2);
-    CHECK(r.output.rfind(message, 0) == 0);
-  }
+           {"--stats-format jsn", "clrt: error: --stats-format: jsn is not one of text, json (did you mean json?)\n"}});
   // Any case, as before.
   CHECK(run_clrt("--mode PATH --spp 1 -q " + scene_args(dir)).exit_code == 0);
 }
