@@ -27,9 +27,24 @@ CLRT_INLINE float length3(float3 v) { return sqrt(dot3(v, v)); }
 /* v / |v|; a zero vector gives NaNs, as no direction. */
 CLRT_INLINE float3 normalize3(float3 v) { return v / length3(v); }
 
+/* log2((1 + s) / (1 - s)) = 2 atanh(s) / ln 2 for |s| < 0.172, as its odd series in s, exact
+ * to float in 6 terms there. */
+CLRT_INLINE float log2_ratio_series(float s) {
+  const float s2 = s * s;
+  return s * (2.88539008f + s2 * (0.961796694f + s2 * (0.577078016f + s2 * (0.412198583f +
+              s2 * (0.320598900f + s2 * 0.262308189f)))));
+}
+
+/* e^g - 1 for |g| <= ln 2 / 2, as its Taylor series (7 terms), without the cancellation of
+ * subtracting 1 from e^g near g = 0. */
+CLRT_INLINE float expm1_series(float g) {
+  return g * (1.0f + g * (0.5f + g * (0.166666672f + g * (0.0416666679f + g * (0.00833333377f +
+              g * (0.00138888892f + g * 0.000198412701f))))));
+}
+
 /* log2(x) for finite x > 0 (subnormals included), within about 2 ulp of the true value: x =
- * m 2^e with m in [sqrt(1/2), sqrt(2)), and log2(m) = 2 atanh(s) / ln 2 for s = (m-1)/(m+1),
- * |s| < 0.172, as an odd series in s, exact to float in 6 terms. */
+ * m 2^e with m in [sqrt(1/2), sqrt(2)), and log2(m) = log2_ratio_series(s) for
+ * s = (m-1)/(m+1), |s| < 0.172. */
 CLRT_INLINE float exact_log2(float x) {
   int e = 0;
   if (x < 1.17549435e-38f) {  /* subnormal: scale into the normal range first */
@@ -44,12 +59,7 @@ CLRT_INLINE float exact_log2(float x) {
     m *= 0.5f;
     e += 1;
   }
-  const float s = (m - 1.0f) / (m + 1.0f);
-  const float s2 = s * s;
-  const float series =
-      s * (2.88539008f + s2 * (0.961796694f + s2 * (0.577078016f + s2 * (0.412198583f +
-           s2 * (0.320598900f + s2 * 0.262308189f)))));
-  return (float)e + series;
+  return (float)e + log2_ratio_series((m - 1.0f) / (m + 1.0f));
 }
 
 /* 2^y within about 2 ulp: y = n + f with n an integer and |f| <= 1/2, 2^f as its Taylor series
@@ -60,12 +70,16 @@ CLRT_INLINE float exact_exp2(float y) {
   if (y < -150.0f) return 0.0f;
   const float n = rint(y);
   const float g = (y - n) * 0.693147182f;
-  const float p =
-      1.0f + g * (1.0f + g * (0.5f + g * (0.166666672f + g * (0.0416666679f + g * (0.00833333377f +
-      g * (0.00138888892f + g * 0.000198412701f))))));
+  const float p = 1.0f + expm1_series(g);
   const int k = (int)n;
   const int k_low = k / 2;
   return p * as_float((k_low + 127) << 23) * as_float((k - k_low + 127) << 23);
+}
+
+/* 1 - 2^y for y <= 0, keeping the digits of a y near 0 (where 2^y rounds to 1). */
+CLRT_INLINE float one_minus_exp2(float y) {
+  const float g = y * 0.693147182f;
+  return g < -0.25f ? 1.0f - exact_exp2(y) : -expm1_series(g);
 }
 
 /* sin(2 pi u) and cos(2 pi u) for u in [0, 1), within about 2 ulp: the quarter turn of u

@@ -51,14 +51,6 @@ CLRT_INLINE PathLobes path_lobes(__global const Material* m) {
 /* The mirror image of w about n. */
 CLRT_INLINE float3 mirror_about(float3 w, float3 n) { return 2.0f * dot3(n, w) * n - w; }
 
-/* log2((1 - s) / (1 + s)) for 0 <= s < 1/6: -2 atanh(s) / ln 2 as its odd series, exact to float
- * in six terms there (the series of exact_log2). */
-CLRT_INLINE float log2_ratio_near_one(float s) {
-  const float s2 = s * s;
-  return -s * (2.88539008f + s2 * (0.961796694f + s2 * (0.577078016f + s2 * (0.412198583f +
-               s2 * (0.320598900f + s2 * 0.262308189f)))));
-}
-
 /* The Phong factor max(0, R.wi)^n with R the mirror image of wo about n, for any exponent the
  * reader accepts. Near the lobe's axis 1 - cos is taken from |R - wi|^2 / 2, which keeps its
  * digits where the cosine itself rounds to 1 or above it (at an exponent of 1e9 a cosine
@@ -74,32 +66,31 @@ CLRT_INLINE float phong_factor(float3 n, float3 wo, float3 wi, float exponent) {
   if (c < 0.75f) return exact_exp2(exponent * exact_log2(c));
   const float3 d = r - wi;
   const float delta = 0.5f * dot3(d, d); /* 1 - cos */
-  return exact_exp2(exponent * log2_ratio_near_one(delta / (2.0f - delta)));
+  /* cos = (1 - s) / (1 + s) with s = delta / (2 - delta) */
+  return exact_exp2(-exponent * log2_ratio_series(delta / (2.0f - delta)));
 }
 
-/* The two smooth lobes' BSDF for light arriving along wi and leaving along wo; zero below the
- * surface (only the dielectric, a delta lobe, transmits). */
-CLRT_INLINE float3 smooth_bsdf(const PathLobes* l, float3 n, float3 wo, float3 wi) {
-  if (dot3(n, wi) <= 0.0f || dot3(n, wo) <= 0.0f) return (float3)(0.0f);
-  const float phong = l->glossy == 0.0f ? 0.0f : phong_factor(n, wo, wi, l->exponent);
-  return l->diffuse * CLRT_INV_PI + l->glossy * (l->exponent + 2.0f) * CLRT_INV_TWO_PI * phong;
-}
-
-/* The density with which the Phong lobe draws wi (cos_i = n.wi > 0): (n + 1) / (2 pi) cos^n
- * about the mirror direction, except at exponent 0, where the lobe is 1 / pi over the whole
- * hemisphere, a Lambertian, and is drawn as one, by cosine. */
-CLRT_INLINE float phong_pdf(float3 n, float3 wo, float3 wi, float cos_i, float exponent) {
+/* The density with which the Phong lobe draws wi (cos_i = n.wi > 0), given its factor there:
+ * (n + 1) / (2 pi) cos^n about the mirror direction, except at exponent 0, where the lobe is
+ * 1 / pi over the whole hemisphere, a Lambertian, and is drawn as one, by cosine. */
+CLRT_INLINE float phong_pdf(float cos_i, float exponent, float phong) {
   if (exponent == 0.0f) return cos_i * CLRT_INV_PI;
-  return (exponent + 1.0f) * CLRT_INV_TWO_PI * phong_factor(n, wo, wi, exponent);
+  return (exponent + 1.0f) * CLRT_INV_TWO_PI * phong;
 }
 
-/* The solid-angle density with which the smooth lobes, as chosen by their probabilities, draw
- * wi: the density multiple importance sampling weighs light samples against. */
-CLRT_INLINE float smooth_pdf(const PathLobes* l, float3 n, float3 wo, float3 wi) {
+/* The two smooth lobes for light arriving along wi and leaving along wo: their BSDF, zero below
+ * the surface (only the dielectric, a delta lobe, transmits), and in *pdf the solid-angle density
+ * with which they, as chosen by their probabilities, draw wi (the density multiple importance
+ * sampling weighs light samples against). One Phong factor serves both. */
+CLRT_INLINE float3 smooth_lobes(const PathLobes* l, float3 n, float3 wo, float3 wi, float* pdf) {
   const float cos_i = dot3(n, wi);
-  if (cos_i <= 0.0f) return 0.0f;
-  const float glossy = l->p_glossy == 0.0f ? 0.0f : phong_pdf(n, wo, wi, cos_i, l->exponent);
-  return l->p_diffuse * cos_i * CLRT_INV_PI + l->p_glossy * glossy;
+  *pdf = 0.0f;
+  if (cos_i <= 0.0f) return (float3)(0.0f);
+  const float phong = l->glossy == 0.0f ? 0.0f : phong_factor(n, wo, wi, l->exponent);
+  *pdf = l->p_diffuse * cos_i * CLRT_INV_PI +
+         l->p_glossy * (l->p_glossy == 0.0f ? 0.0f : phong_pdf(cos_i, l->exponent, phong));
+  if (dot3(n, wo) <= 0.0f) return (float3)(0.0f);
+  return l->diffuse * CLRT_INV_PI + l->glossy * (l->exponent + 2.0f) * CLRT_INV_TWO_PI * phong;
 }
 
 /* A unit vector at polar angle theta (given as its cosine and sine) and azimuth 2 pi u about
@@ -119,15 +110,6 @@ CLRT_INLINE float3 around_axis(float3 a, float cos_theta, float sin_theta, float
 CLRT_INLINE float3 sample_cosine(float3 n, float2 u) {
   const float cos_theta = sqrt(1.0f - u.x);
   return around_axis(n, cos_theta, sqrt(fmax(0.0f, 1.0f - cos_theta * cos_theta)), u.y);
-}
-
-/* 1 - 2^y for y <= 0 without losing the digits of a y near 0: -expm1(y ln 2) as its series
- * where |y ln 2| < 1/4 (eight terms, exact to float there). */
-CLRT_INLINE float one_minus_exp2(float y) {
-  const float x = y * 0.693147182f;
-  if (x < -0.25f) return 1.0f - exact_exp2(y);
-  return -x * (1.0f + x * (0.5f + x * (0.166666672f + x * (0.0416666679f + x * (0.00833333377f +
-               x * (0.00138888892f + x * 0.000198412701f))))));
 }
 
 /* The Phong lobe's density phong_pdf about the mirror direction of wo: cos = (1 - u)^(1 / (n + 1))

@@ -85,12 +85,11 @@ CLRT_INLINE float3 crossed_emission(const Ray* ray, __global const Light* lights
  * shadow ray decides whether it arrives. */
 CLRT_INLINE float3 light_estimate(const ShadePoint* sp, const PathLobes* lobes,
                                   __global const Light* light, const LightSample* ls) {
-  const float3 f = smooth_bsdf(lobes, sp->n, sp->v, ls->to_light);
+  float pdf;
+  const float3 f = smooth_lobes(lobes, sp->n, sp->v, ls->to_light, &pdf);
   if (all(f == (float3)(0.0f)) || ls->geometry == 0.0f) return (float3)(0.0f);
   /* A light that paths can hit as well shares this direction with the BSDF's samples. */
-  const float w = ls->density > 0.0f ? power_heuristic((float)light->samples, ls->density,
-                                                       smooth_pdf(lobes, sp->n, sp->v, ls->to_light))
-                                     : 1.0f;
+  const float w = ls->density > 0.0f ? power_heuristic((float)light->samples, ls->density, pdf) : 1.0f;
   return f * dot3(sp->n, ls->to_light) * ls->intensity * (ls->geometry * w);
 }
 
@@ -108,9 +107,9 @@ CLRT_INLINE bool continue_path(const Ray* ray, const ShadePoint* sp, const PathL
   const float smooth = lobes->p_diffuse + lobes->p_glossy;
   if (x < smooth) {
     *dir = x < lobes->p_diffuse ? sample_cosine(sp->n, u) : sample_phong(sp->n, sp->v, lobes->exponent, u);
-    *pdf = smooth_pdf(lobes, sp->n, sp->v, *dir);
+    const float3 f = smooth_lobes(lobes, sp->n, sp->v, *dir, pdf);
     if (!(*pdf > 0.0f)) return false;
-    *weight = smooth_bsdf(lobes, sp->n, sp->v, *dir) * (dot3(sp->n, *dir) / *pdf);
+    *weight = f * (dot3(sp->n, *dir) / *pdf);
     return true;
   }
   if (x < smooth + lobes->p_mirror) {
