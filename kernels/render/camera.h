@@ -13,7 +13,8 @@
 /* The stratified sampler: one sample goes through the pixel centre; more are stratified with one
  * jitter per cell of the camera's grid, and each ray's stream is a hash of the sample and its
  * branches. The Sobol sampler (path mode) jitters every sample by its pixel's scrambled Sobol
- * points, and the ray carries the pixel's stream and the sample's index (render/path_step.h).
+ * points, and the ray carries the pixel's stream and the sample's index (render/path_step.h),
+ * which its children keep.
  * Streams are keyed by the pixel's place in the whole image, never in the region or the wave,
  * so every region of a frame has the full render's bits. */
 CLRT_INLINE Ray wave_camera_ray(const Camera* cam, uint region_x, uint region_y, uint region_width,

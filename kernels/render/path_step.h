@@ -6,9 +6,9 @@
  * solid-angle density with which the smooth lobes drew its direction (0 from the camera and
  * after a mirror or glass bounce), which multiple importance sampling needs where the ray
  * crosses an area light; origin.w (after the camera ray) is the product of the refractions'
- * radiance scales along the path, which Russian roulette leaves out. Every ray of a path keeps
- * its pixel's stream (path) and its sample's index (dir.w), from which each vertex draws its
- * scrambled Sobol samples (render/sobol.h), one pair per use and depth. */
+ * radiance scales along the path, which Russian roulette leaves out. Each vertex draws its
+ * scrambled Sobol samples (render/sobol.h), one pair per use, keyed by its ray's stream (path:
+ * the pixel's, then one per bounce) and its depth, at its camera sample's index (dir.w). */
 #ifndef CLRT_RENDER_PATH_STEP_H
 #define CLRT_RENDER_PATH_STEP_H
 
@@ -189,8 +189,6 @@ CLRT_INLINE float3 path_step(const Ray* ray, const Hit* hit, __global const Mate
   }
   Ray next = child_ray(ray, offset_origin(sp.p, sp.ng, dir, params->epsilon), dir, 1.0f,
                        CLRT_BRANCH_REFLECT, kind);
-  next.dir.w = ray->dir.w;
-  next.path = ray->path;
   next.origin.w = scale;
   next.weight = (f4)(throughput, pdf);
   sink_child(sink, CLRT_SPAWN_REFLECTION, &next);

@@ -18,11 +18,13 @@ CLRT_INLINE bool refract_dir(float3 d, float3 n, float eta, float3* t) {
   return true;
 }
 
+/* A child keeps its camera sample's index (dir.w: path mode's Sobol samples need it; 0 in the
+ * Whitted modes) and takes a stream of its own from its parent's and the branch. */
 CLRT_INLINE Ray child_ray(const Ray* parent, float3 origin, float3 dir, float share, uint branch,
                      uint kind) {
   Ray r;
   r.origin = as_f4(origin);
-  r.dir = as_f4(dir);
+  r.dir = (f4)(dir, parent->dir.w);
   r.weight = as_f4(xyz(parent->weight) * share);
   r.sample = parent->sample;
   r.depth = parent->depth + 1u;

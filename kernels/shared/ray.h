@@ -34,7 +34,7 @@ typedef struct Ray {
   u32 sample; /* camera sample index within the current wave */
   u32 depth;  /* 0 for camera rays */
   u32 path;   /* seeds this ray's random numbers: the hash of the branch choices since the camera
-               * ray; in path mode the pixel's stream, the same for all of a pixel's rays */
+               * ray, which starts from the camera sample's stream (in path mode the pixel's) */
   u32 kind;   /* CLRT_RAY_* */
 } Ray;
 CLRT_CHECK_SIZE(Ray, 64);
