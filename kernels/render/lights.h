@@ -20,7 +20,7 @@ typedef struct LightSample {
 } LightSample;
 
 /* Sample j of `light` from point p; u is the pair of random numbers that places an area light's
- * sample in its stratum (light_jitter), unused by the other kinds. Area lights split their
+ * sample in its stratum, unused by the other kinds (light_is_sampled). Area lights split their
  * intensity evenly over their stratified samples. The switch names every kind: the host uploads
  * no other (src/render/frame_setup.cpp). */
 CLRT_INLINE LightSample sample_light(__global const Light* light, uint j, float3 p, float2 u) {
