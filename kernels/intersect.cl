@@ -8,7 +8,7 @@ __kernel void intersect(SCENE_PARAMS, __global const RenderParams* params,
   const uint i = get_global_id(0);
   if (i >= count) return;
   Hit hit;
-  scene_closest_hit(SCENE_ARGS, xyz(rays[i].origin), xyz(rays[i].dir), params->epsilon, INFINITY,
+  scene_closest_hit(SCENE_ARGS, vload3(0, rays[i].origin), vload3(0, rays[i].dir), params->epsilon, INFINITY,
                     &hit);
   hits[i] = hit;
 }

@@ -38,14 +38,14 @@ __kernel void megakernel(SCENE_PARAMS, __global const RenderParams* params,
   uint counts[CLRT_RAY_KINDS] = {0u};
   uint top = 0;
   const SceneTables scene = {SCENE_ARGS};
-  WhittedSink sink = stack_sink(scene, params->epsilon, stack, &top, counts);
+  RaySink sink = stack_sink(scene, params->epsilon, stack, &top, counts);
   stack[top++] = wave_camera_ray(&cam, region_x, region_y, region_width, first_pixel,
                                  first_sample, pixel_samples, i);
   while (top > 0) {
     const Ray ray = stack[--top];
     ++counts[ray.kind];
     Hit hit;
-    scene_closest_hit(SCENE_ARGS, xyz(ray.origin), xyz(ray.dir), params->epsilon, INFINITY, &hit);
+    scene_closest_hit(SCENE_ARGS, vload3(0, ray.origin), vload3(0, ray.dir), params->epsilon, INFINITY, &hit);
     const float3 c = transport_step(&ray, &hit, materials, lights, params, i, &sink);
     const ulong bit = 1ul << ray.depth;
     level[ray.depth] = (levels_seen & bit) ? level[ray.depth] + c : c;

@@ -21,9 +21,9 @@ CLRT_INLINE void shade_ray(__global const RenderParams* params, __global const M
                            __global Ray* spawn_slots, __global uint* spawn_flags) {
   const size_t slots = params->shadow_samples;
   const size_t local_index = i - first;
-  WhittedSink sink = queue_sink(shadow_slots + local_index * slots, shadow_flags + local_index * slots,
+  RaySink sink = queue_sink(shadow_slots + local_index * slots, shadow_flags + local_index * slots,
                                 spawn_slots + CLRT_CHILD_SLOTS * i, spawn_flags + CLRT_CHILD_SLOTS * i);
-  if (params->mode != CLRT_MODE_CAST) {
+  if (CLRT_TRANSPORT_SPAWNS) {
     for (size_t s = 0; s < slots; ++s) sink.shadow_flags[s] = 0u;
     for (uint s = 0; s < CLRT_CHILD_SLOTS; ++s) sink.child_flags[s] = 0u;
   }

@@ -13,8 +13,8 @@
 /* The stratified sampler: one sample goes through the pixel centre; more are stratified with one
  * jitter per cell of the camera's grid, and each ray's stream is a hash of the sample and its
  * branches. The Sobol sampler (path mode) jitters every sample by its pixel's scrambled Sobol
- * points, and the ray carries the pixel's stream and the sample's index (render/path_step.h),
- * which its children keep.
+ * points, and the ray carries the pixel's stream (render/path_step.h). Every ray carries its camera
+ * sample's index, which its children keep.
  * Streams are keyed by the pixel's place in the whole image, never in the region or the wave,
  * so every region of a frame has the full render's bits. */
 CLRT_INLINE Ray wave_camera_ray(const Camera* cam, uint region_x, uint region_y, uint region_width,
@@ -34,9 +34,12 @@ CLRT_INLINE Ray wave_camera_ray(const Camera* cam, uint region_x, uint region_y,
   const float3 dir = xyz(cam->corner) + ((float)x + offset.x) * xyz(cam->pixel_dx) +
                      ((float)y + offset.y) * xyz(cam->pixel_dy);
   Ray ray;
-  ray.origin = cam->eye;
-  ray.dir = (f4)(normalize3(dir), sobol ? (float)k : 0.0f);
-  ray.weight = (f4)(1.0f, 1.0f, 1.0f, 0.0f);
+  vstore3(xyz(cam->eye), 0, ray.origin);
+  ray.radiance_scale = 1.0f;
+  vstore3(normalize3(dir), 0, ray.dir);
+  ray.sample_index = k;
+  vstore3((float3)(1.0f), 0, ray.weight);
+  ray.pdf = 0.0f;
   ray.sample = index;
   ray.depth = 0u;
   ray.path = path;

@@ -8,5 +8,7 @@
 
 CLRT_INLINE float3 xyz(f4 v) { return v.xyz; }
 CLRT_INLINE f4 as_f4(float3 v) { return (f4)(v, 0.0f); }
+CLRT_INLINE float max3(float3 v) { return fmax(v.x, fmax(v.y, v.z)); }
+CLRT_INLINE float mean3(float3 v) { return (v.x + v.y + v.z) * (1.0f / 3.0f); }
 
 #endif

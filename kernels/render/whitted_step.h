@@ -1,39 +1,88 @@
-/* One Whitted transport step, written once for both integrators: what a traced ray contributes
- * itself, and the shadow and child rays it hands to its sink (render/whitted_sink.h), which
- * queues them (wavefront) or follows them at once (megakernel). The children are handed over
- * refraction first, so that a depth-first stack pops the reflection first: the tree order
- * accumulate.cl sums in. Returns the ray's own colour: its miss colour, or its ambient term plus
- * (cast mode) every light's term or (trace mode) what the sink added. */
+/* The Whitted transport model (cast and trace modes): the contract's local terms at a hit, its
+ * shadow rays, and its reflection and refraction rays, which it hands to its sink
+ * (render/ray_sink.h), which queues them (wavefront) or follows them at once (megakernel). The
+ * children are handed over refraction first, so that a depth-first stack pops the reflection
+ * first: the tree order accumulate.cl sums in. The step returns the ray's own colour: its miss
+ * colour, or its ambient term plus (cast mode) every light's term or (trace mode) what the sink
+ * added. */
 #ifndef CLRT_RENDER_WHITTED_STEP_H
 #define CLRT_RENDER_WHITTED_STEP_H
 
-#include "shade_point.h"
-#include "whitted_sink.h"
+#include "light_loop.h"
 
+/* kd * Ld * C * (N.L) + ks * Ld * max(0, R.V)^n, where R is L mirrored about N; zero when
+ * N.L <= 0. 0^0 is 1 as the contract asks. R.V is held to at most 1, where rounding can leave
+ * it: a little above 1 a large exponent (the reader accepts up to 1e12) overflows. */
+CLRT_INLINE float3 direct_term(__global const Material* m, float3 n, float3 v, float3 l, float3 ld) {
+  const float nl = dot3(n, l);
+  if (nl <= 0.0f) return (float3)(0.0f);
+  const float3 r = mirror_about(l, n);
+  const float highlight = m->ks == 0.0f ? 0.0f : power(clamp(dot3(r, v), 0.0f, 1.0f), m->shininess);
+  return m->kd * ld * xyz(m->color) * nl + m->ks * ld * highlight;
+}
+
+CLRT_INLINE float3 ambient_colour(const ShadePoint* s, __global const Material* m,
+                                  __global const RenderParams* params) {
+  return s->base * m->ka * xyz(params->ambient) * xyz(m->color);
+}
+
+struct TransportVertex {
+  ShadePoint sp;
+  __global const Material* material;
+  uint path; /* the ray's random stream */
+};
+
+/* A hashed jitter for the sample's stratum. */
+CLRT_INLINE float2 transport_light_pair(const TransportVertex* v, uint use) { return jitter2(v->path, use); }
+
+CLRT_INLINE float3 transport_light_term(const TransportVertex* v, __global const Light* light,
+                                        const LightSample* ls) {
+  return v->sp.base * direct_term(v->material, v->sp.n, v->sp.v, ls->to_light, ls->intensity);
+}
+
+
+/* The reflection and refraction rays of a hit; returns which of them exist (CLRT_SPAWN_*).
+ * Total internal reflection sends the kt share along the reflection ray. */
+CLRT_INLINE uint spawn_children(const Ray* ray, const ShadePoint* s, __global const Material* m,
+                                float epsilon, Ray* reflected, Ray* refracted) {
+  const float3 d = vload3(0, ray->dir);
+  const float3 r = reflect_dir(d, s->n);
+  float reflect_share = m->kr;
+  const float eta = s->front ? 1.0f / m->ior : m->ior;
+  const float cos_i = -dot3(d, s->n);
+  const float k = 1.0f - refracted_sin2(cos_i, eta);
+  const bool refracts = m->kt > 0.0f && k >= 0.0f;
+  if (m->kt > 0.0f && !refracts) reflect_share += m->kt;
+  uint spawned = 0u;
+  if (reflect_share > 0.0f) {
+    *reflected = child_ray(ray, offset_origin(s->p, s->ng, r, epsilon), r, reflect_share,
+                           CLRT_BRANCH_REFLECT, CLRT_RAY_REFLECTION);
+    spawned |= CLRT_SPAWN_REFLECTION;
+  }
+  if (refracts) {
+    const float3 t = refracted_dir(d, s->n, eta, cos_i, sqrt(k));
+    *refracted = child_ray(ray, offset_origin(s->p, s->ng, t, epsilon), t, m->kt,
+                           CLRT_BRANCH_REFRACT, CLRT_RAY_REFRACTION);
+    spawned |= CLRT_SPAWN_REFRACTION;
+  }
+  return spawned;
+}
+
+/* `tracing`: trace mode (shadow rays and children) rather than cast mode (local terms only). */
 CLRT_INLINE float3 whitted_step(const Ray* ray, const Hit* hit, __global const Material* materials,
                                 __global const Light* lights, __global const RenderParams* params,
-                                uint owner, WhittedSink* sink) {
+                                bool tracing, uint owner, RaySink* sink) {
   if (hit->instance == CLRT_NO_HIT) return miss_colour(ray, params);
-  const bool trace = params->mode == CLRT_MODE_TRACE;
-  const ShadePoint sp = shade_point(ray, hit, materials);
-  float3 c = ambient_colour(&sp, materials, params);
-  for (uint l = 0; l < params->light_count; ++l) {
-    __global const Light* light = &lights[l];
-    for (uint j = 0; j < light->samples; ++j) {
-      LightSample ls;
-      const float3 term = light_term(&sp, materials, light, j, ray->path, &ls);
-      if (all(term == (float3)(0.0f))) continue;
-      if (trace) {
-        const ShadowRay sr = shadow_ray_to(&sp, &ls, term, owner, params->epsilon);
-        sink_shadow(sink, light->first_sample + j, &sr, &c);
-      } else {
-        c += term;
-      }
-    }
-  }
-  if (!trace || ray->depth >= params->max_depth) return c;
+  TransportVertex vertex;
+  vertex.sp = shade_point(ray, hit, materials);
+  vertex.material = &materials[vertex.sp.material];
+  vertex.path = ray->path;
+  float3 c = ambient_colour(&vertex.sp, vertex.material, params);
+  gather_light_samples(&vertex, &vertex.sp, lights, params, tracing, owner, sink, &c);
+  if (!tracing || ray->depth >= params->max_depth) return c;
   Ray reflected, refracted;
-  const uint spawned = spawn_children(ray, &sp, materials, params, &reflected, &refracted);
+  const uint spawned = spawn_children(ray, &vertex.sp, vertex.material, params->epsilon, &reflected,
+                                      &refracted);
   if (spawned & CLRT_SPAWN_REFRACTION) sink_child(sink, CLRT_SPAWN_REFRACTION, &refracted);
   if (spawned & CLRT_SPAWN_REFLECTION) sink_child(sink, CLRT_SPAWN_REFLECTION, &reflected);
   return c;

@@ -23,19 +23,27 @@ CLRT_SHARED_BEGIN
 
 /* A camera, reflection or refraction ray. Queues are kept sorted by `sample` (camera rays are
  * generated in sample order and compaction is stable), which is what lets contributions be
- * summed per sample in a fixed order without atomics. */
+ * summed per sample in a fixed order without atomics. The vectors are float triples (read with
+ * vload3), so that the record keeps 64 bytes with path mode's three numbers named beside them. */
 typedef struct Ray {
-  f4 origin;  /* xyz, already offset from the surface it leaves; w: in path mode, see
-               * render/path_step.h, else 0 */
-  f4 dir;     /* xyz unit direction; w: in path mode the camera sample's index within its pixel
-               * (exact as a float: at most 65535), which its Sobol samples need, else 0 */
-  f4 weight;  /* rgb share of the sample's colour this ray carries; w: in path mode the density
-               * its direction was drawn with (render/path_step.h), else 0 */
-  u32 sample; /* camera sample index within the current wave */
-  u32 depth;  /* 0 for camera rays */
-  u32 path;   /* seeds this ray's random numbers: the hash of the branch choices since the camera
-               * ray, which starts from the camera sample's stream (in path mode the pixel's) */
-  u32 kind;   /* CLRT_RAY_* */
+  float origin[3];      /* already offset from the surface it leaves */
+  float radiance_scale; /* path mode: the product of the refractions' radiance scales along the
+                         * path (render/path_step.h), which Russian roulette leaves out; 1 for a
+                         * camera ray */
+  float dir[3];         /* unit direction */
+  u32 sample_index;     /* the camera sample's index within its pixel, which path mode's Sobol
+                         * samples need (every ray of a sample keeps it) */
+  float weight[3];      /* rgb share of the sample's colour this ray carries (a path's
+                         * throughput) */
+  float pdf;            /* path mode: the solid-angle density its direction was drawn with, for
+                         * multiple importance sampling where it crosses a light; 0 from the
+                         * camera and after a mirror or glass bounce */
+  u32 sample;           /* camera sample index within the current wave */
+  u32 depth;            /* 0 for camera rays */
+  u32 path;             /* seeds this ray's random numbers: the hash of the branch choices since
+                         * the camera ray, which starts from the camera sample's stream (in path
+                         * mode the pixel's) */
+  u32 kind;             /* CLRT_RAY_* */
 } Ray;
 CLRT_CHECK_SIZE(Ray, 64);
 

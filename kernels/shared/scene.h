@@ -30,10 +30,14 @@ typedef struct Material {
 } Material;
 CLRT_CHECK_SIZE(Material, 48);
 
-#define CLRT_LIGHT_POINT 0u
-#define CLRT_LIGHT_DIRECTIONAL 1u
-#define CLRT_LIGHT_SPOT 2u
-#define CLRT_LIGHT_AREA 3u
+/* The light kinds the device knows, one row each: the kind's CLRT_LIGHT_ value and its device
+ * file, kernels/render/lights/NAME.h, whose NAME_light_* functions sample it, say whether it
+ * reads random numbers, and find where a ray crosses it (kernels/render/lights.h dispatches
+ * over these rows). The reader's row for the kind is in src/scene/light_kinds.cpp. */
+#define CLRT_LIGHT_KINDS(X) X(POINT, point) X(DIRECTIONAL, directional) X(SPOT, spot) X(AREA, area)
+#define CLRT_LIGHT_KIND_VALUE(KIND, name) CLRT_LIGHT_##KIND,
+enum { CLRT_LIGHT_KINDS(CLRT_LIGHT_KIND_VALUE) CLRT_LIGHT_KIND_COUNT };
+#undef CLRT_LIGHT_KIND_VALUE
 
 /* Non-ambient lights only: ambient lights are summed into RenderParams.ambient. */
 typedef struct Light {

@@ -2,19 +2,18 @@
 
 #include <algorithm>
 
+#include "scene/light_kinds.hpp"
+
 namespace clrt {
 
 std::optional<std::string> dark_scene_note(const Scene& scene, RenderMode mode) {
   if (mode != RenderMode::Path) return std::nullopt;
   bool ambient = false, falls_off = false;
   for (const LightSpec& light : scene.lights) {
-    switch (light.kind) {
-      case LightKind::Ambient: ambient = true; break;
-      case LightKind::Point:
-      case LightKind::Spot: falls_off = true; break;
-      // Both light a path-mode scene as brightly as a Whitted one.
-      case LightKind::Area:
-      case LightKind::Directional: return std::nullopt;
+    switch (light_kind(light.kind).path_reading) {
+      case PathReading::Unused: ambient = true; break;
+      case PathReading::FallsOff: falls_off = true; break;
+      case PathReading::LikeWhitted: return std::nullopt;
     }
   }
   const Vec3& sky = scene.background;

@@ -274,7 +274,7 @@ int run_clrt(const CliOptions& cli) {
     const auto prepare_start = Clock::now();
     naming_out_of_memory("starting the devices", [&] {
       devices.entries = select_devices(cli.device);
-      devices.prepared = prepare_devices(devices.entries, [&](bool first_run) {
+      devices.prepared = prepare_devices(devices.entries, cli.mode.value_or(RenderOptions{}.mode), [&](bool first_run) {
         progress.phase(first_run ? "building kernels (first run on this device)" : "building kernels");
       });
     });

@@ -5,12 +5,13 @@
 namespace clrt {
 
 std::vector<PreparedDevice> prepare_devices(const std::vector<DeviceEntry>& devices,
-                                            const CompileNotice& compiling) {
+                                            RenderMode mode, const CompileNotice& compiling) {
   std::vector<PreparedDevice> prepared;
   for (const DeviceEntry& entry : devices) {
     PreparedDevice d;
     d.context = std::make_unique<DeviceContext>(entry);
-    d.program = build_renderer_program(*d.context, compiling);
+    d.program = build_renderer_program(*d.context, mode, compiling);
+    d.mode = mode;
     prepared.push_back(std::move(d));
   }
   return prepared;

@@ -8,17 +8,20 @@
 
 #include "device/device_context.hpp"
 #include "device/device_select.hpp"
+#include "render/render_options.hpp"
 
 namespace clrt {
 
 struct PreparedDevice {
   std::unique_ptr<DeviceContext> context;
   compute::program program;
+  RenderMode mode = RenderMode::Trace;  // the transport model the program holds
 };
 
-// Throws DeviceError with the build log of a program that does not build. `compiling` is called
-// before a device's program is compiled from source (CompileNotice).
-std::vector<PreparedDevice> prepare_devices(const std::vector<DeviceEntry>& devices,
+// The program for the render's mode (a command-line choice, known before the scene). Throws
+// DeviceError with the build log of a program that does not build. `compiling` is called before
+// a device's program is compiled from source (CompileNotice).
+std::vector<PreparedDevice> prepare_devices(const std::vector<DeviceEntry>& devices, RenderMode mode,
                                             const CompileNotice& compiling = {});
 
 }  // namespace clrt

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "scene/light_kinds.hpp"
 #include "scene/limits.hpp"
 
 namespace clrt {
@@ -20,13 +21,6 @@ RenderOptions RenderOptions::from_scene(const Scene& scene) {
   o.samples = scene.samples;
   o.max_depth = scene.max_depth;
   return o;
-}
-
-Grid stratification_grid(unsigned n) {
-  unsigned v = 1;
-  for (unsigned d = 1; static_cast<unsigned long long>(d) * d <= n; ++d)
-    if (n % d == 0) v = d;
-  return {n / v, v};
 }
 
 // dir(x, y) = f F + (x - w/2) R + (h/2 - y) U for continuous pixel coordinates (x, y), with
@@ -80,37 +74,14 @@ std::vector<dev::Light> make_lights(const Scene& scene) {
   std::vector<dev::Light> out;
   dev::u32 first_sample = 0;
   for (const LightSpec& l : scene.lights) {
+    const LightKindEntry& entry = light_kind(l.kind);
+    if (!entry.to_device) continue;  // ambient light: summed into RenderParams.ambient
     dev::Light d{};
     d.color = f4_of(l.color);
     d.position = f4_of(l.position);
     d.samples = static_cast<dev::u32>(shadow_samples(l));
     d.grid_u = d.grid_v = 1;
-    switch (l.kind) {
-      case LightKind::Ambient:
-        continue;  // summed into RenderParams.ambient
-      case LightKind::Point:
-        d.kind = CLRT_LIGHT_POINT;
-        break;
-      case LightKind::Directional:
-        d.kind = CLRT_LIGHT_DIRECTIONAL;
-        d.direction = f4_of(normalize(l.direction));
-        break;
-      case LightKind::Spot:
-        d.kind = CLRT_LIGHT_SPOT;
-        d.direction = f4_of(normalize(l.direction));
-        d.cos_cutoff = static_cast<float>(std::cos(l.angle_degrees * M_PI / 180.0));
-        d.spot_exponent = static_cast<float>(l.exponent);
-        break;
-      case LightKind::Area: {
-        d.kind = CLRT_LIGHT_AREA;
-        d.edge_u = f4_of(l.edge_u);
-        d.edge_v = f4_of(l.edge_v);
-        const Grid grid = stratification_grid(d.samples);
-        d.grid_u = grid.u;
-        d.grid_v = grid.v;
-        break;
-      }
-    }
+    entry.to_device(l, d);
     d.first_sample = first_sample;
     first_sample += d.samples;
     out.push_back(d);
@@ -123,7 +94,7 @@ dev::RenderParams make_params(const Scene& scene, const RenderOptions& options) 
   p.background = f4_of(scene.background);
   Vec3 ambient;
   for (const LightSpec& l : scene.lights) {
-    if (l.kind == LightKind::Ambient) {
+    if (!light_kind(l.kind).to_device) {
       ambient = ambient + l.color;
     } else {
       ++p.light_count;  // an entry of make_lights' table

@@ -3,18 +3,12 @@
 
 #include <vector>
 
+#include "math/stratification_grid.hpp"
 #include "render/render_options.hpp"
 #include "scene/scene.hpp"
 #include "shared/scene.h"
 
 namespace clrt {
-
-// The contract's stratification of n samples: gv is the largest divisor of n not above
-// sqrt(n), gu = n / gv.
-struct Grid {
-  unsigned u = 1, v = 1;
-};
-Grid stratification_grid(unsigned n);
 
 dev::Camera make_camera(const Scene& scene, const RenderOptions& options);
 dev::Camera make_camera(const CameraSpec& camera, const RenderOptions& options);

@@ -206,10 +206,12 @@ Renderer::Renderer(const Scene& scene, GeometryData geometry, const RenderSetup&
     DeviceWorker w;
     if (i < prepared.size()) {
       w.context = std::move(prepared[i].context);
-      w.program = prepared[i].program;
+      // A program prepared for another mode holds another transport model.
+      w.program = prepared[i].mode == options_.mode ? prepared[i].program
+                                                    : build_renderer_program(*w.context, options_.mode);
     } else {
       w.context = std::make_unique<DeviceContext>(entry);
-      w.program = build_renderer_program(*w.context);
+      w.program = build_renderer_program(*w.context, options_.mode);
     }
     w.frame = std::make_unique<DeviceFrame>(*w.context, frame, geometry_);
     w.timeline = std::make_unique<BusyTimeline>();

@@ -1,8 +1,10 @@
 #include "scene/light_kinds.hpp"
 
+#include <cmath>
 #include <limits>
 #include <stdexcept>
 
+#include "math/stratification_grid.hpp"
 #include "scene/limits.hpp"
 #include "scene/number.hpp"
 
@@ -80,15 +82,46 @@ std::int64_t no_samples(const LightSpec&) { return 0; }
 std::int64_t one_sample(const LightSpec&) { return 1; }
 std::int64_t its_samples(const LightSpec& light) { return light.samples; }
 
+dev::f4 f4_of(const Vec3& v) {
+  return {static_cast<float>(v.x), static_cast<float>(v.y), static_cast<float>(v.z), 0.0f};
+}
+
+void point_record(const LightSpec&, dev::Light& d) { d.kind = dev::CLRT_LIGHT_POINT; }
+
+void directional_record(const LightSpec& light, dev::Light& d) {
+  d.kind = dev::CLRT_LIGHT_DIRECTIONAL;
+  d.direction = f4_of(normalize(light.direction));
+}
+
+void spot_record(const LightSpec& light, dev::Light& d) {
+  d.kind = dev::CLRT_LIGHT_SPOT;
+  d.direction = f4_of(normalize(light.direction));
+  d.cos_cutoff = static_cast<float>(std::cos(light.angle_degrees * M_PI / 180.0));
+  d.spot_exponent = static_cast<float>(light.exponent);
+}
+
+void area_record(const LightSpec& light, dev::Light& d) {
+  d.kind = dev::CLRT_LIGHT_AREA;
+  d.edge_u = f4_of(light.edge_u);
+  d.edge_v = f4_of(light.edge_v);
+  const Grid grid = stratification_grid(d.samples);
+  d.grid_u = grid.u;
+  d.grid_v = grid.v;
+}
+
 }  // namespace
 
 const std::vector<LightKindEntry>& light_kind_table() {
+  using P = PathReading;
   static const std::vector<LightKindEntry> table = {
-      {LightKind::Ambient, "ambient", ambient, no_samples, false},
-      {LightKind::Point, "point", point, one_sample, true},
-      {LightKind::Directional, "directional", directional, one_sample, false},
-      {LightKind::Spot, "spot", spot, one_sample, true},
-      {LightKind::Area, "area", area, its_samples, true}};
+      {LightKind::Ambient, "ambient", "", ambient, no_samples, false, P::Unused, nullptr},
+      {LightKind::Point, "point", "x y z", point, one_sample, true, P::FallsOff, point_record},
+      {LightKind::Directional, "directional", "dx dy dz", directional, one_sample, false,
+       P::LikeWhitted, directional_record},
+      {LightKind::Spot, "spot", "x y z dx dy dz angle [exp]", spot, one_sample, true,
+       P::FallsOff, spot_record},
+      {LightKind::Area, "area", "x y z ux uy uz vx vy vz [samples]", area, its_samples, true,
+       P::LikeWhitted, area_record}};
   return table;
 }
 

@@ -16,7 +16,9 @@ namespace {
 
 // Each entry is the sizeof or offsetof expression, evaluated by both compilers.
 #define LAYOUT_FIELDS(X)                                                                     \
-  X(sizeof(Ray)) X(offsetof(Ray, dir)) X(offsetof(Ray, weight)) X(offsetof(Ray, sample))     \
+  X(sizeof(Ray)) X(offsetof(Ray, radiance_scale)) X(offsetof(Ray, dir))                     \
+  X(offsetof(Ray, sample_index)) X(offsetof(Ray, weight)) X(offsetof(Ray, pdf))              \
+  X(offsetof(Ray, sample))                                                                   \
   X(offsetof(Ray, kind)) X(sizeof(Hit)) X(offsetof(Hit, shading_normal))                     \
   X(offsetof(Hit, instance)) X(offsetof(Hit, material)) X(sizeof(ShadowRay))                 \
   X(offsetof(ShadowRay, contribution)) X(offsetof(ShadowRay, owner)) X(sizeof(Camera))       \

@@ -1,4 +1,4 @@
-// Path mode's sampling (kernels/render/path_step.h, continue_path) on the device against the
+// Path mode's sampling (kernels/render/lobes.h, sample_lobes) on the device against the
 // densities it claims, as Mitsuba 3's chi2 tests do: directions binned over the sphere against
 // the density integrated over each bin on the host in double, pooled where fewer than 5 are
 // expected, and a chi-square test; the dielectric's choice between reflection and refraction
@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "cl_fixture.hpp"
+#include "sphere_chi_square.hpp"
 
 using namespace clrt;
 using namespace clrt::test;
@@ -21,7 +22,7 @@ const char* const kKernels = R"CL(
 #include "render/path_step.h"
 
 /* Sample i continues a path arriving along -wo at a surface with normal n (front side). */
-__kernel void sample_lobes(__global const Material* material, float4 normal, float4 wo, uint count,
+__kernel void draw_continuations(__global const Material* material, float4 normal, float4 wo, uint count,
                            __global float4* directions, __global float4* weights) {
   const uint i = get_global_id(0);
   if (i >= count) return;
@@ -33,22 +34,25 @@ __kernel void sample_lobes(__global const Material* material, float4 normal, flo
   sp.front = true;
   sp.material = 0u;
   Ray ray;
-  ray.origin = (float4)(0.0f, 0.0f, 0.0f, 1.0f);
-  ray.dir = (float4)(-wo.xyz, 0.0f);
-  ray.weight = (float4)(1.0f, 1.0f, 1.0f, 0.0f);
+  vstore3((float3)(0.0f), 0, ray.origin);
+  ray.radiance_scale = 1.0f;
+  vstore3(-wo.xyz, 0, ray.dir);
+  ray.sample_index = 0u;
+  vstore3((float3)(1.0f), 0, ray.weight);
+  ray.pdf = 0.0f;
   ray.sample = i;
   ray.depth = 1u;
   ray.path = hash_u32(i * 2654435761u + 12345u);
   ray.kind = CLRT_RAY_REFLECTION;
   const PathLobes lobes = path_lobes(material);
-  float3 dir, weight;
-  float pdf, scale;
-  uint kind;
+  LobeSample s = smooth_sample((float3)(0.0f)); /* what a path that ends before a draw shows */
+  float pdf;
   const float2 choice = path_sample(&ray, CLRT_PATH_CHOICE);
-  const bool goes_on = continue_path(&ray, &sp, &lobes, material, path_sample(&ray, CLRT_PATH_DIRECTION),
-                                     choice.x, &dir, &weight, &pdf, &kind, &scale);
-  directions[i] = (float4)(dir, goes_on ? (float)kind : -1.0f);
-  weights[i] = (float4)(weight, pdf);
+  const bool goes_on = sample_lobes(&lobes, material, &sp, -wo.xyz,
+                                    path_sample(&ray, CLRT_PATH_DIRECTION), choice.x, &s, &pdf);
+  /* A path that ends still shows the direction its lobe drew (below the surface, say). */
+  directions[i] = (float4)(s.dir, goes_on ? (float)s.kind : -1.0f);
+  weights[i] = (float4)(s.weight, pdf);
 }
 
 /* Samples 0 .. count - 1 of the pair `key`. */
@@ -65,8 +69,8 @@ struct SobolPointsArgs {
   CLRT_KERNEL_ARGS(key, count, points)
 };
 
-struct SampleLobesArgs {
-  static constexpr const char* kName = "sample_lobes";
+struct DrawContinuationsArgs {
+  static constexpr const char* kName = "draw_continuations";
   Global<const dev::Material> material;
   dev::f4 normal, wo;
   cl_uint count = 0;
@@ -74,16 +78,6 @@ struct SampleLobesArgs {
   CLRT_KERNEL_ARGS(material, normal, wo, count, directions, weights)
 };
 
-struct V3 {
-  double x, y, z;
-};
-V3 operator*(double s, V3 v) { return {s * v.x, s * v.y, s * v.z}; }
-V3 operator+(V3 a, V3 b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
-double dot(V3 a, V3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-V3 unit(V3 v) { return (1.0 / std::sqrt(dot(v, v))) * v; }
-V3 of(const dev::f4& v) { return {v.x, v.y, v.z}; }
-
-constexpr double kPi = 3.14159265358979323846;
 
 // White, ka 0.
 dev::Material material(float kd, float ks, float n, float kr, float kt, float ior = 1.5f) {
@@ -104,75 +98,6 @@ struct SmoothDensity {
   }
 };
 
-struct Frame {
-  V3 n, t, b;
-};
-
-Frame frame_of(V3 n) {
-  const V3 a = std::fabs(n.x) < 0.9 ? V3{1, 0, 0} : V3{0, 1, 0};
-  const V3 t = unit(a + (-dot(a, n)) * n);
-  const V3 b{n.y * t.z - n.z * t.y, n.z * t.x - n.x * t.z, n.x * t.y - n.y * t.x};
-  return {n, t, b};
-}
-
-constexpr int kZBins = 16, kPhiBins = 32;
-
-int bin_of(const Frame& f, V3 w) {
-  const double z = std::clamp(dot(f.n, w), -1.0, 1.0);
-  const double phi = std::atan2(dot(f.b, w), dot(f.t, w));
-  const int zi = std::min(kZBins - 1, static_cast<int>((z + 1) / 2 * kZBins));
-  const int pi = std::min(kPhiBins - 1, static_cast<int>((phi + kPi) / (2 * kPi) * kPhiBins));
-  return zi * kPhiBins + pi;
-}
-
-// Probability of each bin: the density integrated in z and phi (d omega = dz dphi) by the
-// midpoint rule on 24 x 24 points per bin.
-std::vector<double> bin_probabilities(const Frame& f, const SmoothDensity& density) {
-  std::vector<double> p(kZBins * kPhiBins, 0.0);
-  constexpr int kSub = 24;
-  const double dz = 2.0 / kZBins / kSub, dphi = 2 * kPi / kPhiBins / kSub;
-  for (int zi = 0; zi < kZBins * kSub; ++zi) {
-    const double z = -1 + (zi + 0.5) * dz, r = std::sqrt(std::max(0.0, 1 - z * z));
-    for (int pi = 0; pi < kPhiBins * kSub; ++pi) {
-      const double phi = -kPi + (pi + 0.5) * dphi;
-      const V3 w = z * f.n + (r * std::cos(phi)) * f.t + (r * std::sin(phi)) * f.b;
-      p[(zi / kSub) * kPhiBins + pi / kSub] += density(w) * dz * dphi;
-    }
-  }
-  return p;
-}
-
-// The chance of a chi-square statistic at least `chi2` with `dof` degrees of freedom, by the
-// Wilson-Hilferty approximation (ample for the hundreds of degrees of freedom here).
-double chi2_p_value(double chi2, double dof) {
-  const double z = (std::cbrt(chi2 / dof) - (1 - 2 / (9 * dof))) / std::sqrt(2 / (9 * dof));
-  return 0.5 * std::erfc(z / std::sqrt(2.0));
-}
-
-// Observed against expected counts, bins expecting fewer than 5 pooled into one.
-void chi2_test(const std::vector<double>& observed, const std::vector<double>& expected) {
-  double chi2 = 0, pooled_observed = 0, pooled_expected = 0;
-  int bins = 0;
-  for (std::size_t i = 0; i < observed.size(); ++i) {
-    if (expected[i] < 5) {
-      pooled_observed += observed[i];
-      pooled_expected += expected[i];
-      continue;
-    }
-    chi2 += (observed[i] - expected[i]) * (observed[i] - expected[i]) / expected[i];
-    ++bins;
-  }
-  if (pooled_expected >= 5) {
-    chi2 += (pooled_observed - pooled_expected) * (pooled_observed - pooled_expected) / pooled_expected;
-    ++bins;
-  } else {
-    CHECK(pooled_observed <= 5 + 5 * pooled_expected);  // nothing where nothing is expected
-  }
-  INFO("chi2 " << chi2 << " over " << bins - 1 << " degrees of freedom");
-  const double p = chi2_p_value(chi2, bins - 1);
-  INFO("p-value " << p);
-  CHECK(p > 1e-3);
-}
 
 struct Samples {
   std::vector<dev::f4> directions, weights;
@@ -183,7 +108,7 @@ Samples sample(const dev::Material& m, V3 n, V3 wo, std::size_t count) {
   const dev::f4 normal{static_cast<float>(n.x), static_cast<float>(n.y), static_cast<float>(n.z), 0};
   const dev::f4 view{static_cast<float>(wo.x), static_cast<float>(wo.y), static_cast<float>(wo.z), 0};
   run(test_program(kKernels),
-      SampleLobesArgs{upload(std::vector<dev::Material>{m}), normal, view, static_cast<cl_uint>(count),
+      DrawContinuationsArgs{upload(std::vector<dev::Material>{m}), normal, view, static_cast<cl_uint>(count),
                       directions, weights},
       count);
   return {download(directions, count), download(weights, count)};

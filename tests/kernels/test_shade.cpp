@@ -23,6 +23,7 @@
 using namespace clrt;
 using test::f4_of;
 using test::vec_of;
+using test::set_triple;
 
 namespace {
 
@@ -101,9 +102,10 @@ LightSpec area(const Vec3& colour, const Vec3& corner, const Vec3& u, const Vec3
 dev::Ray make_ray(const Vec3& origin, const Vec3& dir, const Vec3& weight = {1, 1, 1},
                   std::uint32_t depth = 0, std::uint32_t sample = 0, std::uint32_t path = 0x1234u) {
   dev::Ray r{};
-  r.origin = f4_of(origin);
-  r.dir = f4_of(dir);
-  r.weight = f4_of(weight);
+  set_triple(r.origin, origin);
+  r.radiance_scale = 1;
+  set_triple(r.dir, dir);
+  set_triple(r.weight, weight);
   r.sample = sample;
   r.depth = depth;
   r.path = path;
@@ -195,7 +197,7 @@ ShadeOutput shade(const ShadeInput& in, std::uint32_t first = 0, std::uint32_t c
   args.out.shadow_flags = test::upload(std::vector<cl_uint>(slot_count, kStaleFlag));
   args.out.spawn_slots = test::upload(std::vector<dev::Ray>(2 * n));
   args.out.spawn_flags = test::upload(std::vector<cl_uint>(2 * n, kStaleFlag));
-  test::run(test::renderer_program(), args, count);
+  test::run(test::renderer_program(in.options.mode), args, count);
 
   out.colour = test::download(args.out.colour, n);
   out.shadows = test::download(args.out.shadow_slots, slot_count);

@@ -21,6 +21,13 @@ inline dev::f4 f4_of(const Vec3& v, double w = 0) {
 }
 
 inline Vec3 vec_of(const dev::f4& v) { return {v.x, v.y, v.z}; }
+// A Ray's float triples (origin, dir, weight).
+inline Vec3 vec_of(const float (&v)[3]) { return {v[0], v[1], v[2]}; }
+inline void set_triple(float (&out)[3], const Vec3& v) {
+  out[0] = static_cast<float>(v.x);
+  out[1] = static_cast<float>(v.y);
+  out[2] = static_cast<float>(v.z);
+}
 
 inline std::string text_of(const Vec3& v) {
   std::ostringstream out;
@@ -53,6 +60,10 @@ inline bool same_bits(float a, float b) {
 
 inline bool same_bits(const dev::f4& a, const dev::f4& b) {
   return same_bits(a.x, b.x) && same_bits(a.y, b.y) && same_bits(a.z, b.z) && same_bits(a.w, b.w);
+}
+
+inline bool same_bits(const float (&a)[3], const float (&b)[3]) {
+  return same_bits(a[0], b[0]) && same_bits(a[1], b[1]) && same_bits(a[2], b[2]);
 }
 
 }  // namespace clrt::test

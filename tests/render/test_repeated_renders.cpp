@@ -46,7 +46,7 @@ TEST_CASE("renders that share one context and program keep their bits, render af
     setup.options.wavefront = 1024;
     setup.options.region = PixelRect{3, 2, 9, 11};
     setup.devices = select_devices(test_device_spec());
-    const std::vector<PreparedDevice> prepared = prepare_devices(setup.devices);
+    const std::vector<PreparedDevice> prepared = prepare_devices(setup.devices, setup.options.mode);
     REQUIRE(prepared.size() == 1);
     for (IntegratorKind integrator : {IntegratorKind::Wavefront, IntegratorKind::Megakernel}) {
       setup.options.integrator = integrator;

@@ -1,5 +1,11 @@
 #include <catch2/catch.hpp>
 
+#include <fstream>
+#include <set>
+#include <sstream>
+#include <string>
+
+#include "scene/light_kinds.hpp"
 #include "scene_test_support.hpp"
 
 using clrt::LightKind;
@@ -104,4 +110,41 @@ TEST_CASE("light range rules", "[scene][lights][errors]") {
   CHECK(load_text("light 1 1 1 area 0 4 0 1e-9 0 0 0 0 1e-9\nlight 1 1 1 area 0 4 0 1 0 0 1 1e-3 0\n")
             .lights.size() == 2);
   require_error("light 1 1 1 area 0 4 0 1 0 0 0 0 1 2.5\n", 1, 36, "whole number from 1 to 65536");
+}
+
+// The kind table is the one list of kinds: the reader, the device's light table and the docs all
+// follow its rows.
+TEST_CASE("every light kind's row: a device kind of its own and its syntax in the docs",
+          "[scene][lights]") {
+  std::ifstream in("docs/scene-format.md");
+  REQUIRE(in);
+  std::stringstream text;
+  text << in.rdbuf();
+  const std::string docs = text.str();
+  std::size_t documented = 0;
+  for (std::size_t at = docs.find("| `light r g b "); at != std::string::npos;
+       at = docs.find("| `light r g b ", at + 1))
+    ++documented;
+  const auto& table = clrt::light_kind_table();
+  CHECK(documented == table.size());
+  std::set<clrt::dev::u32> device_kinds;
+  for (const clrt::LightKindEntry& entry : table) {
+    INFO(entry.name);
+    const std::string syntax = std::string(entry.name) + (*entry.syntax ? " " : "") + entry.syntax;
+    CHECK(docs.find("| `light r g b " + syntax + "` |") != std::string::npos);
+    CHECK(clrt::find_light_kind(entry.name) == &entry);
+    if (!entry.to_device) continue;
+    clrt::LightSpec spec;
+    spec.kind = entry.kind;
+    spec.direction = spec.edge_u = Vec3{1, 0, 0};
+    spec.edge_v = Vec3{0, 1, 0};
+    clrt::dev::Light record{};
+    record.kind = ~0u;
+    record.samples = 1;
+    entry.to_device(spec, record);
+    CHECK(record.kind < clrt::dev::CLRT_LIGHT_KIND_COUNT);
+    CHECK(device_kinds.insert(record.kind).second);
+  }
+  // Every kind the device knows (CLRT_LIGHT_KINDS) is some row's.
+  CHECK(device_kinds.size() == clrt::dev::CLRT_LIGHT_KIND_COUNT);
 }

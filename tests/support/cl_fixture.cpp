@@ -35,9 +35,11 @@ compute::program& test_program(const std::string& text) {
   return it->second;
 }
 
-compute::program& renderer_program() {
-  static compute::program& program = *new compute::program(build_renderer_program(device()));
-  return program;
+compute::program& renderer_program(RenderMode mode) {
+  static std::map<RenderMode, compute::program>& programs = *new std::map<RenderMode, compute::program>;
+  auto it = programs.find(mode);
+  if (it == programs.end()) it = programs.emplace(mode, build_renderer_program(device(), mode)).first;
+  return it->second;
 }
 
 void check_binding(const compute::kernel& kernel, const std::vector<ExpectedArg>& expected) {

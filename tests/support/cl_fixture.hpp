@@ -9,6 +9,7 @@
 #include "device/device_context.hpp"
 #include "device/typed_kernel.hpp"
 #include "device/transfer.hpp"
+#include "render/render_options.hpp"
 #include "render/stage_args.hpp"  // the OpenCL C names of the records kernels take
 
 namespace clrt::test {
@@ -23,8 +24,9 @@ std::string test_device_spec();
 // kernels/ by its path, e.g. #include "geometry/shapes.h".
 compute::program& test_program(const std::string& text);
 
-// The renderer's own program (every kernels/*.cl stage), built once per binary.
-compute::program& renderer_program();
+// The renderer's own program (every kernels/*.cl stage) for a mode's transport model, built once
+// per binary and mode.
+compute::program& renderer_program(RenderMode mode = RenderMode::Trace);
 
 template <class T>
 Global<T> upload(const std::vector<T>& data, const std::string& what = "test input") {

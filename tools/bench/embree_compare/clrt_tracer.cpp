@@ -35,7 +35,8 @@ ClrtBatch ClrtTracer::closest_batch(const RaySet& set) {
   std::vector<dev::Ray> rays;
   rays.reserve(set.rays.size());
   for (const HostRay& r : set.rays)
-    rays.push_back({f4_of(r.origin, 0), f4_of(r.dir, 0), {1, 1, 1, 0}, 0, 0, 0, CLRT_RAY_CAMERA});
+    rays.push_back({{r.origin[0], r.origin[1], r.origin[2]}, 1, {r.dir[0], r.dir[1], r.dir[2]}, 0,
+                    {1, 1, 1}, 0, 0, 0, 0, CLRT_RAY_CAMERA});
   ClrtBatch batch;
   batch.count = rays.size();
   batch.closest = {geometry_.args(), params_, upload(device_, rays, "rays"),

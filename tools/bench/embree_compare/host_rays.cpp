@@ -69,7 +69,7 @@ RaySet shadow_rays(const Scene& scene, const RaySet& rays, const std::vector<dev
   if (lights.empty()) return set;
   const dev::Light& light = lights.front();
   const Vec3 target =
-      light.kind == CLRT_LIGHT_AREA
+      light.kind == dev::CLRT_LIGHT_AREA
           ? vec3_of(light.position) + (vec3_of(light.edge_u) + vec3_of(light.edge_v)) * 0.5
           : vec3_of(light.position);
   for (std::size_t i = 0; i < hits.size(); ++i) {
@@ -78,7 +78,7 @@ RaySet shadow_rays(const Scene& scene, const RaySet& rays, const std::vector<dev
     Vec3 normal = vec3_of(hits[i].geometric_normal);
     if (dot(normal, d) > 0) normal = -normal;
     const Vec3 p = o + d * hits[i].geometric_normal.w + normal * kTmin;
-    if (light.kind == CLRT_LIGHT_DIRECTIONAL) {
+    if (light.kind == dev::CLRT_LIGHT_DIRECTIONAL) {
       set.rays.push_back(host_ray(p, -vec3_of(light.direction), INFINITY));
     } else {
       const Vec3 to_light = target - p;

@@ -2,11 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <vector>
 
 #include "host_rays.hpp"
 #include "host_threads.hpp"
 #include "render/frame_setup.hpp"
+#include "scene/light_kinds.hpp"
 
 namespace clrt::compare {
 namespace {
@@ -80,11 +82,12 @@ class Tracer {
     return p + ng * (dot(ng, dir) >= 0 ? kTmin : -kTmin);
   }
 
+  // Only the kinds traced_kind() accepts reach here.
   static Incoming arriving(const dev::Light& light, const Vec3& p) {
-    if (light.kind == CLRT_LIGHT_DIRECTIONAL) return {-vec3_of(light.direction), INFINITY, vec3_of(light.color)};
+    if (light.kind == dev::CLRT_LIGHT_DIRECTIONAL) return {-vec3_of(light.direction), INFINITY, vec3_of(light.color)};
     const Vec3 delta = vec3_of(light.position) - p;
     Incoming in{delta / length(delta), length(delta), vec3_of(light.color)};
-    if (light.kind == CLRT_LIGHT_SPOT) {
+    if (light.kind == dev::CLRT_LIGHT_SPOT) {
       const double sd = dot(vec3_of(light.direction), -in.to_light);
       in.colour = sd >= light.cos_cutoff ? in.colour * std::pow(std::max(sd, 0.0), light.spot_exponent) : Vec3{};
     }
@@ -109,10 +112,32 @@ class Tracer {
 
 }  // namespace
 
+namespace {
+
+// The kinds whose light arriving() computes; any other kind is refused, never shaded as one of
+// these. The switch names every kind, so a new one must be decided here.
+bool traced_kind(LightKind kind) {
+  switch (kind) {
+    case LightKind::Ambient:
+    case LightKind::Point:
+    case LightKind::Directional:
+    case LightKind::Spot: return true;
+    case LightKind::Area: return false;
+  }
+  return false;
+}
+
+}  // namespace
+
 std::string unsupported_lights(const Scene& scene) {
-  const auto areas = std::count_if(scene.lights.begin(), scene.lights.end(),
-                                   [](const LightSpec& l) { return l.kind == LightKind::Area; });
-  return areas == 0 ? "" : std::to_string(areas) + (areas == 1 ? " area light" : " area lights");
+  std::map<std::string, int> refused;  // by kind name, in name order
+  for (const LightSpec& l : scene.lights)
+    if (!traced_kind(l.kind)) ++refused[light_kind(l.kind).name];
+  std::string out;
+  for (const auto& [name, count] : refused)
+    out += (out.empty() ? "" : ", ") + std::to_string(count) + " " + name +
+           (count == 1 ? " light" : " lights");
+  return out;
 }
 
 FloatImage render_whitted(const Scene& scene, const EmbreeScene& embree, const RenderOptions& options,

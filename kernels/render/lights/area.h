@@ -1,0 +1,50 @@
+/* `light r g b area x y z ux uy uz vx vy vz [samples]`: a parallelogram that emits its colour as
+ * radiance from both faces, sampled at `samples` stratified points, each taking an equal share
+ * of its intensity; paths that cross it see it. */
+#ifndef CLRT_RENDER_LIGHTS_AREA_H
+#define CLRT_RENDER_LIGHTS_AREA_H
+
+#include "light_sample.h"
+
+/* Sample j of the light's grid_u x grid_v strata, placed in its stratum by u. */
+CLRT_INLINE LightSample area_light_sample(__global const Light* light, uint j, float3 p, float2 u) {
+  const float2 uv = stratified(j, light->grid_u, light->grid_v, u);
+  const float3 position =
+      xyz(light->position) + (uv.x * xyz(light->edge_u) + uv.y * xyz(light->edge_v));
+  LightSample s = sample_at_point(position, xyz(light->color) / (float)light->samples, p);
+  const float d2 = s.distance * s.distance;
+  const float3 normal = cross3(xyz(light->edge_u), xyz(light->edge_v));
+  const float area = length3(normal);
+  const float cos_light = fabs(dot3(normal, s.to_light)) / area;
+  /* One of `samples` uniform points: density d^2 / (cos_light area) in solid angle. */
+  s.geometry = cos_light * area / d2;
+  s.density = cos_light > 0.0f ? d2 / (cos_light * area) : 0.0f;
+  return s;
+}
+
+CLRT_INLINE bool area_light_reads_pair(void) { return true; }
+
+/* Where o + t d with t in (tmin, tmax) crosses the parallelogram, and the density with which one
+ * uniform sample of it would have been drawn in that direction. */
+CLRT_INLINE LightCrossing area_light_crossing(__global const Light* light, float3 o, float3 d,
+                                              float tmin, float tmax) {
+  const float3 u = xyz(light->edge_u), v = xyz(light->edge_v);
+  const float3 normal = cross3(u, v); /* its length is the area */
+  const float facing = dot3(normal, d);
+  if (facing == 0.0f) return no_crossing();
+  const float t = dot3(normal, xyz(light->position) - o) / facing;
+  if (!(t > tmin && t < tmax)) return no_crossing();
+  const float3 p = o + t * d - xyz(light->position);
+  const float n2 = dot3(normal, normal);
+  const float a = dot3(cross3(p, v), normal) / n2, b = dot3(cross3(u, p), normal) / n2;
+  if (!(a >= 0.0f && a <= 1.0f && b >= 0.0f && b <= 1.0f)) return no_crossing();
+  const float area = sqrt(n2);
+  const float cos_light = fabs(facing) / area;
+  LightCrossing c;
+  c.t = t;
+  c.radiance = xyz(light->color);
+  c.density = t * t / (cos_light * area);
+  return c;
+}
+
+#endif
