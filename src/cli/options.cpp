@@ -166,6 +166,12 @@ std::unique_ptr<CLI::App> clrt_command_line(CliOptions& o, StatsRequest& stats,
     app->add_flag("--preview", o.preview,
                   "show the render as it fills in, in a clrt-view window (docs/viewer.md)")
         ->group("Output");
+  if (program.dump_scene)
+    app->add_option("--dump-scene", o.dump_scene,
+                    "write the scene as clrt reads it to FILE as JSON (- for standard output) and "
+                    "exit without rendering or starting OpenCL (docs/scene-json.md)")
+        ->type_name("FILE")
+        ->group("Output");
   if (program.add_own_options) {
     app->option_defaults()->group(program.name);
     program.add_own_options(*app);
@@ -193,7 +199,9 @@ ParseResult parse_arguments(std::vector<std::string> args, bool print,
   try {
     if (stats.flag || app.count("--stats-format"))
       o.stats = stats.format == "json" ? StatsFormat::Json : StatsFormat::Text;
-    if (o.scene.empty() && !o.list_devices) throw CLI::RequiredError("scene");
+    if (o.scene.empty() && (!o.list_devices || o.dump_scene)) throw CLI::RequiredError("scene");
+    if (o.dump_scene && o.dump_scene->empty())
+      throw CLI::ValidationError("--dump-scene", "the output's name is empty");
     if (app.count("--outfile") && o.outfile.empty())
       throw CLI::ValidationError("-o", "the output's name is empty; -o none writes nothing");
     if (o.outfile == kNoOutputPath) o.no_write = true;

@@ -45,6 +45,7 @@ struct CliOptions {
   StatsFormat stats = StatsFormat::None;
   bool quiet = false;
   bool preview = false;  // --preview: a clrt-view window shows the render as it fills in
+  std::optional<std::string> dump_scene;  // --dump-scene: where the scene goes as JSON, no render
 };
 
 // What parsing decided: run with the options, or exit now with a code (after --help,
@@ -60,6 +61,7 @@ struct ProgramOptions {
   std::string name = "clrt";
   bool animation = true;  // --frames, --orbit, --frame-range
   bool preview = true;    // --preview
+  bool dump_scene = true; // --dump-scene
   std::function<void(CLI::App&)> add_own_options;  // e.g. clrt-mpi's --tile
 };
 

@@ -21,6 +21,7 @@
 #include "cli/out_of_memory.hpp"
 #include "cli/picture_options.hpp"
 #include "cli/preview_window.hpp"
+#include "cli/scene_dump.hpp"
 #include "image/output_target.hpp"
 #include "render/frame_setup.hpp"
 #include "render/orbit.hpp"
@@ -250,6 +251,7 @@ int run_clrt(const CliOptions& cli) {
     setenv("POCL_MAX_PTHREAD_COUNT", std::to_string(*cli.threads).c_str(), 1);
     setenv("DPCPP_CPU_NUM_CUS", std::to_string(*cli.threads).c_str(), 1);
   }
+  if (cli.dump_scene) return dump_scene(cli);
   if (cli.list_devices) {
     std::cout << device_table(enumerate_devices());
     return 0;

@@ -99,14 +99,14 @@ std::uint64_t minimum_file_bytes(ImageFormat format, std::uint64_t pixels) {
 
 namespace image_detail {
 
-std::unique_ptr<ByteSink> open_output_sink(const ImageOutput& output) {
-  if (output.is_stdout()) return std::make_unique<FdSink>(STDOUT_FILENO, "standard output");
-  const OutputTarget target = find_output_target(output.path);
-  if (!target.stream) return std::make_unique<AtomicFile>(target.path, output.path);
+std::unique_ptr<ByteSink> open_output_sink(const std::string& path) {
+  if (path == kStdoutPath) return std::make_unique<FdSink>(STDOUT_FILENO, "standard output");
+  const OutputTarget target = find_output_target(path);
+  if (!target.stream) return std::make_unique<AtomicFile>(target.path, path);
   // A FIFO waits here for its reader, as a shell's redirection would.
   const int fd = ::open(target.path.c_str(), O_WRONLY | O_NOCTTY | O_CLOEXEC);
-  if (fd < 0) refuse(output.path, std::strerror(errno));
-  return std::make_unique<FdSink>(fd, output.path, true);
+  if (fd < 0) refuse(path, std::strerror(errno));
+  return std::make_unique<FdSink>(fd, path, true);
 }
 
 }  // namespace image_detail

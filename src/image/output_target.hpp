@@ -42,9 +42,12 @@ std::uint64_t minimum_file_bytes(ImageFormat format, std::uint64_t pixels);
 
 namespace image_detail {
 class ByteSink;
-// Where write_image() puts an output's bytes: standard output, a stream as it is, or an
+// Where write_image() puts an output's bytes: standard output ("-"), a stream as it is, or an
 // AtomicFile replacing the target. Errors name the output as the user gave it.
-std::unique_ptr<ByteSink> open_output_sink(const ImageOutput& output);
+std::unique_ptr<ByteSink> open_output_sink(const std::string& path);
+inline std::unique_ptr<ByteSink> open_output_sink(const ImageOutput& output) {
+  return open_output_sink(output.path);
+}
 }  // namespace image_detail
 
 }  // namespace clrt

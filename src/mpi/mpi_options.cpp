@@ -11,6 +11,7 @@ ProgramOptions mpi_program_options(TileSize& tile) {
   program.name = "clrt-mpi";
   program.animation = false;
   program.preview = false;
+  program.dump_scene = false;
   program.add_own_options = [&tile](CLI::App& app) {
     app.add_option_function<std::string>(
         "--tile",

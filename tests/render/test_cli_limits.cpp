@@ -1,4 +1,4 @@
-// The limits of issue 11 through the executable: each request beyond them exits before any work
+// clrt's limits through the executable: each request beyond them exits before any work
 // with the right code and a message that names the real cause, and writes nothing.
 #include <catch2/catch.hpp>
 

@@ -1,5 +1,5 @@
 // Every limit of a scene is checked while loading, in 64 bits, with an error that names the real
-// cause (issue 11: each case here was accepted, crashed or ran away before).
+// cause (each case here was once accepted, crashed or ran away).
 #include <catch2/catch.hpp>
 
 #include <sys/stat.h>

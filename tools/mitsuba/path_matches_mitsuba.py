@@ -27,20 +27,16 @@ def run(command, **kwargs):
     return subprocess.run(command, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, **kwargs)
 
 
-def meshes(scene):
-    """The OBJ files `scene` names, whose triangles decide its pixels as much as the scene."""
-    with open(scene, encoding="utf-8") as f:
-        words = [line.split("#", 1)[0].split() for line in f]
-    return [os.path.join(os.path.dirname(scene), w[1].strip('"')) for w in words
-            if len(w) == 2 and w[0].lower() == "mesh"]
-
-
 def reference(python, scene, args, mitsuba_version):
     """The cached Mitsuba render of `scene`, rendered first if no cache entry matches."""
     key = hashlib.sha256()
-    code = [os.path.join(HERE, f"{name}.py") for name in ("ray_to_mitsuba", "obj_mesh", "lobes", "render_reference",
-                                                           "estimates")]
-    for path in [scene] + meshes(scene) + code:
+    # The scene as clrt reads it, its meshes included, is what the converter reads.
+    dump = run([args.clrt, "--dump-scene", "-", scene])
+    if dump.returncode != 0:
+        raise RuntimeError(f"clrt cannot read {scene}: {dump.stdout.strip()}")
+    key.update(dump.stdout.encode())
+    code = [os.path.join(HERE, f"{name}.py") for name in ("ray_to_mitsuba", "lobes", "render_reference", "estimates")]
+    for path in code:
         with open(path, "rb") as f:
             key.update(f.read())
     key.update(f"{mitsuba_version} {args.reference_spp} {args.splits} {args.reference_seed}".encode())
@@ -49,7 +45,7 @@ def reference(python, scene, args, mitsuba_version):
     if not os.path.exists(out):
         # A hidden name, so that the clean-up of older references below cannot match it.
         partial = os.path.join(args.cache, f".{name}-{os.getpid()}.exr")
-        done = run([python, os.path.join(HERE, "render_reference.py"), scene, partial,
+        done = run([python, os.path.join(HERE, "render_reference.py"), scene, partial, "--clrt", args.clrt,
                     "--spp", str(args.reference_spp), "--splits", str(args.splits),
                     "--seed", str(args.reference_seed)])
         print(done.stdout, end="")

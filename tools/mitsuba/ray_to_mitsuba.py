@@ -1,21 +1,30 @@
 #!/usr/bin/env python3
-"""ray_to_mitsuba.py SCENE.ray [--spp N] [--resolution WxH] [--seed S]
+"""ray_to_mitsuba.py SCENE [--clrt CLRT] [--spp N] [--resolution WxH] [--seed S]
 
-Reads a clrt `.ray` scene and builds the Mitsuba 3 scene that renders the same image as
-`clrt --mode path`, following docs/path-tracing.md (units, the four material lobes and their
-weights) and docs/scene-format.md (camera, transforms). Only the subset the comparison scenes
-need is read; anything else is refused with FILE:LINE: error, so that a scene is never compared
-against a Mitsuba scene that quietly differs from it. Run with the Mitsuba venv's python
-(tools/mitsuba/install.sh); it prints the scene dictionary it built, for a look at the mapping.
+Builds the Mitsuba 3 scene that renders the same image as `clrt --mode path` from the scene as
+clrt itself reads it (`clrt --dump-scene`, docs/scene-json.md), following docs/path-tracing.md
+(units, the four material lobes and their weights) and docs/scene-format.md (camera,
+transforms). What Mitsuba cannot render as clrt does is refused with FILE:LINE:COLUMN: error,
+so that a scene is never compared against a Mitsuba scene that quietly differs from it. Run
+with the Mitsuba venv's python (tools/mitsuba/install.sh); it prints the scene dictionary it
+built, for a look at the mapping.
 """
 import argparse
+import json
 import os
+import pathlib
+import subprocess
 import sys
 
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import obj_mesh  # noqa: E402
+
+# The clrt the README's quick start builds.
+DEFAULT_CLRT = pathlib.Path(__file__).resolve().parents[2] / "build" / "clrt"
+
+# The version of clrt's scene dump this converter reads.
+SCENE_JSON_VERSION = 1
 
 # clrt's `maxdepth` counts bounces after the camera ray and still takes next-event estimation
 # at the last vertex, so a path of D bounces carries light over D + 2 segments (camera to the
@@ -54,9 +63,6 @@ class Material:
         self.diffuse, self.glossy, self.mirror, self.glass = s * diffuse, s * glossy, s * mirror, s * glass
         self.exponent = n
         self.ior = ior if ior > 0 else 1.0
-
-
-DEFAULT_MATERIAL = Material((1, 1, 1), 0.8, 0.0, 1.0, 0.0, 0.0, 1.0)
 
 
 def rgb(values):
@@ -104,111 +110,66 @@ def needs_plugins(material):
     return material.glossy > 0 or sum(w > 0 for w in (material.diffuse.max(), material.mirror, material.glass)) > 1
 
 
-class RayScene:
-    """The subset of the `.ray` format the Mitsuba comparison reads (docs/scene-format.md)."""
+class DumpedScene:
+    """The scene as clrt read it (`clrt --dump-scene`, docs/scene-json.md), in the form the
+    Mitsuba scene is built from: spheres, planes, cubes and cylinders with their placements,
+    triangles in world space, lights. What the comparison cannot match is refused with the
+    object's FILE:LINE:COLUMN."""
 
-    def __init__(self, path):
-        self.path = path
-        self.eye, self.lookat, self.up = np.array([0.0, 0, 5]), np.zeros(3), np.array([0.0, 1, 0])
-        self.fov, self.background = 60.0, np.zeros(3)
-        self.resolution, self.samples, self.maxdepth = (500, 300), 1, 5
-        self.material, self.transform = DEFAULT_MATERIAL, np.eye(4)
+    def __init__(self, dump):
+        if dump.get("format") != "clrt-scene" or dump.get("version") != SCENE_JSON_VERSION:
+            raise SceneError(f"not a clrt scene dump of version {SCENE_JSON_VERSION}")
+        self.path = dump["scene"]
+        camera = dump["camera"]
+        self.eye, self.lookat, self.up = (np.array(camera[k], dtype=float) for k in ("eye", "lookat", "up"))
+        self.fov, self.background = camera["fov_degrees"], np.array(dump["background"], dtype=float)
+        self.resolution, self.samples, self.maxdepth = tuple(dump["resolution"]), dump["samples"], dump["maxdepth"]
+        # One object per material, so that triangles group by the material they were given.
+        self.all_materials = [Material(m["color"], m["kd"], m["ks"], m["shininess"], m["kr"], m["kt"], m["ior"])
+                              for m in dump["materials"]]
         self.spheres, self.triangles, self.lights, self.planes, self.cubes = [], [], [], [], []
         self.cylinders = []
-        with open(path, encoding="utf-8") as f:
-            for number, line in enumerate(f, 1):
-                words = line.split("#", 1)[0].split()
-                if words:
-                    try:
-                        self.command(words[0].lower(), words[1:])
-                    except (SceneError, ValueError) as e:
-                        raise SceneError(f"{path}:{number}: error: {e}") from None
-
-    def command(self, name, args):
-        def numbers(*counts):
-            if len(args) not in counts:
-                raise SceneError(f"`{name}` takes {' or '.join(map(str, counts))} numbers, found {len(args)}")
-            return [float(a) for a in args]
-
-        def whole(value):
-            if value != int(value) or value < 0:
-                raise SceneError(f"`{name}` needs a whole number, found {value}")
-            return int(value)
-
-        if name in ("eye", "lookat", "up"):
-            setattr(self, name, np.array(numbers(3)))
-        elif name == "fov":
-            self.fov = numbers(1)[0]
-        elif name == "background":
-            self.background = np.array(numbers(3))
-        elif name == "resolution":
-            self.resolution = tuple(whole(v) for v in numbers(2))
-        elif name == "samples":
-            self.samples = whole(numbers(1)[0])
-        elif name == "maxdepth":
-            self.maxdepth = whole(numbers(1)[0])
-        elif name in ("material", "surface"):
-            v = numbers(9, 10, 11)
-            if len(v) == 11:
-                del v[3]
-            color, (_ka, kd, ks, n, kr, kt), ior = v[0:3], v[3:9], v[9] if len(v) == 10 else 1.0
-            self.material = Material(color, kd, ks, n, kr, kt, ior)
-        elif name == "reset":
-            numbers(0)
-            self.transform = np.eye(4)
-        elif name == "translate":
-            m = np.eye(4)
-            m[:3, 3] = numbers(3)
-            self.transform = m @ self.transform
-        elif name == "scale":
-            m = np.diag(numbers(3) + [1.0])
-            self.transform = m @ self.transform
-        elif name == "rotate":
-            v = numbers(4)
-            self.transform = rotation(v[0], np.array(v[1:])) @ self.transform
-        elif name in ("rotatex", "rotatey", "rotatez"):
-            self.transform = rotation(numbers(1)[0], np.eye(3)["xyz".index(name[-1])]) @ self.transform
-        elif name == "plane":
-            numbers(0)
-            self.planes.append((self.material, self.transform))
-        elif name == "cube":
-            numbers(0)
-            self.check_front()
-            self.cubes.append((self.material, self.transform))
-        elif name == "mesh":
-            if len(args) != 1:
-                raise SceneError("`mesh` takes one path")
-            self.check_front()
-            obj = os.path.join(os.path.dirname(self.path), args[0].strip('"'))
+        self.meshes = dump["meshes"]
+        for placed in dump["objects"]:
             try:
-                triangles = obj_mesh.read_triangles(obj)
-            except obj_mesh.MeshError as e:
-                raise SceneError(f"bad mesh file {e}") from None
-            for corners in triangles:
-                world = (self.transform @ np.c_[corners, np.ones(3)].T).T[:, :3]
-                self.triangles.append((self.material, world))
-        elif name == "sphere":
-            v = numbers(0, 4) or [0.0, 0.0, 0.0, 1.0]
-            self.add_sphere(np.array(v[:3]), v[3])
-        elif name == "triangle":
-            corners = np.array(numbers(9)).reshape(3, 3)
-            world = (self.transform @ np.c_[corners, np.ones(3)].T).T[:, :3]
-            self.triangles.append((self.material, world))
-        elif name == "light":
-            self.add_light(args)
-        elif name == "cylinder":
-            numbers(0)
-            self.cylinders.append((self.material, cylinder_placement(self.transform)))
-        elif name == "cone":
-            raise SceneError("`cone` has no Mitsuba shape, so the Mitsuba comparison does not read it")
-        else:
-            raise SceneError(f"`{name}` is not supported by the Mitsuba comparison")
+                self.add_object(placed, self.all_materials[placed["material"]], np.array(placed["transform"]))
+            except SceneError as e:
+                raise SceneError(f"{self.path}:{placed['line']}:{placed['column']}: error: {e}") from None
+        # Loose triangles and lights have no place in the dump: their errors name the file.
+        try:
+            for triangle in dump["triangles"]:
+                self.add_triangle(self.all_materials[triangle["material"]], np.array(triangle["corners"], dtype=float))
+            for light in dump["lights"]:
+                self.add_light(light)
+        except SceneError as e:
+            raise SceneError(f"{self.path}: error: {e}") from None
 
-    def check_front(self):
-        # clrt maps a mirrored object's normals by (M^-1)^T, keeping its front; Mitsuba takes a
-        # mesh's front from its winding in world space, which the mirror turns inside out.
-        if self.material.glass > 0 and np.linalg.det(self.transform[:3, :3]) < 0:
-            raise SceneError("a glass cube or mesh under a mirroring transform is inside out in Mitsuba")
+    def add_object(self, placed, material, placement):
+        shape = placed["shape"]
+        if shape == "sphere":
+            self.add_sphere(material, placement)
+        elif shape == "plane":
+            self.planes.append((material, placement))
+        elif shape == "cube":
+            check_front(material, placement)
+            self.cubes.append((material, placement))
+        elif shape == "cylinder":
+            self.cylinders.append((material, cylinder_placement(placement)))
+        elif shape == "mesh":
+            check_front(material, placement)
+            mesh = self.meshes[placed["mesh"]]
+            if mesh["normals"]:
+                raise SceneError(f"{mesh['path']}: every corner has a normal, so clrt shades it smoothly, "
+                                 "which the comparison does not read")
+            corners = np.array(mesh["positions"], dtype=float)[np.array(mesh["triangles"])]
+            world = corners @ placement[:3, :3].T + placement[:3, 3]
+            for triangle in world:
+                self.add_triangle(material, triangle)
+        else:
+            raise SceneError(f"`{shape}` has no Mitsuba shape, so the Mitsuba comparison does not read it")
+
+    def add_triangle(self, material, corners):
+        self.triangles.append((material, corners))
 
     def materials(self):
         return [m for m, *_ in self.spheres] + [m for m, _ in self.triangles + self.planes + self.cubes + self.cylinders]
@@ -222,38 +183,47 @@ class RayScene:
         reach += [np.linalg.norm(c[0] - self.eye) + np.linalg.norm(c[1] - c[0]) + c[2] for _, c in self.cylinders]
         return max(reach) or 1.0
 
-    def add_sphere(self, centre, radius):
-        linear = self.transform[:3, :3]
+    def add_sphere(self, material, placement):
+        """clrt's unit sphere placed by `placement`, which a Mitsuba sphere follows only under a
+        uniform scale."""
+        linear = placement[:3, :3]
         scale = abs(np.linalg.det(linear)) ** (1.0 / 3.0)
         if not np.allclose(linear.T @ linear, scale * scale * np.eye(3), rtol=1e-6, atol=1e-9):
             raise SceneError("a sphere under a non-uniform scale is an ellipsoid, which the comparison does not read")
-        self.spheres.append((self.material, (self.transform @ np.r_[centre, 1.0])[:3], radius * scale))
+        self.spheres.append((material, placement[:3, 3], scale))
 
-    def add_light(self, args):
-        if len(args) < 4:
-            raise SceneError("`light` needs a colour and a kind")
-        color, kind, v = np.array([float(a) for a in args[:3]]), args[3].lower(), [float(a) for a in args[4:]]
-        counts = {"point": (3,), "directional": (3,), "area": (9, 10), "ambient": (0,)}
-        if kind not in counts:
-            raise SceneError(f"`{kind}` lights are not supported by the Mitsuba comparison")
-        if len(v) not in counts[kind]:
-            raise SceneError(f"a {kind} light takes {' or '.join(map(str, counts[kind]))} numbers after its kind")
+    def add_light(self, light):
+        kind, color = light["kind"], np.array(light["color"], dtype=float)
         if kind == "ambient":
             print(f"{self.path}: note: ambient lights are not used in path mode", file=sys.stderr)
-            return
-        self.lights.append((kind, color, np.array(v[:9])))
+        elif kind == "point":
+            self.lights.append((kind, color, np.array(light["position"], dtype=float)))
+        elif kind == "directional":
+            self.lights.append((kind, color, np.array(light["direction"], dtype=float)))
+        elif kind == "area":
+            self.lights.append((kind, color, np.concatenate([light[k] for k in ("corner", "edge_u", "edge_v")])))
+        else:
+            raise SceneError(f"`{kind}` lights are not supported by the Mitsuba comparison")
 
 
-def rotation(degrees, axis):
-    """The 4x4 matrix turning by `degrees` about `axis`, counter-clockwise (right-hand rule)."""
-    if not np.any(axis):
-        raise SceneError("the rotation axis must not be zero")
-    x, y, z = axis / np.linalg.norm(axis)
-    c, s = np.cos(np.radians(degrees)), np.sin(np.radians(degrees))
-    cross = np.array([[0, -z, y], [z, 0, -x], [-y, x, 0]])
-    m = np.eye(4)
-    m[:3, :3] = c * np.eye(3) + s * cross + (1 - c) * np.outer([x, y, z], [x, y, z])
-    return m
+def check_front(material, placement):
+    # clrt maps a mirrored object's normals by (M^-1)^T, keeping its front; Mitsuba takes a
+    # mesh's front from its winding in world space, which the mirror turns inside out.
+    if material.glass > 0 and np.linalg.det(placement[:3, :3]) < 0:
+        raise SceneError("a glass cube or mesh under a mirroring transform is inside out in Mitsuba")
+
+
+def dump_scene(clrt, path):
+    """`path` (.ray or .nff) as clrt reads it: the dictionary of `clrt --dump-scene`."""
+    done = subprocess.run([str(clrt), "--dump-scene", "-", str(path)], stdout=subprocess.PIPE,
+                          stderr=subprocess.PIPE, text=True)
+    if done.returncode != 0:
+        raise SceneError(done.stderr.strip() or f"{clrt} --dump-scene exited with {done.returncode}")
+    return json.loads(done.stdout)
+
+
+def read_scene(clrt, path, kind=DumpedScene):
+    return kind(dump_scene(clrt, path))
 
 
 def cylinder_placement(placement):
@@ -407,7 +377,8 @@ def to_mitsuba(scene, spp=None, resolution=None, seed=0):
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    parser.add_argument("scene")
+    parser.add_argument("scene", help="a .ray or .nff file")
+    parser.add_argument("--clrt", default=DEFAULT_CLRT, help="the clrt that reads it (default: build/clrt)")
     parser.add_argument("--spp", type=int)
     parser.add_argument("--resolution", help="WxH")
     parser.add_argument("--seed", type=int, default=0)
@@ -415,7 +386,7 @@ def main():
     import mitsuba as mi
     mi.set_variant("scalar_rgb")
     try:
-        scene = RayScene(args.scene)
+        scene = read_scene(args.clrt, args.scene)
         d = to_mitsuba(scene, args.spp, parse_resolution(args.resolution), args.seed)
     except SceneError as e:
         sys.exit(str(e))

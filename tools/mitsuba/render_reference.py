@@ -1,10 +1,10 @@
 #!/usr/bin/env python3
-"""render_reference.py SCENE.ray OUT.exr [--spp N] [--splits K] [--seed S] [--resolution WxH]
+"""render_reference.py SCENE OUT.exr [--clrt CLRT] [--spp N] [--splits K] [--seed S] [--resolution WxH]
 
-Renders a clrt `.ray` scene with Mitsuba 3 (converted by ray_to_mitsuba.py) as K sub-renders of
-N / K samples per pixel, each with its own seed, into an estimate (estimates.py: the mean and
-its variance, as a 32-bit float EXR), the reference that `clrt --mode path` is compared with
-(compare.py). Run it with the python of the venv tools/mitsuba/install.sh makes.
+Renders a clrt scene with Mitsuba 3 (converted by ray_to_mitsuba.py from clrt's own reading of
+it, `clrt --dump-scene`) as K sub-renders of N / K samples per pixel, each with its own seed,
+into an estimate (estimates.py: the mean and its variance, as a 32-bit float EXR), the
+reference that `clrt --mode path` is compared with (compare.py). Run it with the python of the venv tools/mitsuba/install.sh makes.
 """
 import argparse
 import os
@@ -20,8 +20,10 @@ import ray_to_mitsuba  # noqa: E402
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    parser.add_argument("scene")
+    parser.add_argument("scene", help="a .ray or .nff file")
     parser.add_argument("out", help="an .exr file")
+    parser.add_argument("--clrt", default=ray_to_mitsuba.DEFAULT_CLRT,
+                        help="the clrt that reads the scene (default: build/clrt)")
     parser.add_argument("--spp", type=int, help="samples per pixel (default: the scene's `samples`)")
     parser.add_argument("--splits", type=int, default=8, help="independent sub-renders (default 8)")
     parser.add_argument("--seed", type=int, default=0)
@@ -39,7 +41,7 @@ def main():
     if args.splits < 2:
         sys.exit("render_reference.py: error: --splits must be 2 or more")
     try:
-        scene = ray_to_mitsuba.RayScene(args.scene)
+        scene = ray_to_mitsuba.read_scene(args.clrt, args.scene)
         spp = -(-(args.spp or scene.samples) // args.splits)
         d = ray_to_mitsuba.to_mitsuba(scene, spp, ray_to_mitsuba.parse_resolution(args.resolution), args.seed)
     except ray_to_mitsuba.SceneError as e:

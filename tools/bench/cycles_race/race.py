@@ -155,14 +155,10 @@ def resolve_scene(name, build):
     return path
 
 
-def scene_digest(path):
-    """The scene file and every mesh it names (hash of their bytes)."""
-    h = hashlib.sha256(path.read_bytes())
-    for line in path.read_text(encoding="utf-8").splitlines():
-        words = line.split("#", 1)[0].split()
-        if len(words) == 2 and words[0].lower() == "mesh":
-            h.update((path.parent / words[1].strip('"')).read_bytes())
-    return h.hexdigest()
+def scene_digest(clrt, path):
+    """The scene as clrt reads it, its meshes included (hash of `clrt --dump-scene`)."""
+    dump = subprocess.run([str(clrt), "--dump-scene", "-", str(path)], stdout=subprocess.PIPE, check=True)
+    return hashlib.sha256(dump.stdout).hexdigest()
 
 
 # ---------------------------------------------------------------------------------------------
@@ -184,7 +180,7 @@ class Renderers:
         return {"process_s": run.wall, "cpu_s": run.cpu, "peak_mib": run.peak_mib}
 
     def cycles(self, scene, spp, seed, out, size):
-        command = [self.python, self.converter, scene, "-o", out, "--spp", spp, "--seed", seed,
+        command = [self.python, self.converter, scene, "-o", out, "--clrt", self.args.clrt, "--spp", spp, "--seed", seed,
                    "--resolution", f"{size[0]}x{size[1]}", "--threads", self.args.threads]
         run = clrt_run.run(command)
         report = [line for line in run.stdout.splitlines() if line.startswith("{")]
@@ -205,13 +201,12 @@ def reference(renderers, name, scene, args):
     folder = args.build / "tools" / "bench" / "cycles_race" / "references"
     folder.mkdir(parents=True, exist_ok=True)
     h = hashlib.sha256()
-    h.update(scene_digest(scene).encode())
+    h.update(scene_digest(args.clrt, scene).encode())
     h.update(f"{args.size} {args.ref_spp} {REFERENCE_SEED} {args.threads}".encode())
     if name == "clrt":
         h.update(pathlib.Path(args.clrt).read_bytes())
     else:
-        for source in (HERE / "ray_to_cycles.py", REPO / "tools" / "mitsuba" / "ray_to_mitsuba.py",
-                       REPO / "tools" / "mitsuba" / "obj_mesh.py"):
+        for source in (HERE / "ray_to_cycles.py", REPO / "tools" / "mitsuba" / "ray_to_mitsuba.py"):
             h.update(source.read_bytes())
         import bpy
         h.update(bpy.app.version_string.encode())

@@ -1,13 +1,14 @@
 #!/usr/bin/env python3
-"""ray_to_cycles.py SCENE.ray -o OUT.exr [--spp N] [--resolution WxH] [--seed S] [--threads T]
+"""ray_to_cycles.py SCENE -o OUT.exr [--clrt CLRT] [--spp N] [--resolution WxH] [--seed S] [--threads T]
 
 Builds, in Blender's Python module (PyPI `bpy` 4.5, installed by install.sh into
 BUILD/cycles-venv), the Cycles scene that estimates the same image as `clrt --mode path`, and
 renders it to a linear 32-bit float EXR comparable with clrt's `--exr-pixel float` EXR. The
-.ray file is read by tools/mitsuba/ray_to_mitsuba.py's RayScene (one parser for both
-comparisons); README.md beside this file says how each item maps and how the units were
-checked. What Cycles cannot be made to render identically (Phong, mirror and glass lobes,
-cylinders, cones, spot lights) is refused with FILE:LINE: error, never approximated.
+scene is the one clrt itself reads (`clrt --dump-scene`, docs/scene-json.md), taken apart by
+tools/mitsuba/ray_to_mitsuba.py's DumpedScene as for the Mitsuba comparison; README.md beside
+this file says how each item maps and how the units were checked. What Cycles cannot be made
+to render identically (Phong, mirror and glass lobes, cylinders, cones, spot lights) is
+refused with FILE:LINE:COLUMN: error, never approximated.
 
 Run with the venv's python. Prints one JSON line on standard output: the render call's time
 (`render_s`: bpy.ops.render.render, which syncs the scene, builds the BVH, renders and writes
@@ -25,7 +26,7 @@ import numpy as np
 
 HERE = pathlib.Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE.parents[1] / "mitsuba"))
-import ray_to_mitsuba as rtm  # noqa: E402  (RayScene, Material, SceneError, plane geometry)
+import ray_to_mitsuba as rtm  # noqa: E402  (DumpedScene, SceneError, the plane's stand-in)
 
 SceneError = rtm.SceneError
 
@@ -45,23 +46,27 @@ POINT_POWER_PER_INTENSITY = 4.0 * math.pi
 TRANSPARENT_BOUNCES = 256
 
 
-class CyclesScene(rtm.RayScene):
-    """RayScene that refuses, with the line, what Cycles cannot render as clrt does."""
+class CyclesScene(rtm.DumpedScene):
+    """DumpedScene that refuses, with the object's place, what Cycles cannot render as clrt does."""
 
-    SHAPES = ("sphere", "triangle", "plane", "cube", "mesh")
-
-    def command(self, name, args):
-        if name == "cylinder":
+    def add_object(self, placed, material, placement):
+        if placed["shape"] == "cylinder":
             raise SceneError("`cylinder` is not mapped to Cycles (no capped-cylinder primitive; "
                              "a tessellation would differ at the silhouette)")
-        if name == "cone":
+        if placed["shape"] == "cone":
             raise SceneError("`cone` is not mapped to Cycles (no cone primitive)")
-        if name == "light" and len(args) >= 4 and args[3].lower() == "spot":
+        check_material(material)
+        super().add_object(placed, material, placement)
+
+    def add_triangle(self, material, corners):
+        check_material(material)
+        super().add_triangle(material, corners)
+
+    def add_light(self, light):
+        if light["kind"] == "spot":
             raise SceneError("spot lights are not mapped to Cycles (its spot fades by a blend "
                              "between two angles, clrt's by (S.D)^exp)")
-        if name in self.SHAPES:
-            check_material(self.material)
-        super().command(name, args)
+        super().add_light(light)
 
 
 def check_material(material):
@@ -390,15 +395,16 @@ def read_exr(path):
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    parser.add_argument("scene")
+    parser.add_argument("scene", help="a .ray or .nff file")
     parser.add_argument("-o", "--output", required=True, help="the EXR to write")
+    parser.add_argument("--clrt", default=rtm.DEFAULT_CLRT, help="the clrt that reads the scene (default: build/clrt)")
     parser.add_argument("--spp", type=int, help="samples per pixel (default: the scene's `samples`)")
     parser.add_argument("--resolution", help="WxH (default: the scene's)")
     parser.add_argument("--seed", type=int, default=0)
     parser.add_argument("--threads", type=int, default=2)
     args = parser.parse_args()
     try:
-        scene = CyclesScene(args.scene)
+        scene = rtm.read_scene(args.clrt, args.scene, CyclesScene)
         started = time.perf_counter()
         build(scene, args.spp or scene.samples, parse_resolution(args.resolution), args.seed, args.threads)
         built = time.perf_counter() - started

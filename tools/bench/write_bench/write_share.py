@@ -5,7 +5,7 @@ For each scene and format, clrt renders at the given size (default 1920x1080) `-
 with `--stats=json`, which reports the write step's seconds (encoding, the temporary file,
 fsync, rename) and clrt's own total, and as many times without it, which gives the command's
 wall time as a user sees it (process start to image on disk, no profiling). The runs of the two
-kinds interleave. Share = median write seconds / median plain command seconds. The issue's
+kinds interleave. Share = median write seconds / median plain command seconds. The
 target is a PNG share of at most 5% at 1920x1080.
 
 Usage (from the repository root, after the build):

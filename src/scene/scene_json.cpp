@@ -1,0 +1,154 @@
+#include "scene/scene_json.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include "scene/light_kinds.hpp"
+
+namespace clrt {
+namespace {
+
+// Keys in the order docs/scene-json.md lists them.
+using Json = nlohmann::ordered_json;
+using Writer = std::function<void(const std::string&)>;
+
+Json vec(const Vec3& v) { return Json::array({v.x, v.y, v.z}); }
+
+Json matrix(const Mat4& m) {
+  Json rows = Json::array();
+  for (const auto& row : m.m) rows.push_back(Json::array({row[0], row[1], row[2], row[3]}));
+  return rows;
+}
+
+const char* shape_name(ShapeKind shape) {
+  switch (shape) {
+    case ShapeKind::Sphere: return "sphere";
+    case ShapeKind::Plane: return "plane";
+    case ShapeKind::Cube: return "cube";
+    case ShapeKind::Cylinder: return "cylinder";
+    case ShapeKind::Cone: return "cone";
+    case ShapeKind::Mesh: return "mesh";
+  }
+  return "?";
+}
+
+Json camera(const Scene& scene) {
+  return {{"eye", vec(scene.camera.eye)},
+          {"lookat", vec(scene.camera.lookat)},
+          {"up", vec(scene.camera.up)},
+          {"fov_degrees", scene.camera.fov_degrees},
+          {"aspect", static_cast<double>(scene.width) / scene.height}};
+}
+
+Json material(const MaterialSpec& m) {
+  return {{"color", vec(m.color)}, {"ka", m.ka}, {"kd", m.kd}, {"ks", m.ks},
+          {"shininess", m.shininess}, {"kr", m.kr}, {"kt", m.kt}, {"ior", m.ior}};
+}
+
+Json light(const LightSpec& l) {
+  Json j = {{"kind", light_kind(l.kind).name}, {"color", vec(l.color)}};
+  switch (l.kind) {
+    case LightKind::Ambient:
+      break;
+    case LightKind::Point:
+      j["position"] = vec(l.position);
+      break;
+    case LightKind::Directional:
+      j["direction"] = vec(l.direction);
+      break;
+    case LightKind::Spot:
+      j["position"] = vec(l.position);
+      j["direction"] = vec(l.direction);
+      j["angle_degrees"] = l.angle_degrees;
+      j["exponent"] = l.exponent;
+      break;
+    case LightKind::Area:
+      j["corner"] = vec(l.position);
+      j["edge_u"] = vec(l.edge_u);
+      j["edge_v"] = vec(l.edge_v);
+      j["samples"] = l.samples;
+      break;
+  }
+  return j;
+}
+
+Json object(const InstanceSpec& o) {
+  Json j = {{"shape", shape_name(o.shape)}, {"material", o.material}};
+  if (o.shape == ShapeKind::Cone) j["radii"] = Json::array({o.cone_r0, o.cone_r1});
+  if (o.shape == ShapeKind::Mesh) j["mesh"] = o.mesh;
+  j["transform"] = matrix(o.transform);
+  j["line"] = o.place.line;
+  j["column"] = o.place.column;
+  return j;
+}
+
+Json triangle(const TriangleSpec& t) {
+  return {{"corners", Json::array({vec(t.v0), vec(t.v1), vec(t.v2)})}, {"material", t.material}};
+}
+
+Json index_triple(const std::vector<std::uint32_t>& indices, std::size_t triangle) {
+  return Json::array({indices[3 * triangle], indices[3 * triangle + 1], indices[3 * triangle + 2]});
+}
+
+// `[` element, element... `]`, each element converted as it is written; `separator` goes
+// between them.
+template <typename ElementAt>
+void write_array(const Writer& write, std::size_t count, ElementAt element_at,
+                 const std::string& separator) {
+  write("[");
+  for (std::size_t i = 0; i < count; ++i) {
+    if (i) write(separator);
+    write(element_at(i).dump());
+  }
+  write("]");
+}
+
+void write_mesh(const Writer& write, const MeshData& mesh) {
+  const auto vec_at = [](const std::vector<Vec3>& table) {
+    return [&table](std::size_t i) { return vec(table[i]); };
+  };
+  const auto triples_of = [](const std::vector<std::uint32_t>& indices) {
+    return [&indices](std::size_t i) { return index_triple(indices, i); };
+  };
+  write("{\"path\":" + Json(mesh.path).dump() + ",\"positions\":");
+  write_array(write, mesh.positions.size(), vec_at(mesh.positions), ",");
+  write(",\"triangles\":");
+  write_array(write, mesh.corners.size() / 3, triples_of(mesh.corners), ",");
+  write(",\"normals\":");
+  write_array(write, mesh.normals.size(), vec_at(mesh.normals), ",");
+  write(",\"triangle_normals\":");
+  write_array(write, mesh.corner_normals.size() / 3, triples_of(mesh.corner_normals), ",");
+  write("}");
+}
+
+}  // namespace
+
+void write_scene_json(const Scene& scene, const Writer& write) {
+  // One key, and one element of each table, a line: a dump reads and compares line by line.
+  const Json head = {{"format", "clrt-scene"},
+                     {"version", kSceneJsonVersion},
+                     {"scene", scene.path},
+                     {"camera", camera(scene)},
+                     {"resolution", Json::array({scene.width, scene.height})},
+                     {"samples", scene.samples},
+                     {"maxdepth", scene.max_depth},
+                     {"background", vec(scene.background)}};
+  write("{\n");
+  for (const auto& [key, value] : head.items()) write(Json(key).dump() + ": " + value.dump() + ",\n");
+  const std::string next = ",\n";
+  write("\"materials\": ");
+  write_array(write, scene.materials.size(), [&](std::size_t i) { return material(scene.materials[i]); }, next);
+  write(",\n\"lights\": ");
+  write_array(write, scene.lights.size(), [&](std::size_t i) { return light(scene.lights[i]); }, next);
+  write(",\n\"objects\": ");
+  write_array(write, scene.instances.size(), [&](std::size_t i) { return object(scene.instances[i]); }, next);
+  write(",\n\"meshes\": [");
+  for (std::size_t i = 0; i < scene.meshes.size(); ++i) {
+    if (i) write(next);
+    write_mesh(write, scene.meshes[i]);
+  }
+  write("],\n\"triangles\": ");
+  write_array(write, scene.triangles.size(), [&](std::size_t i) { return triangle(scene.triangles[i]); }, next);
+  write("\n}\n");
+}
+
+}  // namespace clrt
