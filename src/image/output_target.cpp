@@ -109,5 +109,7 @@ std::unique_ptr<ByteSink> open_output_sink(const std::string& path) {
   return std::make_unique<FdSink>(fd, path, true);
 }
 
+std::unique_ptr<ByteSink> open_output_sink(const ImageOutput& output) { return open_output_sink(output.path); }
+
 }  // namespace image_detail
 }  // namespace clrt

@@ -45,9 +45,7 @@ class ByteSink;
 // Where write_image() puts an output's bytes: standard output ("-"), a stream as it is, or an
 // AtomicFile replacing the target. Errors name the output as the user gave it.
 std::unique_ptr<ByteSink> open_output_sink(const std::string& path);
-inline std::unique_ptr<ByteSink> open_output_sink(const ImageOutput& output) {
-  return open_output_sink(output.path);
-}
+std::unique_ptr<ByteSink> open_output_sink(const ImageOutput& output);
 }  // namespace image_detail
 
 }  // namespace clrt
