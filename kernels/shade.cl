@@ -14,15 +14,18 @@
  * never changes a bit of the image. */
 #include "render/transport_step.h"
 
-CLRT_INLINE void shade_ray(__global const RenderParams* params, __global const Material* materials,
-                           __global const Light* lights, __global const Ray* rays,
-                           __global const Hit* hits, uint first, uint i, __global float4* colour,
-                           __global ShadowRay* shadow_slots, __global uint* shadow_flags,
-                           __global Ray* spawn_slots, __global uint* spawn_flags) {
+/* The parameters both kernels take before and after their own, as the host's ShadeInputs and
+ * ShadeOutputs (src/render/stage_args.hpp) bind them. */
+#define SHADE_INPUT_PARAMS __global const RenderParams* params, __global const Material* materials, __global const Light* lights, __global const Ray* rays, __global const Hit* hits
+#define SHADE_INPUT_ARGS params, materials, lights, rays, hits
+#define SHADE_OUTPUT_PARAMS __global float4* colour, __global ShadowRay* shadow_slots, __global uint* shadow_flags, __global Ray* spawn_slots, __global uint* spawn_flags
+#define SHADE_OUTPUT_ARGS colour, shadow_slots, shadow_flags, spawn_slots, spawn_flags
+
+CLRT_INLINE void shade_ray(SHADE_INPUT_PARAMS, uint first, uint i, SHADE_OUTPUT_PARAMS) {
   const size_t slots = params->shadow_samples;
   const size_t local_index = i - first;
   RaySink sink = queue_sink(shadow_slots + local_index * slots, shadow_flags + local_index * slots,
-                                spawn_slots + CLRT_CHILD_SLOTS * i, spawn_flags + CLRT_CHILD_SLOTS * i);
+                            spawn_slots + CLRT_CHILD_SLOTS * i, spawn_flags + CLRT_CHILD_SLOTS * i);
   if (CLRT_TRANSPORT_SPAWNS) {
     for (size_t s = 0; s < slots; ++s) sink.shadow_flags[s] = 0u;
     for (uint s = 0; s < CLRT_CHILD_SLOTS; ++s) sink.child_flags[s] = 0u;
@@ -32,27 +35,17 @@ CLRT_INLINE void shade_ray(__global const RenderParams* params, __global const M
   colour[i] = as_f4(transport_step(&ray, &hit, materials, lights, params, i, &sink));
 }
 
-__kernel void shade(__global const RenderParams* params, __global const Material* materials,
-                    __global const Light* lights, __global const Ray* rays,
-                    __global const Hit* hits, uint first, uint count, __global float4* colour,
-                    __global ShadowRay* shadow_slots, __global uint* shadow_flags,
-                    __global Ray* spawn_slots, __global uint* spawn_flags) {
+__kernel void shade(SHADE_INPUT_PARAMS, uint first, uint count, SHADE_OUTPUT_PARAMS) {
   const uint j = get_global_id(0);
   if (j >= count) return;
-  shade_ray(params, materials, lights, rays, hits, first, first + j, colour, shadow_slots,
-            shadow_flags, spawn_slots, spawn_flags);
+  shade_ray(SHADE_INPUT_ARGS, first, first + j, SHADE_OUTPUT_ARGS);
 }
 
 /* order[j].x for j < *class_count: the queue indices of the class's rays (compacted on the
  * device; the count stays there). */
-__kernel void shade_sorted(__global const RenderParams* params, __global const Material* materials,
-                           __global const Light* lights, __global const Ray* rays,
-                           __global const Hit* hits, uint first, __global const uint4* order,
-                           __global const uint* class_count, __global float4* colour,
-                           __global ShadowRay* shadow_slots, __global uint* shadow_flags,
-                           __global Ray* spawn_slots, __global uint* spawn_flags) {
+__kernel void shade_sorted(SHADE_INPUT_PARAMS, uint first, __global const uint4* order,
+                           __global const uint* class_count, SHADE_OUTPUT_PARAMS) {
   const uint j = get_global_id(0);
   if (j >= *class_count) return;
-  shade_ray(params, materials, lights, rays, hits, first, order[j].x, colour, shadow_slots,
-            shadow_flags, spawn_slots, spawn_flags);
+  shade_ray(SHADE_INPUT_ARGS, first, order[j].x, SHADE_OUTPUT_ARGS);
 }

@@ -58,7 +58,8 @@ TEST_CASE("the renderer's program holds every stage kernel", "[kernel-source]") 
 
 namespace {
 
-// The definitions in `text` (functions, not prototypes or macros): the words before the name and
+// The definitions in `text` (functions, not prototypes, macros, or enumerations written from an
+// X-list, whose lines also hold a parenthesis): the words before the name and
 // the whole head up to its opening brace, comments removed.
 struct FunctionHead {
   std::string file, head;
@@ -79,7 +80,7 @@ std::vector<FunctionHead> function_heads(const EmbeddedFile& file) {
     const bool starts_definition =
         !line.empty() && (std::isalpha(static_cast<unsigned char>(line[0])) || line[0] == '_') &&
         line.find('(') != std::string::npos && line.rfind("typedef", 0) != 0 &&
-        line.rfind("struct", 0) != 0;
+        line.rfind("struct", 0) != 0 && line.rfind("enum", 0) != 0;
     if (starts_definition) {
       const std::size_t brace = text.find('{', at), semicolon = text.find(';', at);
       if (brace != std::string::npos && brace < semicolon)
