@@ -1,5 +1,6 @@
-// The renderer's program for one device: every kernels/*.cl stage with the fixed options of the
-// device's class (src/device/device_tuning.cpp), so every scene shares one cached build.
+// The renderer's program for one device: every kernels/*.cl file, with the options of the
+// device's profile (device/device_profile.hpp) and of every integrator for its class
+// (integrator_table()), so every scene and integrator shares one cached build.
 #pragma once
 
 #include "device/device_context.hpp"
