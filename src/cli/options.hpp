@@ -32,7 +32,7 @@ struct CliOptions {
   std::optional<int> width, height, samples, max_depth;
   std::optional<RenderMode> mode;
   std::uint32_t seed = 0;
-  std::uint32_t wavefront = 0;  // 0: per device class, see device_tuning.cpp
+  std::uint32_t wavefront = 0;  // 0: per device class, see device_profile.cpp
   std::size_t local_size = 0;   // 0: per device class
   std::uint32_t lanes = 0;      // 0: per device class
   std::optional<unsigned> threads;  // PoCL's CPU threads

@@ -4,13 +4,11 @@
 #include <sstream>
 #include <vector>
 
+#include "device/device_profile.hpp"
 #include "device/kernel_args.hpp"
 #include "device/program_cache.hpp"
 
 namespace clrt {
-
-// Argument information lets the host check every binding against the kernel's own signature.
-const char* const kProgramOptions = "-cl-std=CL1.2 -cl-kernel-arg-info";
 
 namespace {
 
@@ -82,28 +80,6 @@ std::optional<compute::program> build_cached(const ProgramCache& cache,
   return std::nullopt;
 }
 
-}  // namespace
-
-std::string device_program_options(const compute::device& device) {
-  std::string out;
-  // Division and sqrt correctly rounded wherever the device can: with FP_CONTRACT off and
-  // kernels/math/exact.h, every operation then has the bits IEEE 754 gives it.
-  if (device.get_info<cl_device_fp_config>(CL_DEVICE_SINGLE_FP_CONFIG) &
-      CL_FP_CORRECTLY_ROUNDED_DIVIDE_SQRT)
-    out += " -cl-fp32-correctly-rounded-divide-sqrt";
-  // PoCL's prefetch() is empty; Clang's own builtin, which only PoCL's compiler takes here,
-  // makes incoherent rays 20% faster there (kernels/geometry/bvh_stack.h).
-  const std::string platform = device.platform().name();
-  if (platform == "Portable Computing Language") out += " -DCLRT_CLANG_PREFETCH";
-  // Oclgrind is for checking the code as written: unoptimised, since its interpreter runs
-  // some of what its own optimiser makes wrongly (triangle hits on rays that miss), and without
-  // forced inlining, whose output it cannot run (kernels/shared/common.h).
-  if (platform == "Oclgrind") out += " -cl-opt-disable -DCLRT_NO_FORCED_INLINE";
-  return out;
-}
-
-namespace {
-
 // PoCL keeps every kernel it compiles in a cache of its own, and asked for a program's binary it
 // compiles each of the program's kernels once more, in a form for any work-group size: 9.5 s of
 // a 14 s first render of reflect.ray, where a warm build from source costs its cache lookup
@@ -116,8 +92,8 @@ bool driver_keeps_compiled_kernels(const compute::device& device) {
 
 compute::program DeviceContext::build(const std::string& source, const std::string& options,
                                       const CompileNotice& compiling) const {
-  const std::string all_options = std::string(kProgramOptions) + device_program_options(entry_.device) +
-                                  (options.empty() ? "" : " " + options);
+  const std::string all_options =
+      device_profile(entry_.device).program_options + (options.empty() ? "" : " " + options);
   std::optional<ProgramCache> cache;
   if (const auto folder = ProgramCache::folder_from_environment(driver_keeps_compiled_kernels(entry_.device)))
     cache.emplace(*folder, program_identity(entry_.device, source, all_options));

@@ -29,7 +29,8 @@ class DeviceContext {
   compute::command_queue& queue() { return queue_; }
   std::string name() const { return entry_.device.name(); }
 
-  // Builds `source` (already assembled, see kernel_source.hpp), from the program cache when it
+  // Builds `source` (already assembled, see kernel_source.hpp) with the options of the device's
+  // profile (device_profile.hpp) and then `options`, from the program cache when it
   // holds it; else `compiling` is called first, since compiling takes seconds where loading
   // takes milliseconds. A failure throws DeviceError with the device's whole build log.
   compute::program build(const std::string& source, const std::string& options = "",
@@ -57,12 +58,5 @@ class DeviceContext {
   // A buffer of `bytes` as the device gives it, its refusal worded for `what`.
   compute::buffer create_buffer(std::size_t bytes, const std::string& what) const;
 };
-
-// The options every clrt program is built with; fixed so that PoCL's kernel cache stays warm.
-extern const char* const kProgramOptions;
-
-// What `device` adds to them: the choices made from what it reports (correctly rounded division
-// and sqrt, PoCL's prefetch).
-std::string device_program_options(const compute::device& device);
 
 }  // namespace clrt

@@ -4,10 +4,11 @@
 #include <cctype>
 #include <stdexcept>
 
-#include "render/megakernel.hpp"
-#include "render/wavefront.hpp"
-
 namespace clrt {
+
+// Each defined in its integrator's own file.
+const IntegratorEntry& wavefront_integrator();
+const IntegratorEntry& megakernel_integrator();
 
 const std::vector<IntegratorEntry>& integrator_table() {
   static const std::vector<IntegratorEntry> table{wavefront_integrator(), megakernel_integrator()};
@@ -18,6 +19,15 @@ const IntegratorEntry& integrator_entry(IntegratorKind kind) {
   for (const IntegratorEntry& entry : integrator_table())
     if (entry.kind == kind) return entry;
   throw std::logic_error("an integrator kind missing from integrator_table()");
+}
+
+std::string integrator_program_options(DeviceClass device_class) {
+  std::string options;
+  for (const IntegratorEntry& entry : integrator_table()) {
+    const std::string own = entry.program_options(device_class);
+    if (!own.empty()) options += (options.empty() ? "" : " ") + own;
+  }
+  return options;
 }
 
 std::optional<IntegratorKind> parse_integrator(const std::string& name) {

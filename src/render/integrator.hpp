@@ -1,9 +1,8 @@
-// An integrator renders rectangles of the image on one device. Each is one host file (its class
-// and its IntegratorEntry) and one device file, listed once in integrator_table(): the command
-// line, the checks before a render, the experiment runner and the renderer all read that table.
-// Two exist: the wavefront (render/wavefront.hpp), the product, and the megakernel
-// (render/megakernel.hpp), the design it is compared with; both give the same bits
-// (kernels/accumulate.cl says why).
+// An integrator renders rectangles of the image on one device. Each is a host file (its class,
+// derived from WaveLoop, and its IntegratorEntry) and a device file, listed once in
+// integrator_table(): the command line, the checks before a render, the experiment runner, the
+// renderer and the device's program all read that table. The first row is the product; every
+// integrator gives the same bits (kernels/accumulate.cl says why).
 #pragma once
 
 #include <cstdint>
@@ -12,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "device/device_tuning.hpp"
+#include "device/device_profile.hpp"
 #include "render/busy_timeline.hpp"
 #include "render/device_buffer.hpp"
 #include "render/device_frame.hpp"
@@ -26,9 +25,9 @@
 namespace clrt {
 
 struct IntegratorConfig {
-  std::uint32_t capacity = 0;      // rays per queue (wavefront), camera samples per launch (both)
+  std::uint32_t capacity = 0;      // camera samples per wave, and rays per queue where it queues
   std::size_t local_size = 64;
-  std::uint32_t megakernel_depth = 0;  // the megakernel's stack, from the device's program
+  DeviceClass device_class = DeviceClass::Cpu;  // the class the device's program was built for
   bool profile = false;            // per-kernel device times and rays by kind (--stats)
   bool shade_by_class = false;     // RenderOptions::shade_by_class
   BusyTimeline* timeline = nullptr;  // the device's, shared by its lanes (profiling only)
@@ -52,9 +51,12 @@ struct IntegratorEntry {
   IntegratorKind kind;
   const char* name;     // as --integrator takes it
   const char* summary;  // one line for --help
-  // Throws UsageError when a render of `options` cannot run with it on a device tuned as
-  // `tuning`: called before any work.
-  void (*check)(const RenderOptions& options, const DeviceTuning& tuning);
+  // What it adds to the options of the program of a device of `device_class`. A device builds
+  // one program for every scene and integrator, with every row's options (renderer_program.hpp).
+  std::string (*program_options)(DeviceClass device_class);
+  // Throws UsageError when a render of `options` cannot run with it on a device of `profile`
+  // (with the command line's overrides): called before any work.
+  void (*check)(const RenderOptions& options, const DeviceProfile& profile);
   // The buffers one lane of it allocates for waves of `sizes`, each as the allocation names it:
   // the checks before a render hold these against the device's limits.
   std::vector<DeviceBuffer> (*buffers)(const WaveSizes& sizes);
@@ -62,8 +64,18 @@ struct IntegratorEntry {
                                       const DeviceFrame& frame, const IntegratorConfig& config);
 };
 
+// An entry's `make` for the integrator class T.
+template <class T>
+std::unique_ptr<Integrator> make_integrator(DeviceContext& device, const compute::program& program,
+                                            const DeviceFrame& frame,
+                                            const IntegratorConfig& config) {
+  return std::make_unique<T>(device, program, frame, config);
+}
+
 // Every integrator, the product first.
 const std::vector<IntegratorEntry>& integrator_table();
 const IntegratorEntry& integrator_entry(IntegratorKind kind);
+// Every row's program options for a device of `device_class`, joined.
+std::string integrator_program_options(DeviceClass device_class);
 
 }  // namespace clrt

@@ -29,7 +29,7 @@ class Profiler {
   void count_queue(const Global<dev::Ray>& rays, std::uint32_t count, std::uint32_t pass);
   // The shadow rays a compaction left counted on the device.
   void count_shadows(const Global<cl_uint>& count, std::uint32_t pass);
-  // Per-sample counts written by the megakernel: `rows` rows of CLRT_RAY_KINDS.
+  // Per-sample counts an integrator wrote itself: `rows` rows of CLRT_RAY_KINDS.
   void count_rows(const Global<cl_uint>& rows, std::uint32_t row_count, std::uint32_t pass);
 
   // A wave ends: its counts and times join the render's (commit) or are dropped (it is retried).

@@ -92,7 +92,7 @@ MachineBudget measure_budget(const std::vector<DeviceEntry>& devices, const Rend
   for (const DeviceEntry& entry : devices) {
     DeviceBudget d;
     d.name = entry.device.name();
-    const DeviceTuning tuning = render_tuning(entry.device, options);
+    const DeviceProfile tuning = render_tuning(entry.device, options);
     d.wavefront = tuning.wavefront;
     d.lanes = tuning.lanes;
     d.max_allocation = entry.device.get_info<cl_ulong>(CL_DEVICE_MAX_MEM_ALLOC_SIZE);

@@ -30,13 +30,13 @@ struct RenderOptions {
   // fireflies at the price of bias. Infinity: no clamp, the unbiased estimate.
   float max_sample_value = std::numeric_limits<float>::infinity();
   // Rays in flight per queue: device memory grows with it, never with the image size.
-  // 0 picks the device class's (src/device/device_tuning.cpp).
+  // 0 picks the device class's (src/device/device_profile.cpp).
   std::uint32_t wavefront = 0;
   IntegratorKind integrator = IntegratorKind::Wavefront;
   // The wavefront shades each pass's hits class by class (misses, local terms only, mirrors and
   // glass: kernels/sort_hits.cl) instead of in queue order. The image keeps its bits.
   bool shade_by_class = false;
-  // Work-items per work-group; 0 picks the device class's (src/device/device_tuning.cpp).
+  // Work-items per work-group; 0 picks the device class's (src/device/device_profile.cpp).
   std::size_t local_size = 0;
   // Waves in flight per device (each with its own queues); 0 picks the device class's.
   std::uint32_t lanes = 0;

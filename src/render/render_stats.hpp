@@ -18,7 +18,7 @@ namespace clrt {
 struct DeviceReport {
   std::string platform, name, driver, opencl_c, device_class;
   std::size_t local_size = 0;
-  std::uint64_t wavefront = 0;  // rays per queue (camera samples per launch for the megakernel)
+  std::uint64_t wavefront = 0;  // rays per queue (camera samples per wave where there are no queues)
   std::uint32_t lanes = 0;      // waves in flight
   double busy_seconds = 0;      // time some kernel of this device was executing
 };

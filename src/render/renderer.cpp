@@ -9,7 +9,7 @@
 #include <string>
 #include <thread>
 
-#include "device/device_tuning.hpp"
+#include "device/device_profile.hpp"
 #include "geometry/geometry_data.hpp"
 #include "render/frame_setup.hpp"
 #include "render/integrator.hpp"
@@ -48,7 +48,7 @@ double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-DeviceReport report_of(const DeviceEntry& entry, const DeviceTuning& tuning) {
+DeviceReport report_of(const DeviceEntry& entry, const DeviceProfile& tuning) {
   const compute::device& d = entry.device;
   DeviceReport r;
   r.platform = d.platform().name();
@@ -202,7 +202,7 @@ Renderer::Renderer(const Scene& scene, GeometryData geometry, const RenderSetup&
   const auto start = Clock::now();
   for (std::size_t i = 0; i < setup.devices.size(); ++i) {
     const DeviceEntry& entry = setup.devices[i];
-    const DeviceTuning tuning = render_tuning(entry.device, options_);
+    const DeviceProfile tuning = render_tuning(entry.device, options_);
     DeviceWorker w;
     if (i < prepared.size()) {
       w.context = std::move(prepared[i].context);
@@ -218,7 +218,7 @@ Renderer::Renderer(const Scene& scene, GeometryData geometry, const RenderSetup&
     IntegratorConfig config;
     config.capacity = tuning.wavefront;
     config.local_size = tuning.local_size;
-    config.megakernel_depth = tuning.megakernel_depth;
+    config.device_class = tuning.device_class;
     config.profile = setup.profile;
     config.shade_by_class = options_.shade_by_class;
     config.timeline = w.timeline.get();

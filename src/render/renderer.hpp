@@ -31,7 +31,7 @@ struct RenderSetup {
 PixelRect render_region(const RenderOptions& options);
 
 // Throws UsageError when `setup` cannot be rendered as asked (a region outside the image, a
-// megakernel stack too shallow for the depth), before any work.
+// depth the integrator cannot trace on a device), before any work.
 void check_render_setup(const RenderSetup& setup);
 
 class Renderer {

@@ -2,8 +2,8 @@
 
 #include <string>
 
-#include "device/device_tuning.hpp"
 #include "device/kernel_source.hpp"
+#include "render/integrator.hpp"
 #include "shared/scene.h"
 
 namespace clrt {
@@ -22,7 +22,7 @@ dev::u32 transport_model(RenderMode mode) {
 
 compute::program build_renderer_program(const DeviceContext& device, RenderMode mode,
                                         const CompileNotice& compiling) {
-  const std::string options = tuning_for(device.device()).program_options() +
+  const std::string options = integrator_program_options(classify(device.device())) +
                               " -DCLRT_TRANSPORT=" + std::to_string(transport_model(mode));
   return device.build(renderer_program_source(), options, compiling);
 }

@@ -1,7 +1,7 @@
-// The renderer's program for one device and one transport model: every kernels/*.cl stage with
-// the fixed options of the device's class (src/device/device_tuning.cpp) and the mode's model
-// (kernels/render/transport_step.h), so every scene rendered in that mode shares one cached
-// build.
+// The renderer's program for one device and one transport model: every kernels/*.cl file, with
+// the options of the device's profile (device/device_profile.hpp), of every integrator for its
+// class (integrator_table()) and of the mode's transport model (kernels/render/transport_step.h),
+// so every scene and integrator of that mode shares one cached build.
 #pragma once
 
 #include "device/device_context.hpp"

@@ -6,7 +6,7 @@
 #include <stdexcept>
 
 #include "device/device_select.hpp"
-#include "device/device_tuning.hpp"
+#include "device/device_profile.hpp"
 #include "device/kernel_source.hpp"
 #include "render/renderer_program.hpp"
 
@@ -20,7 +20,7 @@ DeviceContext& device() {
   return context;
 }
 
-std::size_t local_size() { return tuning_for(device().device()).local_size; }
+std::size_t local_size() { return device_profile(device().device()).local_size; }
 
 std::string test_device_spec() {
   const char* spec = std::getenv("CLRT_TEST_DEVICE");

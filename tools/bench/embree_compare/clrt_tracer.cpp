@@ -3,7 +3,7 @@
 #include <chrono>
 #include <utility>
 
-#include "device/device_tuning.hpp"
+#include "device/device_profile.hpp"
 #include "device/transfer.hpp"
 #include "shared/scene.h"
 
@@ -29,7 +29,7 @@ ClrtTracer::ClrtTracer(DeviceContext& device, const compute::program& program,
       params_(upload(device, std::vector<dev::RenderParams>{tracing_params()}, "render parameters")),
       intersect_(program),
       shadow_(program),
-      local_size_(tuning_for(device.device()).local_size) {}
+      local_size_(device_profile(device.device()).local_size) {}
 
 ClrtBatch ClrtTracer::closest_batch(const RaySet& set) {
   std::vector<dev::Ray> rays;

@@ -8,7 +8,7 @@
 #include <sys/resource.h>
 
 #include "device/kernel_source.hpp"
-#include "device/device_tuning.hpp"
+#include "device/device_profile.hpp"
 #include "device/transfer.hpp"
 #include "geometry/bvh_builder.hpp"
 #include "shared/ray.h"
@@ -88,7 +88,7 @@ Tracer::Tracer(DeviceContext& device, const GeometryData& geometry)
       program_(device.build(assemble_kernel_source(kSource, "bench_bvh.cl"))),
       closest_(program_),
       any_(program_),
-      local_size_(tuning_for(device.device()).local_size) {}
+      local_size_(device_profile(device.device()).local_size) {}
 
 Throughput Tracer::closest_hit_mrays(const RaySet& rays, int runs) {
   return measure(closest_, &BvhClosestHitsArgs::hits, rays, runs);
