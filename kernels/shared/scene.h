@@ -116,7 +116,8 @@ typedef struct RenderParams {
   u32 light_count;    /* entries in the light table */
   u32 shadow_samples; /* sum of Light.samples: shadow-ray slots per shading point */
   u32 max_depth;
-  u32 mode;           /* CLRT_MODE_* */
+  u32 mode;           /* CLRT_MODE_*: the program's transport model was built for it
+                       * (-DCLRT_TRANSPORT); the host's passes follow it */
   float epsilon;
   float max_sample_value; /* a camera sample whose largest channel exceeds it is scaled down to it
                            * before a pixel's samples are summed (--max-sample-value); INFINITY:

@@ -89,6 +89,15 @@ std::vector<dev::Light> make_lights(const Scene& scene) {
   return out;
 }
 
+dev::u32 device_mode(RenderMode mode) {
+  switch (mode) {
+    case RenderMode::Trace: return CLRT_MODE_TRACE;
+    case RenderMode::Cast: return CLRT_MODE_CAST;
+    case RenderMode::Path: return CLRT_MODE_PATH;
+  }
+  return CLRT_MODE_TRACE;
+}
+
 dev::RenderParams make_params(const Scene& scene, const RenderOptions& options) {
   dev::RenderParams p{};
   p.background = f4_of(scene.background);
@@ -103,11 +112,7 @@ dev::RenderParams make_params(const Scene& scene, const RenderOptions& options) 
   }
   p.ambient = f4_of(ambient);
   p.max_depth = static_cast<dev::u32>(options.max_depth);
-  switch (options.mode) {
-    case RenderMode::Trace: p.mode = CLRT_MODE_TRACE; break;
-    case RenderMode::Cast: p.mode = CLRT_MODE_CAST; break;
-    case RenderMode::Path: p.mode = CLRT_MODE_PATH; break;
-  }
+  p.mode = device_mode(options.mode);
   p.epsilon = kEpsilon;
   p.max_sample_value = options.max_sample_value;
   return p;

@@ -15,6 +15,10 @@ dev::Camera make_camera(const CameraSpec& camera, const RenderOptions& options);
 std::vector<dev::Material> make_materials(const Scene& scene);
 // Non-ambient lights in file order; ambient lights go into RenderParams::ambient.
 std::vector<dev::Light> make_lights(const Scene& scene);
+// The CLRT_MODE_* value of a mode: RenderParams.mode, and the transport model its program is built
+// with (-DCLRT_TRANSPORT, src/render/renderer_program.cpp).
+dev::u32 device_mode(RenderMode mode);
+
 dev::RenderParams make_params(const Scene& scene, const RenderOptions& options);
 
 // Epsilon of the contract, in world units: the origin offset and the smallest accepted t.
