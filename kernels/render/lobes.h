@@ -33,9 +33,9 @@ CLRT_INLINE PathLobes path_lobes(__global const Material* m) {
   most += max3(l.albedo[CLRT_LOBE_##LOBE]);
   CLRT_LOBES(CLRT_LOBE_ALBEDO)
 #undef CLRT_LOBE_ALBEDO
+  if (most > 1.0f)
+    for (uint k = 0; k < CLRT_LOBE_COUNT; ++k) l.albedo[k] /= most;
   float total = 0.0f;
-  for (uint k = 0; k < CLRT_LOBE_COUNT; ++k)
-    if (most > 1.0f) l.albedo[k] /= most;
 #define CLRT_LOBE_CHOICE(LOBE, name)                                                \
   l.choice[CLRT_LOBE_##LOBE] = name##_lobe_choice_weight(l.albedo[CLRT_LOBE_##LOBE]); \
   total += l.choice[CLRT_LOBE_##LOBE];

@@ -2,17 +2,11 @@
 
 #include <cmath>
 
+#include "math/device_vector.hpp"
 #include "scene/light_kinds.hpp"
 #include "scene/limits.hpp"
 
 namespace clrt {
-namespace {
-
-dev::f4 f4_of(const Vec3& v) {
-  return {static_cast<float>(v.x), static_cast<float>(v.y), static_cast<float>(v.z), 0.0f};
-}
-
-}  // namespace
 
 RenderOptions RenderOptions::from_scene(const Scene& scene) {
   RenderOptions o;

@@ -4,6 +4,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include "math/device_vector.hpp"
 #include "math/stratification_grid.hpp"
 #include "scene/limits.hpp"
 #include "scene/number.hpp"
@@ -81,10 +82,6 @@ void area(LightSpec& light, const CommandArgs& a) {
 std::int64_t no_samples(const LightSpec&) { return 0; }
 std::int64_t one_sample(const LightSpec&) { return 1; }
 std::int64_t its_samples(const LightSpec& light) { return light.samples; }
-
-dev::f4 f4_of(const Vec3& v) {
-  return {static_cast<float>(v.x), static_cast<float>(v.y), static_cast<float>(v.z), 0.0f};
-}
 
 void point_record(const LightSpec&, dev::Light& d) { d.kind = dev::CLRT_LIGHT_POINT; }
 

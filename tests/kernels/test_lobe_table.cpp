@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "cl_fixture.hpp"
+#include "point_facing_kernel.hpp"
 #include "sphere_chi_square.hpp"
 
 using namespace clrt;
@@ -16,7 +17,7 @@ using namespace clrt::test;
 
 namespace {
 
-const char* const kKernels = R"CL(
+const std::string kKernels = std::string(kPointFacingKernelCode) + R"CL(
 #include "render/lobes.h"
 
 /* out[0]: the number of lobes; out[1 + k]: whether lobe k is smooth. */
@@ -30,18 +31,6 @@ CLRT_INLINE PathLobes only_lobe(__global const Material* m, uint k) {
   PathLobes l = path_lobes(m);
   for (uint j = 0; j < CLRT_LOBE_COUNT; ++j) l.choice[j] = j == k ? 1.0f : 0.0f;
   return l;
-}
-
-/* The front of a surface with normal n, seen from wo. */
-CLRT_INLINE ShadePoint point_facing(float4 normal, float4 wo) {
-  ShadePoint sp;
-  sp.p = (float3)(0.0f);
-  sp.ng = sp.n = normal.xyz;
-  sp.v = wo.xyz;
-  sp.base = (float3)(1.0f);
-  sp.front = true;
-  sp.material = 0u;
-  return sp;
 }
 
 /* Draw i from lobe k: out[i] = (direction, 0 none drawn, 1 smooth, 2 delta). */

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "cl_fixture.hpp"
+#include "point_facing_kernel.hpp"
 #include "sphere_chi_square.hpp"
 
 using namespace clrt;
@@ -18,7 +19,7 @@ using namespace clrt::test;
 
 namespace {
 
-const char* const kKernels = R"CL(
+const std::string kKernels = std::string(kPointFacingKernelCode) + R"CL(
 #include "render/path_step.h"
 
 /* Sample i continues a path arriving along -wo at a surface with normal n (front side). */
@@ -26,13 +27,7 @@ __kernel void draw_continuations(__global const Material* material, float4 norma
                            __global float4* directions, __global float4* weights) {
   const uint i = get_global_id(0);
   if (i >= count) return;
-  ShadePoint sp;
-  sp.p = (float3)(0.0f);
-  sp.ng = sp.n = normal.xyz;
-  sp.v = wo.xyz;
-  sp.base = (float3)(1.0f);
-  sp.front = true;
-  sp.material = 0u;
+  const ShadePoint sp = point_facing(normal, wo);
   Ray ray;
   vstore3((float3)(0.0f), 0, ray.origin);
   ray.radiance_scale = 1.0f;
