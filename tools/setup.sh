@@ -20,7 +20,7 @@ packages=(
   libpng-dev                     # PNG output and input
   zlib1g-dev                     # the PNG writer's compression, on every core (libpng-dev pulls it in too)
   libopenexr-dev                 # OpenEXR output and input (half or 32-bit float HDR, tiles' data windows)
-  nlohmann-json3-dev             # JSON for --stats=json and the experiment records
+  nlohmann-json3-dev             # JSON: --stats=json, --dump-scene and the experiment records
   libgif-dev                     # giflib: clrt-img convert's animated GIFs (the tree's configure needs it)
 )
 # What the tests and the other programs add (--tests).
