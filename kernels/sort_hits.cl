@@ -6,7 +6,7 @@
  * In: hits [first, first + count). Out: indices[j] = (first + j, 0, 0, 0) and, for every class
  * k, flags[k * stride + j] = 1 when ray first + j is of class k, else 0: one launch flags all
  * the classes, and the wavefront compacts each class's flagged indices into its shading order
- * (src/render/wavefront.cpp). */
+ * (src/render/integrators/wavefront.cpp). */
 #include "render/common.h"
 
 /* The classes, 0 to CLRT_SHADE_CLASSES - 1 (kernels/shared/ray.h). */

@@ -36,7 +36,7 @@ struct CliOptions {
   std::size_t local_size = 0;   // 0: per device class
   std::uint32_t lanes = 0;      // 0: per device class
   std::optional<unsigned> threads;  // PoCL's CPU threads
-  IntegratorKind integrator = IntegratorKind::Wavefront;
+  std::string integrator = "wavefront";  // a name of integrator_table()
   bool shade_by_class = false;
   RegionRequest region;
   AnimationRequest animation;

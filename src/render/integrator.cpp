@@ -15,10 +15,10 @@ const std::vector<IntegratorEntry>& integrator_table() {
   return table;
 }
 
-const IntegratorEntry& integrator_entry(IntegratorKind kind) {
+const IntegratorEntry& integrator_entry(const std::string& name) {
   for (const IntegratorEntry& entry : integrator_table())
-    if (entry.kind == kind) return entry;
-  throw std::logic_error("an integrator kind missing from integrator_table()");
+    if (name == entry.name) return entry;
+  throw std::logic_error("no integrator '" + name + "' in integrator_table()");
 }
 
 std::string integrator_program_options(DeviceClass device_class) {
@@ -30,12 +30,12 @@ std::string integrator_program_options(DeviceClass device_class) {
   return options;
 }
 
-std::optional<IntegratorKind> parse_integrator(const std::string& name) {
+std::optional<std::string> parse_integrator(const std::string& name) {
   std::string lower = name;
   std::transform(lower.begin(), lower.end(), lower.begin(),
                  [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   for (const IntegratorEntry& entry : integrator_table())
-    if (lower == entry.name) return entry.kind;
+    if (lower == entry.name) return lower;
   return std::nullopt;
 }
 

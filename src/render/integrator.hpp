@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "device/device_profile.hpp"
+#include "device/kernel_args.hpp"
 #include "render/busy_timeline.hpp"
 #include "render/device_buffer.hpp"
 #include "render/device_frame.hpp"
@@ -48,8 +49,7 @@ class Integrator {
 };
 
 struct IntegratorEntry {
-  IntegratorKind kind;
-  const char* name;     // as --integrator takes it
+  const char* name;     // as --integrator takes it, and RenderOptions::integrator holds it
   const char* summary;  // one line for --help
   // What it adds to the options of the program of a device of `device_class`. A device builds
   // one program for every scene and integrator, with every row's options (renderer_program.hpp).
@@ -62,7 +62,25 @@ struct IntegratorEntry {
   std::vector<DeviceBuffer> (*buffers)(const WaveSizes& sizes);
   std::unique_ptr<Integrator> (*make)(DeviceContext& device, const compute::program& program,
                                       const DeviceFrame& frame, const IntegratorConfig& config);
+  // Every way the kernels it launches differ in `program` from the argument structures it binds
+  // them with (empty when they agree): tests/kernels/test_bindings.cpp runs it for every row, so
+  // an integrator's structures may live in its own file.
+  std::vector<std::string> (*binding_mismatches)(const compute::program& program);
 };
+
+// An entry's `binding_mismatches` for an integrator that launches kernels through Args...
+template <class... Args>
+std::vector<std::string> kernel_binding_mismatches(const compute::program& program) {
+  std::vector<std::string> out;
+  (
+      [&] {
+        const compute::kernel kernel(program, Args::kName);
+        for (std::string& line : signature_mismatches(kernel, expected_args(Args{})))
+          out.push_back(std::move(line));
+      }(),
+      ...);
+  return out;
+}
 
 // An entry's `make` for the integrator class T.
 template <class T>
@@ -74,7 +92,7 @@ std::unique_ptr<Integrator> make_integrator(DeviceContext& device, const compute
 
 // Every integrator, the product first.
 const std::vector<IntegratorEntry>& integrator_table();
-const IntegratorEntry& integrator_entry(IntegratorKind kind);
+const IntegratorEntry& integrator_entry(const std::string& name);
 // Every row's program options for a device of `device_class`, joined.
 std::string integrator_program_options(DeviceClass device_class);
 

@@ -11,7 +11,8 @@
 
 namespace clrt {
 
-std::optional<IntegratorKind> parse_integrator(const std::string& name);  // any case
+// The integrator named `name` in any case, as its row spells it.
+std::optional<std::string> parse_integrator(const std::string& name);
 std::vector<std::string> integrator_names();
 // "NAME: SUMMARY" of each integrator, the product first, joined by "; ": what --help says.
 std::string integrator_summaries();

@@ -6,6 +6,7 @@
 #include <limits>
 
 #include <optional>
+#include <string>
 
 #include "render/pixel_rect.hpp"
 #include "scene/scene.hpp"
@@ -15,9 +16,6 @@ namespace clrt {
 // Whitted ray tracing (trace), local shading only (cast), Monte Carlo path tracing (path,
 // docs/path-tracing.md).
 enum class RenderMode { Trace, Cast, Path };
-
-// The wavefront is the product; the megakernel is the design it is measured against.
-enum class IntegratorKind { Wavefront, Megakernel };
 
 struct RenderOptions {
   int width = 500, height = 300;
@@ -32,7 +30,9 @@ struct RenderOptions {
   // Rays in flight per queue: device memory grows with it, never with the image size.
   // 0 picks the device class's (src/device/device_profile.cpp).
   std::uint32_t wavefront = 0;
-  IntegratorKind integrator = IntegratorKind::Wavefront;
+  // The name of a row of integrator_table() (render/integrator.hpp), as --integrator takes it:
+  // the wavefront is the product, the others the designs it is measured against.
+  std::string integrator = "wavefront";
   // The wavefront shades each pass's hits class by class (misses, local terms only, mirrors and
   // glass: kernels/sort_hits.cl) instead of in queue order. The image keeps its bits.
   bool shade_by_class = false;

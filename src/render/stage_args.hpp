@@ -1,4 +1,5 @@
-// The argument structure of every kernel of the renderer's program, one per kernel, each field
+// The argument structure of each kernel of the wavefront's stages and of the kernels every
+// integrator shares (an integrator's own kernel has its structure in its file), one per kernel, each field
 // named as the kernel's parameter and listed once, in order, by CLRT_KERNEL_ARGS. Nothing else
 // binds kernel arguments (TypedKernel); tests/kernels/test_bindings.cpp checks each structure
 // against its kernel's signature as the device reports it.
@@ -148,20 +149,6 @@ struct ResolveArgs {
 
   CLRT_KERNEL_ARGS(sample_colour, samples, first_sample, total_samples, pixel_count,
                    max_sample_value, pixels)
-};
-
-struct MegakernelArgs {
-  static constexpr const char* kName = "megakernel";
-  SceneArgs scene;
-  Global<const dev::RenderParams> params;
-  Global<const dev::Camera> camera;
-  Global<const dev::Material> materials;
-  Global<const dev::Light> lights;
-  WaveArgs wave;
-  Global<dev::f4> sample_colour;
-  Global<cl_uint> ray_counts;  // CLRT_RAY_KINDS per camera sample
-
-  CLRT_KERNEL_ARGS(scene, params, camera, materials, lights, wave, sample_colour, ray_counts)
 };
 
 struct CompactCountArgs {

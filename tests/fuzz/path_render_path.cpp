@@ -12,6 +12,7 @@
 #include "render/renderer.hpp"
 #include "render/usage_error.hpp"
 #include "scene/scene.hpp"
+#include "render/integrator_names.hpp"
 
 namespace clrt::fuzz {
 
@@ -30,7 +31,7 @@ Outcome path_render(const std::string& path) {
   setup.options.samples = 4;
   setup.options.max_depth = std::min(setup.options.max_depth, 4);
   setup.devices = select_devices(spec && *spec ? spec : "cpu");
-  for (const IntegratorKind integrator : {IntegratorKind::Wavefront, IntegratorKind::Megakernel}) {
+  for (const std::string& integrator : integrator_names()) {
     setup.options.integrator = integrator;
     RenderStats stats;
     FloatImage image;

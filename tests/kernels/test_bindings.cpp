@@ -1,5 +1,5 @@
-// Every kernel's argument structure (src/render/stage_args.hpp, src/geometry/bvh_query_args.hpp)
-// against the kernel's own signature as the device reports it: names, types, address space and
+// Every kernel's argument structure (each integrator's, through its row of integrator_table();
+// src/render/stage_args.hpp, src/geometry/bvh_query_args.hpp) against the kernel's own signature as the device reports it: names, types, address space and
 // constness, in order. And the check itself: a kernel whose signature disagrees with its
 // structure is reported, naming the argument.
 #include <catch2/catch.hpp>
@@ -10,17 +10,19 @@
 
 #include "cl_fixture.hpp"
 #include "geometry/bvh_query_args.hpp"
+#include "render/integrator.hpp"
 #include "render/stage_args.hpp"
 
 using namespace clrt;
 
 namespace {
 
-using RendererKernels =
-    std::tuple<GenerateArgs, IntersectArgs, ShadeArgs, ShadeSortedArgs, ClassifyHitsArgs,
-               ShadowArgs, GatherShadowsArgs, AccumulateSamplesArgs, ResolveArgs, MegakernelArgs,
-               CompactCountArgs, CompactScanArgs, CompactScatterArgs, CountRayKindsArgs,
-               FoldRayCountsArgs, AddRayKindsArgs, AddShadowRaysArgs, CommitRayCountsArgs>;
+// The kernels every integrator shares (the resolver's, the compactor's, the profiler's); each
+// integrator's own are checked through its row.
+using SharedKernels =
+    std::tuple<ResolveArgs, CompactCountArgs, CompactScanArgs, CompactScatterArgs,
+               CountRayKindsArgs, FoldRayCountsArgs, AddRayKindsArgs, AddShadowRaysArgs,
+               CommitRayCountsArgs>;
 
 template <class Args>
 std::vector<std::string> mismatches(const compute::program& program) {
@@ -58,7 +60,15 @@ __kernel void generate(__global const Camera* camera, uint region_x, uint region
 
 }  // namespace
 
-TEST_CASE("every renderer kernel's argument structure matches its signature", "[bindings]") {
+TEST_CASE("every integrator's kernels match the argument structures it binds", "[bindings]") {
+  const compute::program& program = test::renderer_program();
+  for (const IntegratorEntry& entry : integrator_table()) {
+    INFO(entry.name);
+    CHECK(joined(entry.binding_mismatches(program)).empty());
+  }
+}
+
+TEST_CASE("the shared kernels' argument structures match their signatures", "[bindings]") {
   const compute::program& program = test::renderer_program();
   std::apply(
       [&](auto... args) {
@@ -70,7 +80,7 @@ TEST_CASE("every renderer kernel's argument structure matches its signature", "[
             }(),
             ...);
       },
-      RendererKernels{});
+      SharedKernels{});
 }
 
 TEST_CASE("the BVH query kernels' argument structures match their signatures", "[bindings]") {

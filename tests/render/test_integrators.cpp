@@ -12,6 +12,7 @@
 #include "render/renderer.hpp"
 #include "render/usage_error.hpp"
 #include "render_support.hpp"
+#include "render/integrator_names.hpp"
 
 using namespace clrt;
 using namespace clrt::test;
@@ -55,14 +56,15 @@ const std::vector<Variant> kVariants = {
 
 }  // namespace
 
-TEST_CASE("the megakernel gives the wavefront's bits on every repository scene",
+TEST_CASE("every integrator gives the product's bits on every repository scene",
           "[integrators]") {
   const std::vector<std::string> scenes = repository_scenes();
+  const std::vector<std::string> integrators = integrator_names();
   REQUIRE(scenes.size() >= 17);
+  REQUIRE(integrators.size() >= 2);
   for (const std::string& path : scenes) {
     for (const Variant& v : kVariants) {
-      INFO(path << ", " << v.what);
-      const auto with = [&](IntegratorKind kind) {
+      const auto with = [&](const std::string& kind) {
         return [&, kind](RenderOptions& o) {
           o.width = 48;
           o.height = 32;
@@ -70,9 +72,11 @@ TEST_CASE("the megakernel gives the wavefront's bits on every repository scene",
           o.integrator = kind;
         };
       };
-      const FloatImage wavefront = render_file(path, with(IntegratorKind::Wavefront));
-      const FloatImage megakernel = render_file(path, with(IntegratorKind::Megakernel));
-      CHECK(same_bits(wavefront, megakernel));
+      const FloatImage product = render_file(path, with(integrators.front()));
+      for (std::size_t i = 1; i < integrators.size(); ++i) {
+        INFO(path << ", " << v.what << ", " << integrators[i]);
+        CHECK(same_bits(product, render_file(path, with(integrators[i]))));
+      }
     }
   }
 }
@@ -81,7 +85,7 @@ TEST_CASE("the megakernel refuses a maximum depth its stack cannot hold", "[inte
   const Scene scene = load_scene(test_scene("reflect.ray"));
   RenderSetup setup;
   setup.options = RenderOptions::from_scene(scene);
-  setup.options.integrator = IntegratorKind::Megakernel;
+  setup.options.integrator = "megakernel";
   setup.options.max_depth = 33;  // the CPU class's stack holds 32
   setup.devices = select_devices("cpu");
   CHECK_THROWS_AS(check_render_setup(setup), UsageError);
@@ -89,7 +93,7 @@ TEST_CASE("the megakernel refuses a maximum depth its stack cannot hold", "[inte
   CHECK_THROWS_WITH(render(scene, setup, stats), Catch::Contains("--integrator wavefront"));
   setup.options.max_depth = 32;
   CHECK_NOTHROW(check_render_setup(setup));
-  setup.options.integrator = IntegratorKind::Wavefront;
+  setup.options.integrator = "wavefront";
   setup.options.max_depth = 1000;
   CHECK_NOTHROW(check_render_setup(setup));
 }

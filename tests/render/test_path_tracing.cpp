@@ -12,6 +12,7 @@
 
 #include "render_support.hpp"
 #include "scratch_dir.hpp"
+#include "render/integrator_names.hpp"
 
 using namespace clrt;
 using namespace clrt::test;
@@ -57,7 +58,7 @@ TEST_CASE("a white furnace: materials that lose no light render every pixel 1", 
                                "1 1 1 0 0 1 0 0 0",           // Phong, exponent 0: 1 / pi
                                "1 1 1 0 0.5 0.5 0 0 0"}) {    // Lambertian and Phong, exponent 0
     INFO("material " << material);
-    for (const IntegratorKind integrator : {IntegratorKind::Wavefront, IntegratorKind::Megakernel}) {
+    for (const std::string& integrator : integrator_names()) {
       const FloatImage image = render_file(furnace(dir, material), [&](RenderOptions& o) {
         path_mode(o);
         o.integrator = integrator;
@@ -174,7 +175,7 @@ TEST_CASE("a plane under a near area light with one shadow ray matches its close
                          "light 1 1 1 area -1 0.5 -1 2 0 0 0 0 2 1\n";
   const double expected = 0.5 * form_factor_below_centre(1, 1, 0.5);
   for (const int depth : {0, 1, 2, 5}) {
-    for (const IntegratorKind integrator : {IntegratorKind::Wavefront, IntegratorKind::Megakernel}) {
+    for (const std::string& integrator : integrator_names()) {
       const FloatImage image = render_file(path, [&](RenderOptions& o) {
         o.mode = RenderMode::Path;
         o.samples = 4096;
@@ -197,7 +198,7 @@ TEST_CASE("light that reaches the last vertex through a mirror counts", "[path]"
   std::ofstream(path) << "eye 0 0.25 0\nlookat 0 0 0\nup 0 0 -1\nfov 10\nresolution 4 4\n"
                          "background 0 0 0\nmaterial 1 1 1 0 0 0 1 0.75 0\nplane\n"
                          "light 2 2 2 area -1 0.5 -1 2 0 0 0 0 2 1\n";
-  for (const IntegratorKind integrator : {IntegratorKind::Wavefront, IntegratorKind::Megakernel}) {
+  for (const std::string& integrator : integrator_names()) {
     const FloatImage image = render_file(path, [&](RenderOptions& o) {
       o.mode = RenderMode::Path;
       o.max_depth = 0;

@@ -104,7 +104,7 @@ TEST_CASE("a queue larger than the device's largest allocation exits 1 naming it
 TEST_CASE("each integrator is checked against the buffers it allocates", "[limits]") {
   const Scene scene = one_sphere();
   RenderOptions o = options_of(scene);
-  o.integrator = IntegratorKind::Megakernel;
+  o.integrator = "megakernel";
   MachineBudget budget = roomy_machine();
   // The wavefront's spawned ray slots (2 MiB) exist only in the wavefront's queues.
   budget.devices[0].max_allocation = 2 * 16384 * 64 - 1;
@@ -155,13 +155,13 @@ TEST_CASE("the checked buffer sizes are the ones the renderer allocates", "[limi
   struct Case {
     std::string options;
     std::uint64_t wavefront, lanes;
-    IntegratorKind integrator;
+    std::string integrator;
   };
   // The scene asks for 4 samples.
-  for (const Case& c : {Case{" --lanes 1", 16384, 1, IntegratorKind::Wavefront},
-                        Case{" --spp 4 --wavefront 1024 --lanes 3", 1024, 3, IntegratorKind::Wavefront},
+  for (const Case& c : {Case{" --lanes 1", 16384, 1, "wavefront"},
+                        Case{" --spp 4 --wavefront 1024 --lanes 3", 1024, 3, "wavefront"},
                         Case{" --integrator megakernel --wavefront 2048 --lanes 2", 2048, 2,
-                             IntegratorKind::Megakernel}}) {
+                             "megakernel"}}) {
     INFO(c.options);
     const test::CommandResult r = test::run_clrt(test::quoted(scene_path) +
                                                  " -q --resolution 32x16 --stats=json -o " +

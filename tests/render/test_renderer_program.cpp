@@ -38,10 +38,10 @@ TEST_CASE("the renderer's program is built with every integrator's options and t
 
 TEST_CASE("the megakernel's stack depth is its class's, as docs/devices.md gives it",
           "[integrators]") {
-  const IntegratorEntry& megakernel = integrator_entry(IntegratorKind::Megakernel);
+  const IntegratorEntry& megakernel = integrator_entry("megakernel");
   CHECK(megakernel.program_options(DeviceClass::Cpu) == "-DCLRT_MEGAKERNEL_DEPTH=32");
   CHECK(megakernel.program_options(DeviceClass::Gpu) == "-DCLRT_MEGAKERNEL_DEPTH=16");
   CHECK(megakernel.program_options(DeviceClass::Other) == "-DCLRT_MEGAKERNEL_DEPTH=16");
-  CHECK(integrator_entry(IntegratorKind::Wavefront).program_options(DeviceClass::Cpu).empty());
+  CHECK(integrator_entry("wavefront").program_options(DeviceClass::Cpu).empty());
   CHECK(integrator_program_options(DeviceClass::Gpu) == "-DCLRT_MEGAKERNEL_DEPTH=16");
 }

@@ -15,6 +15,7 @@
 #include "render/renderer.hpp"
 #include "render_support.hpp"
 #include "scene/scene.hpp"
+#include "render/integrator_names.hpp"
 
 using namespace clrt;
 using namespace clrt::test;
@@ -48,7 +49,7 @@ TEST_CASE("renders that share one context and program keep their bits, render af
     setup.devices = select_devices(test_device_spec());
     const std::vector<PreparedDevice> prepared = prepare_devices(setup.devices, setup.options.mode);
     REQUIRE(prepared.size() == 1);
-    for (IntegratorKind integrator : {IntegratorKind::Wavefront, IntegratorKind::Megakernel}) {
+    for (const std::string& integrator : integrator_names()) {
       setup.options.integrator = integrator;
       const FloatImage first = render_on(scene, setup, prepared.front());
       for (int i = 1; i < 30; ++i) {

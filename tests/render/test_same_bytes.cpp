@@ -10,6 +10,7 @@
 #include "cl_fixture.hpp"
 #include "render/integrator.hpp"
 #include "render_support.hpp"
+#include "render/integrator_names.hpp"
 
 using namespace clrt;
 using namespace clrt::test;
@@ -37,7 +38,7 @@ TEST_CASE("the test device renders PoCL's bits on every repository scene", "[sam
   for (const char* name : {"area.ray", "glass.ray", "test2.ray"}) scenes.push_back(test_scene(name));
   REQUIRE(scenes.size() >= 20);
   for (const std::string& path : scenes) {
-    for (const IntegratorKind integrator : {IntegratorKind::Wavefront, IntegratorKind::Megakernel}) {
+    for (const std::string& integrator : integrator_names()) {
       const auto with = [&](const Setting& s) {
         return [&, s](RenderOptions& o) {
           o.width = width;
@@ -50,7 +51,7 @@ TEST_CASE("the test device renders PoCL's bits on every repository scene", "[sam
       };
       const FloatImage pocl = render_file(path, with(settings[0]), "portable computing language");
       for (const Setting& s : settings) {
-        INFO(path << ", " << (integrator == IntegratorKind::Wavefront ? "wavefront" : "megakernel")
+        INFO(path << ", " << integrator
                   << ", " << s.what << ", on " << device().name());
         CHECK(same_bits(render_file(path, with(s)), pocl));
       }
@@ -62,7 +63,7 @@ TEST_CASE("the test device renders PoCL's bits in path mode", "[same-bytes][path
   const bool interpreter = device().device().platform().name() == "Oclgrind";
   const int side = interpreter ? 8 : 32;
   for (const std::string& path : {test_scene("path-lobes.ray"), test_scene("area.ray")}) {
-    for (const IntegratorKind integrator : {IntegratorKind::Wavefront, IntegratorKind::Megakernel}) {
+    for (const std::string& integrator : integrator_names()) {
       const auto with = [&](std::uint32_t wavefront) {
         return [&, wavefront](RenderOptions& o) {
           o.width = o.height = side;

@@ -50,7 +50,7 @@ namespace {
 // A path-traced scene at a size where a wavefront of 1024 rays on one lane takes it in many
 // rounds.
 RenderSetup path_setup(const Scene& scene, int samples, std::uint32_t wavefront,
-                       IntegratorKind integrator) {
+                       const std::string& integrator) {
   RenderSetup setup;
   setup.options = RenderOptions::from_scene(scene);
   setup.options.mode = RenderMode::Path;
@@ -69,7 +69,7 @@ const Scene& glossy_scene() {
   return scene;
 }
 
-FloatImage path_render(std::uint32_t wavefront, IntegratorKind integrator, std::uint64_t& rounds) {
+FloatImage path_render(std::uint32_t wavefront, const std::string& integrator, std::uint64_t& rounds) {
   RenderStats stats;
   FloatImage image = render(glossy_scene(), path_setup(glossy_scene(), 12, wavefront, integrator), stats);
   rounds = stats.sample_rounds;
@@ -80,9 +80,9 @@ FloatImage path_render(std::uint32_t wavefront, IntegratorKind integrator, std::
 
 TEST_CASE("rounds of samples give the bits of one round", "[rounds][path]") {
   std::uint64_t one = 0, many = 0, mega = 0;
-  const FloatImage whole = path_render(1u << 20, IntegratorKind::Wavefront, one);
-  const FloatImage split = path_render(1024, IntegratorKind::Wavefront, many);
-  const FloatImage megakernel = path_render(1024, IntegratorKind::Megakernel, mega);
+  const FloatImage whole = path_render(1u << 20, "wavefront", one);
+  const FloatImage split = path_render(1024, "wavefront", many);
+  const FloatImage megakernel = path_render(1024, "megakernel", mega);
   CHECK(one == 1);
   CHECK(many == 12);  // 12288 pixels, 4 x 1024 rays a round at least: one sample a round
   CHECK(mega == many);
@@ -91,7 +91,7 @@ TEST_CASE("rounds of samples give the bits of one round", "[rounds][path]") {
 }
 
 TEST_CASE("the progress line counts samples per pixel in rounds", "[rounds][progress]") {
-  const RenderSetup setup = path_setup(glossy_scene(), 3, 1024, IntegratorKind::Wavefront);
+  const RenderSetup setup = path_setup(glossy_scene(), 3, 1024, "wavefront");
   std::string text;
   Progress progress({[&](const std::string& t) { text += t; }, [] { return 120; }},
                     std::chrono::steady_clock::now);

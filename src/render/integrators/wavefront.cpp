@@ -1,4 +1,4 @@
-#include "render/wavefront.hpp"
+#include "render/integrators/wavefront.hpp"
 
 #include <algorithm>
 #include <string>
@@ -28,11 +28,14 @@ std::vector<DeviceBuffer> wavefront_buffers(const WaveSizes& s) {
 
 const IntegratorEntry& wavefront_integrator() {
   static const IntegratorEntry entry{
-      IntegratorKind::Wavefront, "wavefront",
+      "wavefront",
       "one kernel per stage, queues compacted every pass (default)",
       [](DeviceClass) { return std::string(); },
       [](const RenderOptions&, const DeviceProfile&) {},  // any depth: an overflow halves the wave
-      wavefront_buffers, make_integrator<WavefrontIntegrator>};
+      wavefront_buffers, make_integrator<WavefrontIntegrator>,
+      kernel_binding_mismatches<GenerateArgs, IntersectArgs, ShadeArgs, ShadeSortedArgs,
+                                ClassifyHitsArgs, ShadowArgs, GatherShadowsArgs,
+                                AccumulateSamplesArgs>};
   return entry;
 }
 

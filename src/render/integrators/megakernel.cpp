@@ -10,6 +10,21 @@
 namespace clrt {
 namespace {
 
+// Its kernel's parameters (kernels/megakernel.cl), bound by name.
+struct MegakernelArgs {
+  static constexpr const char* kName = "megakernel";
+  SceneArgs scene;
+  Global<const dev::RenderParams> params;
+  Global<const dev::Camera> camera;
+  Global<const dev::Material> materials;
+  Global<const dev::Light> lights;
+  WaveArgs wave;
+  Global<dev::f4> sample_colour;
+  Global<cl_uint> ray_counts;  // CLRT_RAY_KINDS per camera sample
+
+  CLRT_KERNEL_ARGS(scene, params, camera, materials, lights, wave, sample_colour, ray_counts)
+};
+
 // Its own buffers, X(member, element, length in elements of WaveSizes s, name).
 #define CLRT_MEGAKERNEL_BUFFERS(X) \
   X(ray_counts_, cl_uint, CLRT_RAY_KINDS * s.capacity, "ray count")
@@ -85,13 +100,14 @@ class MegakernelIntegrator final : public WaveLoop {
 
 const IntegratorEntry& megakernel_integrator() {
   static const IntegratorEntry entry{
-      IntegratorKind::Megakernel, "megakernel",
+      "megakernel",
       "one kernel walks each camera sample's whole ray tree (the design compared with)",
       megakernel_program_options,
       [](const RenderOptions& options, const DeviceProfile& profile) {
         check_stack_depth(static_cast<std::uint32_t>(options.max_depth), profile.device_class);
       },
-      megakernel_buffers, make_integrator<MegakernelIntegrator>};
+      megakernel_buffers, make_integrator<MegakernelIntegrator>,
+      kernel_binding_mismatches<MegakernelArgs>};
   return entry;
 }
 
