@@ -1,13 +1,10 @@
 /* Every light kind through one door: the rows of CLRT_LIGHT_KINDS (kernels/shared/scene.h), each
- * with its device file in lights/. A switch per question names every kind; the host uploads no
- * other (src/render/frame_setup.cpp). */
+ * a device file in lights/, all of which light_files.h (written by the build) includes. A switch
+ * per question names every kind; the host uploads no other (src/render/frame_setup.cpp). */
 #ifndef CLRT_RENDER_LIGHTS_H
 #define CLRT_RENDER_LIGHTS_H
 
-#include "lights/area.h"
-#include "lights/directional.h"
-#include "lights/point.h"
-#include "lights/spot.h"
+#include "light_files.h"
 
 /* Sample j of `light` from point p; u is the pair of random numbers that places the sample when
  * the kind reads one (light_is_sampled). */

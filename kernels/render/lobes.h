@@ -1,21 +1,26 @@
 /* The path-tracing reading of a .ray material (docs/path-tracing.md, "Materials"): a mixture of
  * lobes, one row each in CLRT_LOBES with its device file in lobes/, whose NAME_lobe_* functions
  * give its albedo from the material, its share of the samples, its value and density, and a
- * direction drawn from it. The mixture below is written over the rows, so a new lobe is its
- * file and its row. */
+ * direction drawn from it. The build includes every file of lobes/ (lobe_files.h, written by
+ * tools/cmake/KindLists.cmake) and the mixture below is written over the rows, so a new lobe is
+ * its file and its row. */
 #ifndef CLRT_RENDER_LOBES_H
 #define CLRT_RENDER_LOBES_H
 
-#include "lobes/glass.h"
-#include "lobes/lambert.h"
-#include "lobes/mirror.h"
-#include "lobes/phong.h"
+#include "lobe_files.h"
+#include "shared/lobe_kinds.h"
 
 /* In the order a lobe is chosen from the mixture's random number. */
 #define CLRT_LOBES(X) X(LAMBERT, lambert) X(PHONG, phong) X(MIRROR, mirror) X(GLASS, glass)
 #define CLRT_LOBE_VALUE(LOBE, name) CLRT_LOBE_##LOBE,
 enum { CLRT_LOBES(CLRT_LOBE_VALUE) CLRT_LOBE_COUNT };
 #undef CLRT_LOBE_VALUE
+
+/* Every file of lobes/ has its row: a file without one stops the build here (CLRT_LOBE_NAME
+ * undeclared), and a row without a file at its functions below. */
+#define CLRT_LOBE_HAS_ROW(LOBE, name) CLRT_LOBE_FILE_##LOBE = CLRT_LOBE_##LOBE,
+enum { CLRT_LOBE_KINDS(CLRT_LOBE_HAS_ROW) CLRT_LOBE_FILE_COUNT };
+#undef CLRT_LOBE_HAS_ROW
 
 typedef struct PathLobes {
   float3 albedo[CLRT_LOBE_COUNT]; /* each lobe's weight w_k (grey but for the Lambertian's) */

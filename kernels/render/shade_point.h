@@ -9,7 +9,7 @@
 #define CLRT_RENDER_SHADE_POINT_H
 
 #include "common.h"
-#include "lights/light_sample.h"
+#include "light_sample.h"
 #include "optics.h"
 #include "random.h"
 

@@ -30,11 +30,13 @@ typedef struct Material {
 } Material;
 CLRT_CHECK_SIZE(Material, 48);
 
-/* The light kinds the device knows, one row each: the kind's CLRT_LIGHT_ value and its device
- * file, kernels/render/lights/NAME.h, whose NAME_light_* functions sample it, say whether it
- * reads random numbers, and find where a ray crosses it (kernels/render/lights.h dispatches
- * over these rows). The reader's row for the kind is in src/scene/light_kinds.cpp. */
-#define CLRT_LIGHT_KINDS(X) X(POINT, point) X(DIRECTIONAL, directional) X(SPOT, spot) X(AREA, area)
+/* The light kinds the device knows, one row X(KIND, name) for each device file
+ * kernels/render/lights/name.h, whose name_light_* functions sample it, say whether it reads
+ * random numbers, and find where a ray crosses it (kernels/render/lights.h dispatches over these
+ * rows). The build writes the list from that folder (tools/cmake/KindLists.cmake); the rows
+ * number the kinds CLRT_LIGHT_KIND. The reader's row for the kind is in
+ * src/scene/light_kinds.cpp. */
+#include "shared/light_kinds.h"
 #define CLRT_LIGHT_KIND_VALUE(KIND, name) CLRT_LIGHT_##KIND,
 enum { CLRT_LIGHT_KINDS(CLRT_LIGHT_KIND_VALUE) CLRT_LIGHT_KIND_COUNT };
 #undef CLRT_LIGHT_KIND_VALUE

@@ -39,7 +39,7 @@ void light(LoaderState& s, const CommandArgs& a) {
   LightSpec spec;
   spec.color = a.vec3(0);
   const LightKindEntry& kind = find_kind(a);
-  spec.kind = kind.kind;
+  spec.kind = kind.name;
   kind.parse(spec, a);
   s.shadow_samples += shadow_samples(spec);
   if (s.shadow_samples > limits::kMaxShadowSamples)

@@ -4,13 +4,18 @@
 #include <limits>
 #include <stdexcept>
 
+#include <nlohmann/json.hpp>
+
 #include "math/device_vector.hpp"
 #include "math/stratification_grid.hpp"
 #include "scene/limits.hpp"
 #include "scene/number.hpp"
+#include "scene/scene_json.hpp"
 
 namespace clrt {
 namespace {
+
+using Json = nlohmann::ordered_json;
 
 constexpr std::size_t kFirst = kLightFirstArgument;
 
@@ -106,26 +111,45 @@ void area_record(const LightSpec& light, dev::Light& d) {
   d.grid_v = grid.v;
 }
 
+void nothing_to_dump(const LightSpec&, Json&) {}
+
+void point_dump(const LightSpec& light, Json& j) { j["position"] = json_of(light.position); }
+
+void directional_dump(const LightSpec& light, Json& j) { j["direction"] = json_of(light.direction); }
+
+void spot_dump(const LightSpec& light, Json& j) {
+  j["position"] = json_of(light.position);
+  j["direction"] = json_of(light.direction);
+  j["angle_degrees"] = light.angle_degrees;
+  j["exponent"] = light.exponent;
+}
+
+void area_dump(const LightSpec& light, Json& j) {
+  j["corner"] = json_of(light.position);
+  j["edge_u"] = json_of(light.edge_u);
+  j["edge_v"] = json_of(light.edge_v);
+  j["samples"] = light.samples;
+}
+
 }  // namespace
 
 const std::vector<LightKindEntry>& light_kind_table() {
   using P = PathReading;
   static const std::vector<LightKindEntry> table = {
-      {LightKind::Ambient, "ambient", "", ambient, no_samples, false, P::Unused, nullptr},
-      {LightKind::Point, "point", "x y z", point, one_sample, true, P::FallsOff, point_record},
-      {LightKind::Directional, "directional", "dx dy dz", directional, one_sample, false,
-       P::LikeWhitted, directional_record},
-      {LightKind::Spot, "spot", "x y z dx dy dz angle [exp]", spot, one_sample, true,
-       P::FallsOff, spot_record},
-      {LightKind::Area, "area", "x y z ux uy uz vx vy vz [samples]", area, its_samples, true,
-       P::LikeWhitted, area_record}};
+      {"ambient", "", ambient, no_samples, false, P::Unused, nullptr, nothing_to_dump},
+      {"point", "x y z", point, one_sample, true, P::FallsOff, point_record, point_dump},
+      {"directional", "dx dy dz", directional, one_sample, false, P::LikeWhitted,
+       directional_record, directional_dump},
+      {"spot", "x y z dx dy dz angle [exp]", spot, one_sample, true, P::FallsOff, spot_record,
+       spot_dump},
+      {"area", "x y z ux uy uz vx vy vz [samples]", area, its_samples, true, P::LikeWhitted,
+       area_record, area_dump}};
   return table;
 }
 
-const LightKindEntry& light_kind(LightKind kind) {
-  for (const LightKindEntry& entry : light_kind_table())
-    if (entry.kind == kind) return entry;
-  throw std::logic_error("a light kind missing from light_kind_table()");
+const LightKindEntry& light_kind(const std::string& name) {
+  if (const LightKindEntry* entry = find_light_kind(name)) return *entry;
+  throw std::logic_error("no light kind '" + name + "' in light_kind_table()");
 }
 
 const LightKindEntry* find_light_kind(const std::string& name) {

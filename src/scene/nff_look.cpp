@@ -15,7 +15,7 @@ void background(NffState& s, const CommandArgs& a) {
 void light(NffState& s, const CommandArgs& a) {
   a.require_count({3, 6});
   LightSpec spec;
-  spec.kind = LightKind::Point;
+  spec.kind = "point";
   spec.position = a.vec3(0);
   if (a.count() == 6)
     spec.color = a.vec3(3);

@@ -27,10 +27,12 @@ struct MaterialSpec {
   double ior = 1;  // a value <= 0 in the file is stored as 1
 };
 
-enum class LightKind { Ambient, Point, Directional, Spot, Area };
-
+// A light as its command gives it. Its kind is the name of its row of light_kind_table()
+// (scene/light_kinds.hpp), which reads its parameters into the fields below: the words the kinds
+// share (a place, a direction, two edges, an angle, an exponent, a number of samples), so that a
+// kind which needs no other word adds nothing here.
 struct LightSpec {
-  LightKind kind = LightKind::Point;
+  std::string kind = "point";
   Vec3 color;
   Vec3 position;       // point, spot; area: corner
   Vec3 direction;      // directional: direction of travel; spot: axis (as written, not normalised)

@@ -11,8 +11,6 @@ namespace {
 using Json = nlohmann::ordered_json;
 using Writer = std::function<void(const std::string&)>;
 
-Json vec(const Vec3& v) { return Json::array({v.x, v.y, v.z}); }
-
 Json matrix(const Mat4& m) {
   Json rows = Json::array();
   for (const auto& row : m.m) rows.push_back(Json::array({row[0], row[1], row[2], row[3]}));
@@ -32,42 +30,21 @@ const char* shape_name(ShapeKind shape) {
 }
 
 Json camera(const Scene& scene) {
-  return {{"eye", vec(scene.camera.eye)},
-          {"lookat", vec(scene.camera.lookat)},
-          {"up", vec(scene.camera.up)},
+  return {{"eye", json_of(scene.camera.eye)},
+          {"lookat", json_of(scene.camera.lookat)},
+          {"up", json_of(scene.camera.up)},
           {"fov_degrees", scene.camera.fov_degrees},
           {"aspect", static_cast<double>(scene.width) / scene.height}};
 }
 
 Json material(const MaterialSpec& m) {
-  return {{"color", vec(m.color)}, {"ka", m.ka}, {"kd", m.kd}, {"ks", m.ks},
+  return {{"color", json_of(m.color)}, {"ka", m.ka}, {"kd", m.kd}, {"ks", m.ks},
           {"shininess", m.shininess}, {"kr", m.kr}, {"kt", m.kt}, {"ior", m.ior}};
 }
 
 Json light(const LightSpec& l) {
-  Json j = {{"kind", light_kind(l.kind).name}, {"color", vec(l.color)}};
-  switch (l.kind) {
-    case LightKind::Ambient:
-      break;
-    case LightKind::Point:
-      j["position"] = vec(l.position);
-      break;
-    case LightKind::Directional:
-      j["direction"] = vec(l.direction);
-      break;
-    case LightKind::Spot:
-      j["position"] = vec(l.position);
-      j["direction"] = vec(l.direction);
-      j["angle_degrees"] = l.angle_degrees;
-      j["exponent"] = l.exponent;
-      break;
-    case LightKind::Area:
-      j["corner"] = vec(l.position);
-      j["edge_u"] = vec(l.edge_u);
-      j["edge_v"] = vec(l.edge_v);
-      j["samples"] = l.samples;
-      break;
-  }
+  Json j = {{"kind", l.kind}, {"color", json_of(l.color)}};
+  light_kind(l.kind).dump(l, j);
   return j;
 }
 
@@ -82,7 +59,7 @@ Json object(const InstanceSpec& o) {
 }
 
 Json triangle(const TriangleSpec& t) {
-  return {{"corners", Json::array({vec(t.v0), vec(t.v1), vec(t.v2)})}, {"material", t.material}};
+  return {{"corners", Json::array({json_of(t.v0), json_of(t.v1), json_of(t.v2)})}, {"material", t.material}};
 }
 
 Json index_triple(const std::vector<std::uint32_t>& indices, std::size_t triangle) {
@@ -104,7 +81,7 @@ void write_array(const Writer& write, std::size_t count, ElementAt element_at,
 
 void write_mesh(const Writer& write, const MeshData& mesh) {
   const auto vec_at = [](const std::vector<Vec3>& table) {
-    return [&table](std::size_t i) { return vec(table[i]); };
+    return [&table](std::size_t i) { return json_of(table[i]); };
   };
   const auto triples_of = [](const std::vector<std::uint32_t>& indices) {
     return [&indices](std::size_t i) { return index_triple(indices, i); };
@@ -122,6 +99,8 @@ void write_mesh(const Writer& write, const MeshData& mesh) {
 
 }  // namespace
 
+Json json_of(const Vec3& v) { return Json::array({v.x, v.y, v.z}); }
+
 void write_scene_json(const Scene& scene, const Writer& write) {
   // One key, and one element of each table, a line: a dump reads and compares line by line.
   const Json head = {{"format", "clrt-scene"},
@@ -131,7 +110,7 @@ void write_scene_json(const Scene& scene, const Writer& write) {
                      {"resolution", Json::array({scene.width, scene.height})},
                      {"samples", scene.samples},
                      {"maxdepth", scene.max_depth},
-                     {"background", vec(scene.background)}};
+                     {"background", json_of(scene.background)}};
   write("{\n");
   for (const auto& [key, value] : head.items()) write(Json(key).dump() + ": " + value.dump() + ",\n");
   const std::string next = ",\n";

@@ -5,6 +5,8 @@
 #include <functional>
 #include <string>
 
+#include <nlohmann/json_fwd.hpp>
+
 #include "scene/scene.hpp"
 
 namespace clrt {
@@ -16,5 +18,8 @@ constexpr int kSceneJsonVersion = 1;
 // meshes' and the triangles' tables is converted only when it is written, so a scene of
 // millions of spheres dumps in little more memory than it loads in.
 void write_scene_json(const Scene& scene, const std::function<void(const std::string&)>& write);
+
+// A point or vector as the document writes it: [x, y, z].
+nlohmann::ordered_json json_of(const Vec3& v);
 
 }  // namespace clrt

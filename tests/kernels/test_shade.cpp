@@ -60,29 +60,29 @@ MaterialSpec material(const Vec3& color, double ka, double kd, double ks, double
   return m;
 }
 
-LightSpec light(LightKind kind, const Vec3& colour) {
+LightSpec light(const std::string& kind, const Vec3& colour) {
   LightSpec l;
   l.kind = kind;
   l.color = colour;
   return l;
 }
 
-LightSpec ambient(const Vec3& colour) { return light(LightKind::Ambient, colour); }
+LightSpec ambient(const Vec3& colour) { return light("ambient", colour); }
 
 LightSpec point(const Vec3& colour, const Vec3& position) {
-  LightSpec l = light(LightKind::Point, colour);
+  LightSpec l = light("point", colour);
   l.position = position;
   return l;
 }
 
 LightSpec directional(const Vec3& colour, const Vec3& travel) {
-  LightSpec l = light(LightKind::Directional, colour);
+  LightSpec l = light("directional", colour);
   l.direction = travel;
   return l;
 }
 
 LightSpec spot(const Vec3& colour, const Vec3& position, const Vec3& axis, double angle, double exp) {
-  LightSpec l = light(LightKind::Spot, colour);
+  LightSpec l = light("spot", colour);
   l.position = position;
   l.direction = axis;
   l.angle_degrees = angle;
@@ -91,7 +91,7 @@ LightSpec spot(const Vec3& colour, const Vec3& position, const Vec3& axis, doubl
 }
 
 LightSpec area(const Vec3& colour, const Vec3& corner, const Vec3& u, const Vec3& v, int samples) {
-  LightSpec l = light(LightKind::Area, colour);
+  LightSpec l = light("area", colour);
   l.position = corner;
   l.edge_u = u;
   l.edge_v = v;

@@ -75,7 +75,7 @@ TEST_CASE("the request's own limits exit 2, whichever loader made the scene", "[
   }
   SECTION("shadow samples summed in 64 bits") {
     LightSpec area;
-    area.kind = LightKind::Area;
+    area.kind = "area";
     area.samples = 65536;
     for (int i = 0; i < 17; ++i) scene.lights.push_back(area);
     const auto [code, message] = verdict(scene, o, roomy_machine());

@@ -4,7 +4,6 @@
 
 #include "scene_test_support.hpp"
 
-using clrt::LightKind;
 using clrt::ShapeKind;
 using clrt::Vec3;
 using clrt::test::load_text;
@@ -57,7 +56,7 @@ TEST_CASE("NFF: b is the background", "[scene][nff]") {
 TEST_CASE("NFF: lights without a colour share 1/sqrt(number of lights)", "[scene][nff]") {
   const clrt::Scene s = load_nff("l 1 2 3\nl 4 5 6 0.5 0.25 2\nl 7 8 9\nl 0 0 9\n");
   REQUIRE(s.lights.size() == 4);
-  for (const auto& light : s.lights) CHECK(light.kind == LightKind::Point);
+  for (const auto& light : s.lights) CHECK(light.kind == "point");
   CHECK(s.lights[0].position == Vec3{1, 2, 3});
   CHECK(s.lights[0].color == Vec3{0.5, 0.5, 0.5});  // 1/sqrt(4), coloured lights counted too
   CHECK(s.lights[1].color == Vec3{0.5, 0.25, 2});

@@ -7,7 +7,6 @@
 
 #include "scene/scene.hpp"
 
-using clrt::LightKind;
 using clrt::ShapeKind;
 using clrt::Vec3;
 
@@ -84,8 +83,8 @@ TEST_CASE("test2.ray: the lecture's first example with its light repaired", "[sc
   REQUIRE(s.instances.size() == 1);
   CHECK(s.materials[s.instances[0].material].color == Vec3{0, 1, 0});
   REQUIRE(s.lights.size() == 2);
-  CHECK(s.lights[0].kind == LightKind::Ambient);
-  CHECK(s.lights[1].kind == LightKind::Point);
+  CHECK(s.lights[0].kind == "ambient");
+  CHECK(s.lights[1].kind == "point");
   CHECK(s.lights[1].color == Vec3{0.6, 0.6, 0.6});
   CHECK(s.lights[1].position == Vec3{3, 3, 3});
 }

@@ -1,12 +1,18 @@
-# Writes OUT: a table of every kernel file (path relative to kernels/, contents) for
+# Writes OUT: a table of every kernel file (path relative to kernels/, or to the folder of
+# generated kind lists, and contents) for
 # clrt::embedded_kernel_files() declared in src/device/kernel_source.hpp.
 string(REPLACE "|" ";" FILES "${FILES}")
 set(_body "// Generated from kernels/ by tools/cmake/embed_kernels_script.cmake; do not edit.\n")
 string(APPEND _body "#include \"device/kernel_source.hpp\"\n\nnamespace clrt {\n")
 string(APPEND _body "const std::vector<EmbeddedFile>& embedded_kernel_files() {\n")
 string(APPEND _body "  static const std::vector<EmbeddedFile> files = {\n")
+string(REPLACE "|" ";" GENERATED "${GENERATED}")
 foreach(_f IN LISTS FILES)
   file(READ ${KERNEL_DIR}/${_f} _text)
+  string(APPEND _body "    {\"${_f}\", R\"clrt_embed(${_text})clrt_embed\"},\n")
+endforeach()
+foreach(_f IN LISTS GENERATED)
+  file(READ ${GENERATED_DIR}/${_f} _text)
   string(APPEND _body "    {\"${_f}\", R\"clrt_embed(${_text})clrt_embed\"},\n")
 endforeach()
 string(APPEND _body "  };\n  return files;\n}\n}  // namespace clrt\n")

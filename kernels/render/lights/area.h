@@ -4,7 +4,7 @@
 #ifndef CLRT_RENDER_LIGHTS_AREA_H
 #define CLRT_RENDER_LIGHTS_AREA_H
 
-#include "light_sample.h"
+#include "../light_sample.h"
 
 /* Sample j of the light's grid_u x grid_v strata, placed in its stratum by u. */
 CLRT_INLINE LightSample area_light_sample(__global const Light* light, uint j, float3 p, float2 u) {

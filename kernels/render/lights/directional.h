@@ -3,7 +3,7 @@
 #ifndef CLRT_RENDER_LIGHTS_DIRECTIONAL_H
 #define CLRT_RENDER_LIGHTS_DIRECTIONAL_H
 
-#include "light_sample.h"
+#include "../light_sample.h"
 
 CLRT_INLINE LightSample directional_light_sample(__global const Light* light, uint j, float3 p,
                                                  float2 u) {

@@ -3,7 +3,7 @@
 #ifndef CLRT_RENDER_LIGHTS_SPOT_H
 #define CLRT_RENDER_LIGHTS_SPOT_H
 
-#include "light_sample.h"
+#include "../light_sample.h"
 
 CLRT_INLINE LightSample spot_light_sample(__global const Light* light, uint j, float3 p, float2 u) {
   LightSample s = sample_at_point(xyz(light->position), xyz(light->color), p);

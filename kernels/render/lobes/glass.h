@@ -3,7 +3,7 @@
 #ifndef CLRT_RENDER_LOBES_GLASS_H
 #define CLRT_RENDER_LOBES_GLASS_H
 
-#include "lobe_sample.h"
+#include "../lobe_sample.h"
 
 CLRT_INLINE float3 glass_lobe_albedo(__global const Material* m, float share) {
   return (float3)(fmax(0.0f, m->kt));

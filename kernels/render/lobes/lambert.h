@@ -2,7 +2,7 @@
 #ifndef CLRT_RENDER_LOBES_LAMBERT_H
 #define CLRT_RENDER_LOBES_LAMBERT_H
 
-#include "lobe_sample.h"
+#include "../lobe_sample.h"
 
 CLRT_INLINE float3 lambert_lobe_albedo(__global const Material* m, float share) {
   return share * m->kd * xyz(m->color);

@@ -2,7 +2,7 @@
 #ifndef CLRT_RENDER_LOBES_MIRROR_H
 #define CLRT_RENDER_LOBES_MIRROR_H
 
-#include "lobe_sample.h"
+#include "../lobe_sample.h"
 
 CLRT_INLINE float3 mirror_lobe_albedo(__global const Material* m, float share) {
   return (float3)(fmax(0.0f, m->kr));

@@ -3,7 +3,7 @@
 #ifndef CLRT_RENDER_LOBES_PHONG_H
 #define CLRT_RENDER_LOBES_PHONG_H
 
-#include "lobe_sample.h"
+#include "../lobe_sample.h"
 
 /* The Phong factor max(0, R.wi)^n with R the mirror image of wo about n, for any exponent the
  * reader accepts. Near the lobe's axis 1 - cos is taken from |R - wi|^2 / 2, which keeps its

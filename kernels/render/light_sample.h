@@ -1,10 +1,10 @@
-/* What every light kind's device file (this folder) returns: one sample of the light as seen
+/* What every light kind's device file (lights/) returns: one sample of the light as seen
  * from a shading point, and where a ray crosses the light. */
-#ifndef CLRT_RENDER_LIGHTS_LIGHT_SAMPLE_H
-#define CLRT_RENDER_LIGHTS_LIGHT_SAMPLE_H
+#ifndef CLRT_RENDER_LIGHT_SAMPLE_H
+#define CLRT_RENDER_LIGHT_SAMPLE_H
 
-#include "../common.h"
-#include "../random.h"
+#include "common.h"
+#include "random.h"
 
 typedef struct LightSample {
   float3 position;  /* the sampled point (unused for directional lights) */

@@ -1,10 +1,10 @@
-/* What every lobe's device file (this folder) shares: the record a lobe's sampling fills, and the
+/* What every lobe's device file (lobes/) shares: the record a lobe's sampling fills, and the
  * directions drawn about an axis. Directions are unit vectors leaving the surface point; n is
  * the shading normal, turned towards the viewer. */
-#ifndef CLRT_RENDER_LOBES_LOBE_SAMPLE_H
-#define CLRT_RENDER_LOBES_LOBE_SAMPLE_H
+#ifndef CLRT_RENDER_LOBE_SAMPLE_H
+#define CLRT_RENDER_LOBE_SAMPLE_H
 
-#include "../shade_point.h"
+#include "shade_point.h"
 
 #define CLRT_INV_PI 0.318309873f
 #define CLRT_INV_TWO_PI 0.159154937f
