@@ -17,6 +17,33 @@
  * sample's index, which its children keep.
  * Streams are keyed by the pixel's place in the whole image, never in the region or the wave,
  * so every region of a frame has the full render's bits. */
+/* A point of the unit disc for u in [0, 1)^2, by the concentric map (Shirley and Chiu 1997): each
+ * square about the centre goes to a circle, so strata of the square stay compact on the disc. */
+CLRT_INLINE float2 concentric_disc(float2 u) {
+  const float sx = 2.0f * u.x - 1.0f, sy = 2.0f * u.y - 1.0f;
+  if (sx == 0.0f && sy == 0.0f) return (float2)(0.0f);
+  float r, turns, s, c;
+  if (fabs(sx) > fabs(sy)) {
+    r = sx;
+    turns = 0.125f * (sy / sx);
+  } else {
+    r = sy;
+    turns = 0.25f - 0.125f * (sx / sy);
+  }
+  sincos_turns(turns, &s, &c);
+  return (float2)(r * c, r * s);
+}
+
+/* The pair that places camera sample k on the lens: the Sobol sampler's own scrambled pair, or
+ * a jittered cell of the camera's grid, the cells dealt to the pixel's samples in a shuffled
+ * order of the pixel's own so that a sample's place on the lens is not tied to its place in the
+ * pixel. */
+CLRT_INLINE float2 lens_sample(const Camera* cam, bool sobol, uint pixel, uint path, uint k) {
+  if (sobol) return sobol_sample(sample_key(path, 0u, CLRT_LENS_JITTER), k);
+  const uint cell = shuffled_index(k, cam->samples, pixel_stream(cam->seed, pixel));
+  return stratified(cell, cam->grid_u, cam->grid_v, jitter2(path, CLRT_LENS_JITTER));
+}
+
 CLRT_INLINE Ray wave_camera_ray(const Camera* cam, uint region_x, uint region_y, uint region_width,
                                 uint first_pixel, uint first_sample, uint pixel_samples,
                                 uint index) {
@@ -31,10 +58,19 @@ CLRT_INLINE Ray wave_camera_ray(const Camera* cam, uint region_x, uint region_y,
       sobol ? sobol_sample(sample_key(path, 0u, CLRT_CAMERA_JITTER), k)
       : cam->samples == 1 ? (float2)(0.5f, 0.5f)
                           : stratified(k, cam->grid_u, cam->grid_v, jitter2(path, CLRT_CAMERA_JITTER));
-  const float3 dir = xyz(cam->corner) + ((float)x + offset.x) * xyz(cam->pixel_dx) +
-                     ((float)y + offset.y) * xyz(cam->pixel_dy);
+  float3 dir = xyz(cam->corner) + ((float)x + offset.x) * xyz(cam->pixel_dx) +
+               ((float)y + offset.y) * xyz(cam->pixel_dy);
+  float3 origin = xyz(cam->eye);
+  if (cam->thin_lens) {
+    /* The ray leaves a point of the lens towards where the pinhole's ray meets the plane in
+     * focus, so points on that plane stay sharp. */
+    const float2 disc = concentric_disc(lens_sample(cam, sobol, pixel, path, k));
+    const float3 on_lens = disc.x * xyz(cam->lens_u) + disc.y * xyz(cam->lens_v);
+    origin += on_lens;
+    dir = dir * cam->lens_u.w - on_lens;
+  }
   Ray ray;
-  vstore3(xyz(cam->eye), 0, ray.origin);
+  vstore3(origin, 0, ray.origin);
   ray.radiance_scale = 1.0f;
   vstore3(normalize3(dir), 0, ray.dir);
   ray.sample_index = k;

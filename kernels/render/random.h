@@ -32,14 +32,36 @@ CLRT_INLINE uint camera_path(uint seed, uint pixel, uint sample) {
 /* A secondary ray's stream: its parent's and the branch taken. */
 CLRT_INLINE uint child_path(uint parent, uint branch) { return hash_combine(parent, branch); }
 
-/* The stream index of the camera jitter; light samples use indices from 0 up, so the two
- * never share numbers. */
+/* The stream indices of the camera's jitter and of its lens sample; light samples use indices
+ * from 0 up and path mode's own uses the two below CLRT_CAMERA_JITTER (render/path_step.h), so
+ * none share numbers. */
 #define CLRT_CAMERA_JITTER 0xffffffffu
+#define CLRT_LENS_JITTER 0xfffffffcu
 
 /* Two jitters for stratum `index` of a stream, e.g. one camera sample or one light sample. */
 CLRT_INLINE float2 jitter2(uint path, uint index) {
   uint h = hash_combine(path, index);
   return (float2)(uniform_float(h), uniform_float(hash_u32(h)));
+}
+
+/* Element i of a shuffle of 0 .. n-1 chosen by `key` (i < n): a bijection of the next power of
+ * two's bits (odd multiplications, additions and shifts that fold the high bits down), applied
+ * again until it lands below n, which walks the cycle of i within 0 .. n-1. */
+CLRT_INLINE uint shuffled_index(uint i, uint n, uint key) {
+  uint mask = n - 1u;
+  mask |= mask >> 1;
+  mask |= mask >> 2;
+  mask |= mask >> 4;
+  mask |= mask >> 8;
+  mask |= mask >> 16;
+  const uint a = hash_u32(key), b = hash_u32(a);
+  do {
+    i = (i * (a | 1u) + b) & mask;
+    i ^= i >> 3;
+    i = (i * ((b << 1) | 1u) + a) & mask;
+    i ^= i >> 1;
+  } while (i >= n);
+  return i;
 }
 
 /* Position in [0,1)^2 of sample `k` of a grid_u x grid_v stratification: one jitter per cell. */

@@ -14,14 +14,19 @@ typedef struct Camera {
   f4 corner;    /* direction (not unit) through the top-left corner of pixel (0, 0); w unused */
   f4 pixel_dx;  /* change of that direction per pixel to the right; w unused */
   f4 pixel_dy;  /* change per pixel downwards; w unused */
+  /* A thin lens (thin_lens != 0): the lens's radius times the unit right and down vectors of the
+   * image; lens_u.w scales a pixel's direction above to the point where it meets the plane in
+   * focus (the focus distance over the focal length in pixels). Zero for a pinhole. */
+  f4 lens_u;
+  f4 lens_v;    /* w unused */
   u32 width, height;
   u32 samples;          /* camera samples per pixel */
   u32 grid_u, grid_v;   /* stratification grid: grid_u * grid_v == samples */
   u32 seed;
   u32 sampler;          /* CLRT_SAMPLER_* */
-  u32 pad;
+  u32 thin_lens;        /* 1: rays leave the lens (lens_u, lens_v); 0: all leave the eye */
 } Camera;
-CLRT_CHECK_SIZE(Camera, 96);
+CLRT_CHECK_SIZE(Camera, 128);
 
 typedef struct Material {
   f4 color; /* rgb surface colour; w unused */

@@ -34,6 +34,14 @@ dev::Camera make_camera(const CameraSpec& c, const RenderOptions& options) {
   cam.corner = f4_of(forward * focal - right * (w / 2) + up * (h / 2));
   cam.pixel_dx = f4_of(right);
   cam.pixel_dy = f4_of(-up);
+  if (c.lens_radius > 0) {
+    cam.thin_lens = 1;
+    cam.lens_u = f4_of(right * c.lens_radius);
+    cam.lens_v = f4_of(-up * c.lens_radius);
+    // A pixel's direction has length `focal` along the view, so this takes it to the plane in
+    // focus.
+    cam.lens_u.w = static_cast<float>(c.focus_distance / focal);
+  }
   cam.width = static_cast<dev::u32>(options.width);
   cam.height = static_cast<dev::u32>(options.height);
   cam.samples = static_cast<dev::u32>(options.samples);

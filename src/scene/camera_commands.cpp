@@ -1,4 +1,4 @@
-// eye, lookat, up, fov, background, resolution, maxdepth, samples.
+// eye, lookat, up, fov, lens, background, resolution, maxdepth, samples.
 #include "scene/command_table.hpp"
 #include "scene/limits.hpp"
 
@@ -33,6 +33,18 @@ void fov(LoaderState& s, const CommandArgs& a) {
                         "precision: the narrowest is " + short_number(limits::kMinFovDegrees) +
                         " degrees");
   s.scene.camera.fov_degrees = degrees;
+}
+
+// lens RADIUS FOCUS: pbrt's lensradius and focaldistance.
+void lens(LoaderState& s, const CommandArgs& a) {
+  a.require_count({2});
+  const double radius = a.number(0), focus = a.number(1);
+  if (radius < 0)
+    throw a.error_at(0, "the lens radius must be >= 0 (0 is a pinhole), found " + excerpt(a.word(0).text));
+  if (focus <= 0)
+    throw a.error_at(1, "the focus distance must be > 0, found " + excerpt(a.word(1).text));
+  s.scene.camera.lens_radius = radius;
+  s.scene.camera.focus_distance = focus;
 }
 
 void background(LoaderState& s, const CommandArgs& a) {
@@ -71,6 +83,7 @@ void add_camera_commands(CommandTable& table) {
   table["lookat"] = lookat;
   table["up"] = up;
   table["fov"] = fov;
+  table["lens"] = lens;
   table["background"] = background;
   table["resolution"] = resolution;
   table["maxdepth"] = maxdepth;

@@ -18,6 +18,10 @@ struct CameraSpec {
   Vec3 lookat{0, 0, 0};
   Vec3 up{0, 1, 0};
   double fov_degrees = 60;  // horizontal, across the image width
+  // `lens RADIUS FOCUS`: a thin lens of this aperture radius (0: a pinhole), in focus at this
+  // distance from the eye along the view direction.
+  double lens_radius = 0;
+  double focus_distance = 1;
 };
 
 struct MaterialSpec {

@@ -34,7 +34,9 @@ Json camera(const Scene& scene) {
           {"lookat", json_of(scene.camera.lookat)},
           {"up", json_of(scene.camera.up)},
           {"fov_degrees", scene.camera.fov_degrees},
-          {"aspect", static_cast<double>(scene.width) / scene.height}};
+          {"aspect", static_cast<double>(scene.width) / scene.height},
+          {"lens_radius", scene.camera.lens_radius},
+          {"focus_distance", scene.camera.focus_distance}};
 }
 
 Json material(const MaterialSpec& m) {

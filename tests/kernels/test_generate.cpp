@@ -233,3 +233,52 @@ TEST_CASE("generate: jitter depends only on pixel, sample and seed", "[generate]
     CHECK(moved == pixels * spp);
   }
 }
+
+TEST_CASE("generate: a thin lens's rays leave its disc towards where the pinhole's meet the "
+          "plane in focus, spread evenly over the disc",
+          "[generate][lens]") {
+  const Vec3 eye(1, 2, 6), lookat(0, 0.5, 0);
+  const double radius = 0.3, focus = 4;
+  Scene scene = camera_scene(eye, lookat, kUp, 50);
+  Scene pinhole = scene;
+  scene.camera.lens_radius = radius;
+  scene.camera.focus_distance = focus;
+  // The contract's basis, computed here: F the view, R = F x up, U = R x F.
+  const Vec3 f = normalize(lookat - eye), r = normalize(cross(f, kUp)), u = cross(r, f);
+  const int width = 9, height = 7, spp = 16;
+  const std::uint32_t count = width * height * spp;
+  for (const RenderMode mode : {RenderMode::Trace, RenderMode::Path}) {
+    INFO((mode == RenderMode::Path ? "path mode's Sobol samples" : "the stratified samples"));
+    RenderOptions options = image_options(width, height, spp, 7);
+    options.mode = mode;
+    const dev::Camera lens_camera = make_camera(scene, options);
+    CHECK(lens_camera.thin_lens == 1);
+    const std::vector<dev::Ray> rays = generate(lens_camera, 0, count);
+    const std::vector<dev::Ray> pinhole_rays = generate(make_camera(pinhole, options), 0, count);
+    // Equal-area cells of the disc: 4 rings (radii sqrt(k / 4)) by 4 quadrants.
+    std::vector<int> cells(16, 0);
+    for (std::uint32_t i = 0; i < count; ++i) {
+      INFO("ray " << i);
+      const Vec3 origin = vec_of(rays[i].origin), dir = vec_of(rays[i].dir);
+      const Vec3 off = origin - eye;
+      CHECK(std::fabs(dot(off, f)) < 1e-5);
+      REQUIRE(length(off) <= radius * (1 + 1e-5));
+      const Vec3 pinhole_dir = vec_of(pinhole_rays[i].dir);
+      const Vec3 in_focus = eye + pinhole_dir * (focus / dot(pinhole_dir, f));
+      const Vec3 reached = origin + dir * ((focus - dot(off, f)) / dot(dir, f));
+      CHECK_NEAR_VEC(reached, in_focus, 2e-5 * focus);
+      const double x = dot(off, r) / radius, y = dot(off, u) / radius;
+      const int ring = std::min(3, static_cast<int>(4 * (x * x + y * y)));
+      const int quadrant = (x >= 0 ? 0 : 1) + (y >= 0 ? 0 : 2);
+      ++cells[ring * 4 + quadrant];
+    }
+    double chi2 = 0;
+    const double expected = count / 16.0;
+    for (int c : cells) chi2 += (c - expected) * (c - expected) / expected;
+    INFO("chi-square " << chi2 << " over 16 equal-area cells");
+    CHECK(chi2 < 37.7);  // 15 degrees of freedom, p = 0.001
+  }
+  Scene zero = scene;
+  zero.camera.lens_radius = 0;
+  CHECK(make_camera(zero, image_options(width, height, spp)).thin_lens == 0);
+}

@@ -119,3 +119,22 @@ TEST_CASE("camera commands with the wrong number of arguments", "[scene][camera]
   require_error("lookat\n", 1, 7, "wrong number of arguments");
   require_error("up 0 1\n", 1, 7, "wrong number of arguments");
 }
+
+TEST_CASE("lens gives the thin lens's radius and focus distance; none is a pinhole",
+          "[scene][camera]") {
+  const clrt::Scene pinhole = load_text("");
+  CHECK(pinhole.camera.lens_radius == 0);
+  CHECK(pinhole.camera.focus_distance == 1);
+  const clrt::Scene s = load_text("LENS 0.25 7.5\n");
+  CHECK(s.camera.lens_radius == 0.25);
+  CHECK(s.camera.focus_distance == 7.5);
+  CHECK(load_text("lens 1 2\nlens 0 3\n").camera.lens_radius == 0);
+}
+
+TEST_CASE("lens: a radius >= 0 and a focus distance > 0, two numbers", "[scene][camera][errors]") {
+  require_error("lens -0.1 5\n", 1, 6, "the lens radius must be >= 0");
+  require_error("lens 0.1 0\n", 1, 10, "the focus distance must be > 0");
+  require_error("lens 0.1 -2\n", 1, 10, "the focus distance must be > 0");
+  require_error("lens 0.1\n", 1, 9, "wrong number of arguments");
+  require_error("lens 0.1 2 3\n", 1, 12, "wrong number of arguments");
+}

@@ -123,6 +123,7 @@ class DumpedScene:
         camera = dump["camera"]
         self.eye, self.lookat, self.up = (np.array(camera[k], dtype=float) for k in ("eye", "lookat", "up"))
         self.fov, self.background = camera["fov_degrees"], np.array(dump["background"], dtype=float)
+        self.lens_radius, self.focus_distance = camera["lens_radius"], camera["focus_distance"]
         self.resolution, self.samples, self.maxdepth = tuple(dump["resolution"]), dump["samples"], dump["maxdepth"]
         # One object per material, so that triangles group by the material they were given.
         self.all_materials = [Material(m["color"], m["kd"], m["ks"], m["shininess"], m["kr"], m["kt"], m["ior"])
@@ -335,7 +336,10 @@ def to_mitsuba(scene, spp=None, resolution=None, seed=0):
         # past the deepest path.
         "integrator": {"type": "path", "max_depth": max_depth, "rr_depth": max_depth + 1},
         "sensor": {
-            "type": "perspective", "fov": scene.fov, "fov_axis": "x",
+            # Mitsuba's thin lens puts the plane in focus across the view axis, as clrt's does.
+            **({"type": "thinlens", "aperture_radius": scene.lens_radius,
+                "focus_distance": scene.focus_distance} if scene.lens_radius > 0 else {"type": "perspective"}),
+            "fov": scene.fov, "fov_axis": "x",
             # clrt's camera rays ignore hits closer than epsilon, 1e-4.
             "near_clip": 1e-4, "far_clip": 1e7,
             "to_world": mi.ScalarTransform4f().look_at(origin=scene.eye.tolist(), target=scene.lookat.tolist(),

@@ -49,6 +49,12 @@ TRANSPARENT_BOUNCES = 256
 class CyclesScene(rtm.DumpedScene):
     """DumpedScene that refuses, with the object's place, what Cycles cannot render as clrt does."""
 
+    def __init__(self, dump):
+        super().__init__(dump)
+        if self.lens_radius > 0:
+            raise SceneError("the thin lens (`lens`) is not mapped to Cycles (its aperture is set "
+                             "by an f-number of the focal length in millimetres)")
+
     def add_object(self, placed, material, placement):
         if placed["shape"] == "cylinder":
             raise SceneError("`cylinder` is not mapped to Cycles (no capped-cylinder primitive; "

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <random>
+#include <stdexcept>
 
 #include "render/frame_setup.hpp"
 
@@ -24,6 +25,10 @@ HostRay host_ray(const Vec3& origin, const Vec3& unit_dir, float tmax) {
 }
 
 CameraRays::CameraRays(const Scene& scene, const RenderOptions& options) {
+  // Its rays leave a pinhole: a thin lens's would be other rays, so a scene with one is refused.
+  if (scene.camera.lens_radius > 0)
+    throw std::runtime_error("the scene's thin lens (`lens`) is not traced here: only pinhole "
+                             "cameras are");
   const dev::Camera cam = make_camera(scene, options);
   eye_ = vec3_of(cam.eye);
   corner_ = vec3_of(cam.corner);

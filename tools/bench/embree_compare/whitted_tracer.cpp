@@ -8,7 +8,6 @@
 #include "host_rays.hpp"
 #include "host_threads.hpp"
 #include "render/frame_setup.hpp"
-#include "scene/light_kinds.hpp"
 
 namespace clrt::compare {
 namespace {
@@ -125,7 +124,7 @@ bool traced_kind(const std::string& kind) {
 std::string unsupported_lights(const Scene& scene) {
   std::map<std::string, int> refused;  // by kind name, in name order
   for (const LightSpec& l : scene.lights)
-    if (!traced_kind(l.kind)) ++refused[light_kind(l.kind).name];
+    if (!traced_kind(l.kind)) ++refused[l.kind];
   std::string out;
   for (const auto& [name, count] : refused)
     out += (out.empty() ? "" : ", ") + std::to_string(count) + " " + name +
