@@ -7,6 +7,12 @@
 namespace clrt {
 
 std::optional<std::string> dark_scene_note(const Scene& scene, RenderMode mode) {
+  const Vec3& sky = scene.background;
+  const bool dim = std::max({sky.x, sky.y, sky.z}) <= kDimBackground;
+  if (scene.lights.empty() && !scene.instances.empty() && (mode != RenderMode::Path || dim))
+    return std::string("the scene has no light, so its objects render black") +
+           (mode == RenderMode::Path ? " under its dim background" : "") +
+           " (add a `light` line: docs/scene-format.md#lights)";
   if (mode != RenderMode::Path) return std::nullopt;
   bool ambient = false, falls_off = false;
   for (const LightSpec& light : scene.lights) {
@@ -16,9 +22,7 @@ std::optional<std::string> dark_scene_note(const Scene& scene, RenderMode mode) 
       case PathReading::LikeWhitted: return std::nullopt;
     }
   }
-  const Vec3& sky = scene.background;
-  if (!(ambient || falls_off) || std::max({sky.x, sky.y, sky.z}) > kDimBackground)
-    return std::nullopt;
+  if (!(ambient || falls_off) || !dim) return std::nullopt;
   std::string why = "in path mode ";
   if (ambient) why += "ambient light is not used";
   if (ambient && falls_off) why += " and ";

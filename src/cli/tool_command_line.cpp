@@ -6,6 +6,27 @@
 #include "version.hpp"
 
 namespace clrt {
+namespace {
+
+// For words left over once every option and positional argument took theirs (CLI11's "The
+// following argument was not expected"): which word, and what the program takes instead.
+std::string extras_message(const CLI::App& app) {
+  const std::vector<std::string> extra = app.remaining();
+  std::string message = extra.size() == 1 ? "unexpected argument '" + extra.front() + "'"
+                                          : "unexpected arguments";
+  if (extra.size() > 1)
+    for (const std::string& word : extra) message += " '" + word + "'";
+  for (const CLI::Option* option : app.get_options()) {
+    if (!option->get_positional() || option->get_expected_max() != 1 || option->count() != 1)
+      continue;
+    message += " (" + app.get_name() + " takes one " + option->get_name() +
+               ", already given as '" + option->as<std::string>() + "')";
+    break;
+  }
+  return message;
+}
+
+}  // namespace
 
 void identify_tool(CLI::App& app) {
   const std::string name = app.get_name();
@@ -29,6 +50,8 @@ std::optional<int> parse_tool_arguments(CLI::App& app, std::vector<std::string> 
     const std::optional<std::string> culprit = unknown_word_message(app, args);
     if (culprit)
       report(CLI::ParseError(*culprit, e.get_exit_code()));
+    else if (dynamic_cast<const CLI::ExtrasError*>(&e))
+      report(CLI::ParseError(extras_message(app), e.get_exit_code()));
     else
       report(e);
     return 2;

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cstdlib>
 
-#include "cli/nearest_name.hpp"
+#include "text/nearest_name.hpp"
 
 namespace clrt {
 namespace {

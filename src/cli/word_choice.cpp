@@ -1,6 +1,6 @@
 #include "cli/word_choice.hpp"
 
-#include "cli/nearest_name.hpp"
+#include "text/nearest_name.hpp"
 
 namespace clrt {
 

@@ -5,6 +5,7 @@
 #include "scene/light_kinds.hpp"
 #include "scene/limits.hpp"
 #include "scene/number.hpp"
+#include "text/nearest_name.hpp"
 
 namespace clrt {
 namespace {
@@ -25,10 +26,16 @@ const LightKindEntry& find_kind(const CommandArgs& a) {
                      "kind, found " +
                          std::to_string(numbers));
   }
-  const LightKindEntry* entry = find_light_kind(lower_case(a.word(kKind).text));
-  if (!entry)
-    throw a.error_at(kKind, "unknown light kind '" + excerpt(a.word(kKind).text) + "' (expected " +
+  const std::string kind = lower_case(a.word(kKind).text);
+  const LightKindEntry* entry = find_light_kind(kind);
+  if (!entry) {
+    std::vector<std::string> names;
+    for (const LightKindEntry& row : light_kind_table()) names.emplace_back(row.name);
+    const std::optional<std::string> near = nearest_name(kind, names);
+    throw a.error_at(kKind, "unknown light kind '" + excerpt(a.word(kKind).text) + "' (" +
+                                (near ? "did you mean '" + *near + "'? " : "") + "expected " +
                                 light_kind_names() + ")");
+  }
   return *entry;
 }
 

@@ -6,15 +6,25 @@
 #include "scene/lexer.hpp"
 #include "scene/limits.hpp"
 #include "scene/scene_loaders.hpp"
+#include "text/nearest_name.hpp"
 
 namespace clrt {
 namespace {
 
+// "unknown command 'sphree' (did you mean 'sphere'?)", the suggestion only when a command is
+// close (text/nearest_name.hpp).
+SceneError unknown_command(const CommandArgs& args) {
+  std::vector<std::string> names;
+  for (const auto& [name, handler] : command_table()) names.push_back(name);
+  std::string message = "unknown command '" + excerpt(args.command_word().text) + "'";
+  if (const std::optional<std::string> near = nearest_name(args.name(), names))
+    message += " (did you mean '" + *near + "'?)";
+  return SceneError(args.command_location(), message);
+}
+
 void apply(LoaderState& state, const CommandArgs& args) {
   const auto command = command_table().find(args.name());
-  if (command == command_table().end() || args.command_word().quoted)
-    throw SceneError(args.command_location(),
-                     "unknown command '" + excerpt(args.command_word().text) + "'");
+  if (command == command_table().end() || args.command_word().quoted) throw unknown_command(args);
   command->second(state, args);
 }
 

@@ -1,7 +1,7 @@
 // The "did you mean" of every tool: edits counted as users slip, and only close names offered.
 #include <catch2/catch.hpp>
 
-#include "cli/nearest_name.hpp"
+#include "text/nearest_name.hpp"
 
 using clrt::edit_distance;
 using clrt::nearest_name;

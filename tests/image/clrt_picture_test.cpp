@@ -159,3 +159,24 @@ TEST_CASE("a Whitted scene in path mode gets one note that the image may be dark
   CHECK_THAT(clrt_run(dir, kCornell + small + " --mode path").err, !Contains("note:"));
   CHECK_THAT(clrt_run(dir, kTest2 + small + " --mode path").err, !Contains("note:"));
 }
+
+TEST_CASE("a scene with objects and no light gets a note that they render black",
+          "[cli][picture]") {
+  ScratchDir dir;
+  const std::string small = " --resolution 8x8 -o none";
+  const std::string unlit = quoted(dir.write("unlit.ray", "sphere\n"));
+  for (const char* mode : {"trace", "cast", "path"}) {
+    INFO(mode);
+    const ToolResult run = clrt_run(dir, unlit + small + " --mode " + mode);
+    CHECK(run.status == 0);
+    CHECK_THAT(run.err, Contains("unlit.ray: the scene has no light, so its objects render black"));
+  }
+  // Lit by a bright sky in path mode, by any light otherwise, or with nothing in it: no note.
+  const std::string sky = quoted(dir.write("sky.ray", "background 1 1 1\nsphere\n"));
+  CHECK_THAT(clrt_run(dir, sky + small + " --mode path").err, !Contains("note:"));
+  CHECK_THAT(clrt_run(dir, sky + small).err, Contains("no light"));
+  const std::string lit = quoted(dir.write("lit.ray", "light 1 1 1 ambient\nsphere\n"));
+  CHECK_THAT(clrt_run(dir, lit + small).err, !Contains("note:"));
+  const std::string empty = quoted(dir.write("empty.ray", "background 0 0 1\n"));
+  CHECK_THAT(clrt_run(dir, empty + small).err, !Contains("note:"));
+}

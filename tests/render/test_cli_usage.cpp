@@ -88,6 +88,19 @@ TEST_CASE("an unknown option is named, with the nearest real one when one is clo
   }
 }
 
+TEST_CASE("a second scene is named, with the one already given", "[cli][usage]") {
+  const std::string first = test_scene("test2.ray"), second = test_scene("reflect.ray");
+  const CommandResult r = run_clrt(quoted(first) + " " + quoted(second) + " -o none");
+  INFO(r.output);
+  CHECK(r.exit_code == 2);
+  CHECK(r.output.rfind("clrt: error: unexpected argument '" + second +
+                           "' (clrt takes one scene, already given as '" + first + "')\n",
+                       0) == 0);
+  const CommandResult two = run_clrt(quoted(first) + " a.ray b.ray -o none");
+  CHECK(two.exit_code == 2);
+  CHECK(two.output.rfind("clrt: error: unexpected arguments 'a.ray' 'b.ray'", 0) == 0);
+}
+
 TEST_CASE("a number that is no number says so, one out of range names the range",
           "[cli][usage]") {
   ScratchDir dir;

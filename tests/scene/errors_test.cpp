@@ -21,6 +21,44 @@ TEST_CASE("an unknown command is reported at the command word", "[scene][errors]
   require_error("\"sphere\"\n", 1, 1, "unknown command 'sphere'");
 }
 
+TEST_CASE("a mistyped command or light kind gets the one it was probably meant to be",
+          "[scene][errors]") {
+  require_error("sphree\n", 1, 1, "unknown command 'sphree' (did you mean 'sphere'?)");
+  require_error("LOOKAT 0 0 0\nmaterail 1 0 0 .2 .8 0 1 0 0\n", 2, 1,
+                "unknown command 'materail' (did you mean 'material'?)");
+  require_error("trnaslate 1 0 0\n", 1, 1, "(did you mean 'translate'?)");
+  // Nothing close: no guess.
+  const clrt::SceneError far = load_error("teapot\n");
+  CHECK(far.message() == "unknown command 'teapot'");
+  require_error("light 1 1 1 poitn 0 0 0\n", 1, 13,
+                "unknown light kind 'poitn' (did you mean 'point'? expected ambient, point, "
+                "directional, spot or area)");
+  CHECK(load_error("light 1 1 1 strobe 0 0 0\n").message().find("did you mean") ==
+        std::string::npos);
+}
+
+TEST_CASE("another renderer's scene or a mesh given as the scene is named for what it is",
+          "[scene][errors]") {
+  ScratchDir dir;
+  const struct {
+    const char* file;
+    const char* what;
+  } cases[] = {{"teapot.pbrt", "this is a pbrt scene"},   {"box.gltf", "this is a glTF scene"},
+               {"box.GLB", "this is a glTF scene"},       {"cbox.xml", "this is a Mitsuba scene"},
+               {"chess.pov", "this is a POV-Ray scene"},  {"bunny.ply", "this is a PLY mesh"}};
+  for (const auto& c : cases) {
+    INFO(c.file);
+    const std::string path = dir.write(c.file, "Shape \"sphere\"\n");
+    const clrt::SceneError e = load_error_of_file(path);
+    CHECK(std::string(e.what()).rfind(path + ": error: " + c.what, 0) == 0);
+    CHECK_THAT(e.message(), Catch::Contains("clrt reads .ray scenes (docs/scene-format.md) and NFF"));
+  }
+  const std::string obj = dir.write("cube.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+  CHECK_THAT(load_error_of_file(obj).message(),
+             Catch::Contains("this is an OBJ mesh, not a scene clrt reads") &&
+                 Catch::Contains("with `mesh \"cube.obj\"`"));
+}
+
 TEST_CASE("a word that is not a number is reported at that word", "[scene][errors]") {
   require_error("translate 1 two 3\n", 1, 13, "expected a number, found 'two'");
   require_error("fov 45deg\n", 1, 5, "expected a number");
@@ -79,7 +117,7 @@ TEST_CASE("a UTF-8 byte order mark at the start of a scene file is skipped", "[s
             .instances.size() == 1);
   // Columns count from the first character after it, as an editor shows them.
   const clrt::SceneError e = load_error(mark + "sphre 0 0 0 1\n");
-  CHECK(e.message() == "unknown command 'sphre'");
+  CHECK(e.message() == "unknown command 'sphre' (did you mean 'sphere'?)");
   CHECK(e.where().column == 1);
   // Elsewhere it is no mark but bytes of a word.
   require_error("sphere\n" + mark + "sphere\n", 2, 1, "unknown command '" + mark + "sphere'");

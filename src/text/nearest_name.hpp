@@ -1,5 +1,5 @@
 // The name a mistyped word was probably meant to be, for "did you mean ...?" in every clrt
-// tool's usage errors.
+// tool's usage errors and the scene reader's errors.
 #pragma once
 
 #include <cstddef>

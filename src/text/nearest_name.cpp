@@ -1,4 +1,4 @@
-#include "cli/nearest_name.hpp"
+#include "text/nearest_name.hpp"
 
 #include <algorithm>
 
