@@ -96,6 +96,26 @@ TEST_CASE("convert to GIF: every frame of an FSF, its size, the delay of --fps, 
   }
 }
 
+TEST_CASE("info describes the GIFs convert writes: size, frames, delay, looping", "[img][gif]") {
+  ScratchDir dir;
+  const std::string fsf = dir.file("turn.fsf"), gif_path = dir.file("turn.gif");
+  clrt::write_image(fsf, Rgba8Image{12, 5, {flat(12, 5, 0, 0, 0), flat(12, 5, 255, 0, 0),
+                                            flat(12, 5, 0, 0, 255)}});
+  REQUIRE(run_img(dir, "convert " + quoted(fsf) + " " + quoted(gif_path) + " --fps 4").status == 0);
+  const ToolResult info = run_img(dir, "info " + quoted(gif_path));
+  INFO(info.err);
+  CHECK(info.status == 0);
+  CHECK(info.out_text() == "file: " + gif_path +
+                        "\nformat: GIF\nwidth: 12\nheight: 5\nframes: 3\nchannels: palette\n"
+                        "samples: 8-bit\nplacement: none (GIF cannot record one)\n"
+                        "frame delay: 0.25 s\nloops: yes\n");
+  // Not a GIF inside: an error naming the file, exit 1 as for any unreadable image.
+  const std::string fake = dir.write("fake.gif", "GIF? no\n");
+  const ToolResult bad = run_img(dir, "info " + quoted(fake));
+  CHECK(bad.status != 0);
+  CHECK_THAT(bad.err, Catch::Contains(fake + ": not a readable GIF"));
+}
+
 TEST_CASE("convert to GIF: a colour between the palette's levels is dithered to its mean",
           "[img][gif]") {
   ScratchDir dir;

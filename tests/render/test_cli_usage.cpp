@@ -144,6 +144,8 @@ TEST_CASE("every tool words a bad number as clrt does", "[cli][usage]") {
             "clrt-img: error: --threshold: x is not a number\n"},
            {CLRT_IMG_EXE, "diff a.png b.png --threshold -1",
             "clrt-img: error: --threshold: -1 is less than 0\n"},
+           {CLRT_IMG_EXE, "convert a.ppm a.gif --fps 0",
+            "clrt-img: error: --fps: 0 is not in the range 0.1 to 100\n"},
            {CLRT_MAKE_SCENES_EXE, "--scale 0", "clrt-make-scenes: error: --scale: 0 is not above 0\n"},
            {CLRT_EXPERIMENT_EXE, "--spp abc s.ray",
             "clrt-experiment: error: --spp: abc is not a whole number\n"},

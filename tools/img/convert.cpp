@@ -132,7 +132,7 @@ void add_convert(CLI::App& app, Command& command) {
   sub->add_option("--fps", options->fps,
                   "frames per second of a GIF animation (default 25; GIF keeps hundredths of a "
                   "second, so the delay is rounded to one)")
-      ->check(CLI::Range(0.1, 100.0));
+      ->check(decimal_number(0.1, 100.0));
   sub->add_option("--exposure", options->display.exposure,
                   "float to 8-bit: multiply every value by 2^STOPS first (default 0)")
       ->check(decimal_number());

@@ -4,9 +4,12 @@
 #include <CLI/CLI.hpp>
 
 #include <iostream>
+#include <limits>
 #include <optional>
 
+#include "cli/decimal_number.hpp"
 #include "cli/tool_command_line.hpp"
+#include "cli/whole_number.hpp"
 #include "cli/word_choice.hpp"
 #include "window.hpp"
 
@@ -28,7 +31,7 @@ void add_options(CLI::App& app, ViewOptions& options) {
   app.add_option("--exposure", options.exposure, "stops to scale the values by (default 0)");
   app.add_option("--gamma", options.gamma,
                  "show value^(1/gamma) (default 1: the bytes clrt's PNG holds)")
-      ->check(CLI::Range(0.1, 10.0));
+      ->check(clrt::decimal_number(0.1, 10.0));
   app.add_option("--tonemap", options.tonemap,
                  "the tone curve: clamp (default: values above 1 are white) or filmic")
       ->transform(clrt::word_choice(clrt::tone_curve_names()));
@@ -36,13 +39,13 @@ void add_options(CLI::App& app, ViewOptions& options) {
                "encode with sRGB's curve instead of the gamma, as clrt --mode path writes its "
                "8-bit images");
   app.add_option("--frame", options.frame, "the frame to start at, from 1")
-      ->check(CLI::PositiveNumber);
+      ->transform(clrt::whole_number(1, std::numeric_limits<int>::max()));
   app.add_option("--fps", options.fps, "frames per second of an animation (default 25)")
-      ->check(CLI::Range(0.1, 1000.0));
+      ->check(clrt::decimal_number(0.1, 1000.0));
   app.add_flag("--pause", options.pause, "start an animation paused");
   app.add_option("--zoom", options.zoom,
                  "screen pixels per image pixel (default: the most that fit 1024x768)")
-      ->check(CLI::Range(1, 256));
+      ->transform(clrt::whole_number(1, 256));
   app.add_flag("--side-by-side", options.side_by_side, "two images: show them side by side");
   app.add_flag("--difference", options.difference, "two images: show their difference");
   app.add_flag("--flip", options.show_b, "two images: start on the second");
