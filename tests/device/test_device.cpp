@@ -1,6 +1,8 @@
 // Choosing devices, building programs and allocating buffers: the errors users see.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+
 #include "cl_fixture.hpp"
 #include "device/device_select.hpp"
 
@@ -21,6 +23,23 @@ TEST_CASE("device specs choose devices", "[device]") {
   std::string part = all[0].device.name().substr(0, 6);
   for (char& c : part) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
   CHECK_FALSE(select_devices(part).empty());
+}
+
+TEST_CASE("cpu is PoCL's CPU device wherever PoCL is installed, whatever is listed first",
+          "[device][default-device]") {
+  // Run again with Intel's runtime listed before PoCL (test_device@intel), where the first CPU
+  // device is Intel's.
+  const std::vector<DeviceEntry> all = enumerate_devices();
+  const auto is_pocl = [](const DeviceEntry& e) {
+    return e.device.platform().name() == "Portable Computing Language";
+  };
+  const std::vector<DeviceEntry> cpu = select_devices("cpu");
+  REQUIRE(cpu.size() == 1);
+  const bool pocl_installed = std::any_of(all.begin(), all.end(), [&](const DeviceEntry& e) {
+    return is_pocl(e) && (e.device.type() & CL_DEVICE_TYPE_CPU);
+  });
+  INFO("the first device: " << all.front().device.platform().name());
+  if (pocl_installed) CHECK(is_pocl(cpu[0]));
 }
 
 TEST_CASE("a spec that matches nothing lists the devices that exist", "[device]") {
