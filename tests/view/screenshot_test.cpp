@@ -12,6 +12,7 @@
 #include <thread>
 
 #include "image/image.hpp"
+#include "png_chunks.hpp"
 #include "scratch_dir.hpp"
 #include "skip_test.hpp"
 #include "controls.hpp"
@@ -22,6 +23,8 @@
 
 using namespace clrt;
 using namespace clrt::view;
+using clrt::test::png_declaring;
+using clrt::test::write_bytes;
 using clrt::test::ScratchDir;
 using clrt::test::WindowPixels;
 using clrt::test::XScreen;
@@ -255,6 +258,28 @@ TEST_CASE("clrt --preview without a display says so and renders anyway",
   CHECK(read_png(png).width == 8);
   CHECK(text_of(dir.file("err.txt")).find("clrt: warning: --preview: clrt-view could not open a "
                                           "window; rendering without it") != std::string::npos);
+}
+
+TEST_CASE("clrt-view refuses, from the header and before any window, an image the memory cannot "
+          "hold",
+          "[view][memory]") {
+#if defined(__SANITIZE_ADDRESS__)
+  CLRT_SKIP_TEST("AddressSanitizer cannot run under ulimit -v");
+#endif
+  ScratchDir dir;
+  // A PNG of a few hundred bytes declaring 16384 x 16384 pixels: 4 GiB as 8-bit RGBA and floats.
+  const std::string big = dir.file("big.png");
+  write_bytes(big, png_declaring(16384, 16384));
+  const std::string command = "env -u DISPLAY sh -c \"ulimit -v 262144 && exec '" +
+                              std::string(CLRT_VIEW) + "' '" + big + "'\" 2>'" +
+                              dir.file("err.txt") + "'";
+  const int raw = std::system(command.c_str());
+  REQUIRE(WIFEXITED(raw));
+  const std::string err = text_of(dir.file("err.txt"));
+  INFO(err);
+  CHECK(WEXITSTATUS(raw) == 1);
+  CHECK(err.rfind("clrt-view: error: showing " + big + " needs ", 0) == 0);
+  CHECK(err.find(" MiB available (RLIMIT_AS, ulimit -v)") != std::string::npos);
 }
 
 TEST_CASE("clrt-view's usage errors exit 2 and an unreadable image 1, before any window",

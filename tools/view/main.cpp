@@ -3,6 +3,8 @@
 // a window that cannot be opened, 2 a usage error.
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
+#include <cstdint>
 #include <iostream>
 #include <limits>
 #include <optional>
@@ -10,6 +12,8 @@
 #include "cli/decimal_number.hpp"
 #include "cli/tool_command_line.hpp"
 #include "cli/whole_number.hpp"
+#include "image/image_info.hpp"
+#include "memory_need.hpp"
 #include "cli/word_choice.hpp"
 #include "window.hpp"
 
@@ -53,6 +57,25 @@ void add_options(CLI::App& app, ViewOptions& options) {
                "show the render clrt --preview streams on standard input");
 }
 
+// Refuses, from the headers alone, images whose showing the memory cannot hold: each file with
+// its decoded pixels, every frame again as floats, and with two images their difference's
+// frames (a PNG of under a megabyte may declare 2^28 pixels: gigabytes once decoded).
+void check_view_memory(const std::string& a, const std::string& b) {
+  using clrt::img::pixels_of;
+  clrt::img::MemoryNeed need;
+  constexpr std::uint64_t kFloatPixel = 12;
+  const clrt::ImageInfo first = clrt::read_image_info(a);
+  need.add_read(a, first);
+  need.add_pixels(pixels_of(first), first.frames, kFloatPixel);
+  if (!b.empty()) {
+    const clrt::ImageInfo second = clrt::read_image_info(b);
+    need.add_read(b, second);
+    need.add_pixels(pixels_of(second), second.frames, kFloatPixel);
+    need.add_pixels(pixels_of(first), std::max(first.frames, second.frames), kFloatPixel);
+  }
+  clrt::img::check_memory(need, "showing " + a + (b.empty() ? "" : " and " + b));
+}
+
 int view(const ViewOptions& options) {
   using namespace clrt::view;
   if (options.preview != options.a.empty())
@@ -69,6 +92,7 @@ int view(const ViewOptions& options) {
     sources.a.emplace_back(sources.width, sources.height,
                            std::vector<float>(3 * std::size_t(sources.width) * sources.height));
   } else {
+    check_view_memory(options.a, options.b);
     const clrt::AnyImage a = clrt::read_any_image(options.a);
     if (options.b.empty()) {
       sources = make_sources(a, nullptr);
