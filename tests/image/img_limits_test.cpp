@@ -111,6 +111,42 @@ TEST_CASE("stitch and convert refuse, before decoding, images the memory cannot 
   }
 }
 
+namespace {
+
+// An FSF animation of `frames` frames of one pixel each: 4 bytes a frame, and in memory a vector
+// and an allocation each.
+std::string tiny_frames(const ScratchDir& dir, const std::string& name, std::uint32_t frames) {
+  Bytes fsf = concat({{0x3f, 0x02, 0, 0}, {1, 0, 0, 0}, {1, 0, 0, 0}});
+  for (int shift = 0; shift < 32; shift += 8) fsf.push_back(static_cast<std::uint8_t>(frames >> shift));
+  fsf.resize(fsf.size() + 4 * std::size_t{frames}, 0x80);
+  const std::string path = dir.file(name);
+  write_bytes(path, fsf);
+  return path;
+}
+
+}  // namespace
+
+TEST_CASE("convert to GIF counts each frame's own cost and streams the GIF to its file",
+          "[img][convert][gif][limits][memory]") {
+#if defined(__SANITIZE_ADDRESS__)
+  CLRT_SKIP_TEST("AddressSanitizer cannot run under ulimit -v");
+#endif
+  ScratchDir dir;
+  // 5M frames in a 20 MB file held 426 MB when counted at their pixels alone (60 MB): refused
+  // now from the header, under the cap of 256 MiB.
+  const std::string many = tiny_frames(dir, "many.fsf", 5000000);
+  const std::string gif = dir.file("many.gif");
+  check_refused(run_img_capped(dir, "convert " + quoted(many) + " " + quoted(gif)),
+                {"converting " + many + " needs ", " MiB available (RLIMIT_AS, ulimit -v)"}, gif);
+  // 1.5M frames fit, and so does their GIF (37 MB), which is written as it is made rather than
+  // held whole beside the frames.
+  const std::string fewer = tiny_frames(dir, "fewer.fsf", 1500000);
+  const ToolResult fits = run_img_capped(dir, "convert " + quoted(fewer) + " " + quoted(gif));
+  INFO(fits.err);
+  CHECK(fits.status == 0);
+  CHECK(std::filesystem::file_size(gif) > 25 * std::uintmax_t{1500000});
+}
+
 TEST_CASE("PFM, PPM and FSF headers declaring more pixels than their files hold are refused",
           "[img][convert][limits]") {
   ScratchDir dir;

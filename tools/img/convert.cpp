@@ -5,6 +5,7 @@
 // animated GIF at --fps frames per second; other outputs take the frame --frame names.
 #include <cmath>
 #include <memory>
+#include <optional>
 
 #include "cli/decimal_number.hpp"
 #include "cli/word_choice.hpp"
@@ -54,13 +55,17 @@ const char kHowToPick[] =
 // From the input's header, before any pixel is decoded: a 783 KB PNG declaring 16384x16384
 // pixels took 4.2 GB to convert.
 // `every_frame`: the output holds all the input's frames at once (an FSF or GIF animation).
-void check_convert_memory(const ConvertOptions& options, ImageFormat written, bool every_frame,
-                          ExrPixel exr_pixel) {
+// `written`: the output's format, or none for a GIF.
+void check_convert_memory(const ConvertOptions& options, std::optional<ImageFormat> written,
+                          bool every_frame, ExrPixel exr_pixel) {
   const ImageInfo info = read_image_info(options.input);
   MemoryNeed need;
   need.add_read(options.input, info);
-  need.add_write(pixels_of(info), every_frame ? info.frames : 1, reads_as_float(info.format),
-                 written, exr_pixel);
+  const std::uint64_t frames = every_frame ? info.frames : 1;
+  if (written)
+    need.add_write(pixels_of(info), frames, reads_as_float(info.format), *written, exr_pixel);
+  else
+    need.add_gif_write(pixels_of(info), frames, reads_as_float(info.format));
   check_memory(need, "converting " + options.input);
 }
 
@@ -70,8 +75,7 @@ int convert_to_gif(const ConvertOptions& options) {
     throw UsageError("--format does not apply to a GIF output, which its name chooses");
   // An input no reader takes is a usage error, as below.
   check_display(options, input_format(options.input), false);
-  // The GIF's indexed frames are held whole as a PNG's rows are, at a byte a pixel or less.
-  check_convert_memory(options, ImageFormat::Png, !options.frame, ExrPixel::Half);
+  check_convert_memory(options, std::nullopt, !options.frame, ExrPixel::Half);
   AnyImage image = read_any_image(options.input);
   if (options.frame) image = pick_frame(image, options.frame, options.input, kHowToPick);
   const Rgba8Image* rgba = std::get_if<Rgba8Image>(&image);

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <exception>
 #include <memory>
 
 #include "image/atomic_file.hpp"
@@ -35,9 +36,22 @@ struct GifCloser {
   void operator()(GifFileType* gif) const { EGifCloseFile(gif, nullptr); }
 };
 
-int append_bytes(GifFileType* gif, const GifByteType* data, int size) {
-  auto* bytes = static_cast<std::vector<std::uint8_t>*>(gif->UserData);
-  bytes->insert(bytes->end(), data, data + size);
+// Where giflib's pieces of the file go: the sink, with a failure to write kept to be rethrown
+// once giflib has returned (an exception must not unwind through its C frames).
+struct GifOutput {
+  image_detail::ByteSink* sink;
+  std::exception_ptr failure;
+};
+
+int put_bytes(GifFileType* gif, const GifByteType* data, int size) {
+  auto* out = static_cast<GifOutput*>(gif->UserData);
+  if (out->failure) return 0;
+  try {
+    out->sink->write(data, static_cast<std::size_t>(size));
+  } catch (...) {
+    out->failure = std::current_exception();
+    return 0;
+  }
   return size;
 }
 
@@ -89,6 +103,23 @@ void put_frame(GifFileType* gif, const Rgba8Image& image, const std::vector<std:
   }
 }
 
+// The whole file, piece by piece, to `out`; ImageError when giflib fails.
+void encode_frames(const Rgba8Image& image, int delay_cs, GifOutput& out) {
+  int error = 0;
+  std::unique_ptr<GifFileType, GifCloser> gif(EGifOpen(&out, put_bytes, &error));
+  if (!gif) throw ImageError(std::string("GIF encoder: ") + GifErrorString(error));
+  EGifSetGifVersion(gif.get(), true);
+  ColorMapObject* palette = fixed_palette();
+  const int status = EGifPutScreenDesc(gif.get(), image.width, image.height, 8, 0, palette);
+  GifFreeMapObject(palette);
+  check(status, gif.get(), "screen");
+  if (image.frames.size() > 1) put_loop_forever(gif.get());
+  for (const auto& frame : image.frames) put_frame(gif.get(), image, frame, delay_cs);
+  GifFileType* done = gif.release();
+  if (EGifCloseFile(done, &error) == GIF_ERROR)
+    throw ImageError(std::string("GIF encoder: ") + GifErrorString(error));
+}
+
 }  // namespace
 
 std::uint8_t gif_level_value(int channel, int level) {
@@ -103,31 +134,23 @@ std::uint8_t gif_palette_index(const std::uint8_t rgb[3], int x, int y) {
   return static_cast<std::uint8_t>((r * kGifLevels[1] + g) * kGifLevels[2] + b);
 }
 
-std::vector<std::uint8_t> encode_gif(const Rgba8Image& image, int delay_cs) {
+void encode_gif(const Rgba8Image& image, int delay_cs, image_detail::ByteSink& sink) {
   if (image.width > 65535 || image.height > 65535)
     throw ImageError("GIF cannot hold an image of " + std::to_string(image.width) + "x" +
                      std::to_string(image.height) + " (at most 65535 a side)");
-  std::vector<std::uint8_t> bytes;
-  int error = 0;
-  std::unique_ptr<GifFileType, GifCloser> gif(EGifOpen(&bytes, append_bytes, &error));
-  if (!gif) throw ImageError(std::string("GIF encoder: ") + GifErrorString(error));
-  EGifSetGifVersion(gif.get(), true);
-  ColorMapObject* palette = fixed_palette();
-  const int status = EGifPutScreenDesc(gif.get(), image.width, image.height, 8, 0, palette);
-  GifFreeMapObject(palette);
-  check(status, gif.get(), "screen");
-  if (image.frames.size() > 1) put_loop_forever(gif.get());
-  for (const auto& frame : image.frames) put_frame(gif.get(), image, frame, delay_cs);
-  GifFileType* done = gif.release();
-  if (EGifCloseFile(done, &error) == GIF_ERROR)
-    throw ImageError(std::string("GIF encoder: ") + GifErrorString(error));
-  return bytes;
+  GifOutput out{&sink, nullptr};
+  try {
+    encode_frames(image, delay_cs, out);
+  } catch (const ImageError&) {
+    if (out.failure) std::rethrow_exception(out.failure);
+    throw;
+  }
+  if (out.failure) std::rethrow_exception(out.failure);
 }
 
 void write_gif(const std::string& path, const Rgba8Image& image, int delay_cs) {
-  const std::vector<std::uint8_t> bytes = encode_gif(image, delay_cs);
   image_detail::AtomicFile file(path, path);
-  file.write(bytes.data(), bytes.size());
+  encode_gif(image, delay_cs, file);
   file.finish();
 }
 

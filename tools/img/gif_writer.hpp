@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "image/byte_sink.hpp"
 #include "image/image.hpp"
 
 namespace clrt::img {
@@ -24,8 +25,9 @@ std::uint8_t gif_level_value(int channel, int level);
 // The palette index of pixel (x, y) of colour `rgb`, dithered by its place.
 std::uint8_t gif_palette_index(const std::uint8_t rgb[3], int x, int y);
 
-// The whole file; ImageError if giflib fails.
-std::vector<std::uint8_t> encode_gif(const Rgba8Image& image, int delay_cs);
+// The whole file, written to `sink` piece by piece as giflib makes it (a GIF of millions of
+// frames is never held whole); ImageError if giflib fails, or the sink's own error.
+void encode_gif(const Rgba8Image& image, int delay_cs, image_detail::ByteSink& sink);
 
 // Written to a temporary and renamed into place, as every image clrt writes.
 void write_gif(const std::string& path, const Rgba8Image& image, int delay_cs);

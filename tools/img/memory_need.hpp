@@ -16,13 +16,16 @@ class MemoryNeed {
   void add(std::uint64_t bytes);
   // `pixels` of `frames` frames at `bytes_per_pixel`.
   void add_pixels(std::uint64_t pixels, std::uint64_t frames, std::uint64_t bytes_per_pixel);
-  // Reading `path`: the file itself, held while it is decoded, and its pixels decoded.
+  // Reading `path`: the file itself, held while it is decoded, and its pixels decoded (an 8-bit
+  // image's frames each with its own allocation's overhead).
   void add_read(const std::string& path, const ImageInfo& info);
   // Writing `pixels` of `frames` frames, held as floats or 8-bit, as `written`: a copy as
   // floats for a float format, and what the encoder holds whole, counted at the raw samples'
   // size.
   void add_write(std::uint64_t pixels, std::uint64_t frames, bool held_float,
                  ImageFormat written, ExrPixel exr_pixel);
+  // Writing a GIF of `pixels` in `frames` frames, held as floats or 8-bit.
+  void add_gif_write(std::uint64_t pixels, std::uint64_t frames, bool held_float);
   std::uint64_t bytes() const { return bytes_; }
 
  private:
