@@ -194,6 +194,10 @@ int render_frames(const CliOptions& cli, Scene& scene, const FramePlan& frames,
                    seconds_text(seconds_since(start)) + ")");
   }
   if (animation) animation->finish();
+  if (preview && preview->bands_dropped() > 0)
+    progress.message("clrt: warning: --preview: clrt-view fell behind; " +
+                     std::to_string(preview->bands_dropped()) +
+                     " bands were not shown (the image written is whole)");
   renderer.report(stats);
   stats.build_seconds += devices.seconds;
   stats.width = region.width;
