@@ -1,5 +1,8 @@
 // clrt-view under Xvfb: the window's pixels, read back from the X server, against the picture
 // the viewer's own functions compose on the host, and against values worked out by hand.
+#include <arpa/inet.h>
+#include <netinet/in.h>
+#include <sys/socket.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -243,6 +246,42 @@ TEST_CASE("clrt --preview shows the render in clrt-view as it fills in, and the 
   const WindowPixels window = shown(screen, expected, "render complete");
   check_shows(window, expected, log);
   CHECK(window.title.find("render complete") != std::string::npos);
+}
+
+TEST_CASE("clrt --preview with a display that takes the connection and never answers renders "
+          "anyway",
+          "[view][preview]") {
+  // A listening socket on X's port for display N: the kernel accepts the connection, and no X
+  // server ever replies, as over a stalled X forwarding.
+  const int listener = socket(AF_INET, SOCK_STREAM | SOCK_CLOEXEC, 0);
+  REQUIRE(listener >= 0);
+  int display = 0;
+  for (int n = 50; n < 100 && !display; ++n) {
+    sockaddr_in address{};
+    address.sin_family = AF_INET;
+    address.sin_port = htons(static_cast<std::uint16_t>(6000 + n));
+    address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+    if (bind(listener, reinterpret_cast<sockaddr*>(&address), sizeof address) == 0) display = n;
+  }
+  REQUIRE(display);
+  REQUIRE(listen(listener, 8) == 0);
+  ScratchDir dir;
+  const std::string png = dir.file("out.png");
+  const std::string scene = std::string(CLRT_SOURCE_DIR) + "/scenes/reflect.ray";
+  const std::string command = "env -u WAYLAND_DISPLAY DISPLAY=127.0.0.1:" +
+                              std::to_string(display) + " SDL_VIDEODRIVER=x11 timeout 180 '" +
+                              std::string(CLRT_EXE) + "' '" + scene +
+                              "' --resolution 8x6 --preview -o '" + png + "' 2>'" +
+                              dir.file("err.txt") + "'";
+  const int status = std::system(command.c_str());
+  close(listener);
+  const std::string err = text_of(dir.file("err.txt"));
+  INFO(err);
+  REQUIRE(WIFEXITED(status));
+  CHECK(WEXITSTATUS(status) == 0);  // 124 had it hung
+  CHECK(err.find("clrt: warning: --preview: clrt-view could not open a window; rendering "
+                 "without it") != std::string::npos);
+  CHECK(read_png(png).width == 8);
 }
 
 TEST_CASE("clrt --preview without a display says so and renders anyway",
