@@ -177,7 +177,9 @@ std::unique_ptr<CLI::App> clrt_command_line(CliOptions& o, StatsRequest& stats,
     program.add_own_options(*app);
   }
   app->option_defaults()->group("Diagnostics");
-  app->footer("Every option, its defaults and its pbrt spelling: docs/cli.md");
+  app->footer(std::string("Every option, its defaults and its pbrt spelling: man clrt, and "
+                          "docs/cli.md (installed as ") +
+              CLRT_INSTALLED_DOC_DIR + "/docs/cli.md)");
   app->add_flag("--stats", stats.flag,
                 "print rays by kind, times and queue sizes to stdout (--stats=json: as JSON)");
   app->add_option("--stats-format", stats.format, "text or json")

@@ -199,7 +199,7 @@ TEST_CASE("pbrt's spellings --outfile, --nthreads, --pixelbounds and --cropwindo
   }
 }
 
-TEST_CASE("the help lists the options in groups and ends pointing to docs/cli.md",
+TEST_CASE("the help lists the options in groups and ends pointing to the man page and docs/cli.md",
           "[cli][usage]") {
   const CommandResult help = run_clrt("--help");
   CHECK(help.exit_code == 0);
@@ -211,7 +211,8 @@ TEST_CASE("the help lists the options in groups and ends pointing to docs/cli.md
     CHECK(at != std::string::npos);
   }
   CHECK(help.output.find("--spp INT:1 to 65536") != std::string::npos);
-  const std::string last = "docs/cli.md\n";
+  CHECK(help.output.find("man clrt, and docs/cli.md (installed as ") != std::string::npos);
+  const std::string last = "/docs/cli.md)\n";
   CHECK(help.output.size() > last.size());
   CHECK(help.output.compare(help.output.size() - last.size(), last.size(), last) == 0);
 }

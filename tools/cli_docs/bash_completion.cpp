@@ -13,6 +13,14 @@ std::string joined(const std::vector<std::string>& words, const std::string& bet
   return text;
 }
 
+// Free-text options whose usual values are words, not paths: --device takes a name or P:D too,
+// but these words are what one types.
+std::string usual_words(const OptionEntry& option) {
+  for (const std::string& name : option.names)
+    if (name == "--device") return "cpu gpu all";
+  return "";
+}
+
 // Numbers cannot be completed; any other free text is most often a path.
 bool takes_a_number(const std::string& value) {
   const std::string kind = value.substr(0, value.find(':'));
@@ -31,8 +39,10 @@ std::string bash_completion(const CLI::App& app, const std::vector<std::string>&
     all_names.insert(all_names.end(), option.names.begin(), option.names.end());
     if (option.value.empty()) continue;
     const std::string names = joined(option.names, "|");
-    if (!option.choices.empty())
-      choices << "    " << names << ") COMPREPLY=($(compgen -W '" << joined(option.choices, " ")
+    const std::string words =
+        option.choices.empty() ? usual_words(option) : joined(option.choices, " ");
+    if (!words.empty())
+      choices << "    " << names << ") COMPREPLY=($(compgen -W '" << words
               << "' -- \"$cur\")); return ;;\n";
     else if (takes_a_number(option.value))
       number_values.push_back(names);

@@ -64,4 +64,6 @@ TEST_CASE("the bash completion completes options and their words", "[cli][docs]"
   CHECK(completions("clrt --integrator w") == "wavefront\n");
   CHECK(completions("clrt --frame") == "--frames --frame-range\n");
   CHECK(completions("clrt --spp \"\"") == "\n");  // a number: nothing to offer
+  CHECK(completions("clrt --device \"\"") == "cpu gpu all\n");  // words, not file names
+  CHECK(completions("clrt --device g") == "gpu\n");
 }

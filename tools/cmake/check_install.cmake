@@ -1,5 +1,7 @@
 # Installs the build tree BUILD into PREFIX and checks that the programs, the plot script, the
-# man page, the bash completion and the documentation are there, that the benchmarks are not, and that the installed programs run.
+# man page, the bash completion, the example scenes and the documentation are there, that every
+# relative link of the installed documentation leads to an installed file, that the benchmarks
+# are not there, and that the installed programs run (clrt on an installed scene).
 # From an empty PREFIX: a former install's files would pass for this one's.
 file(REMOVE_RECURSE ${PREFIX})
 execute_process(COMMAND ${CMAKE_COMMAND} --install ${BUILD} --prefix ${PREFIX}
@@ -10,7 +12,8 @@ endif()
 foreach(file bin/clrt bin/clrt-img bin/clrt-experiment bin/clrt-make-scenes
              share/clrt/plot_experiment.py share/doc/clrt/README.md share/man/man1/clrt.1
              share/bash-completion/completions/clrt
-             share/doc/clrt/scene-format.md share/doc/clrt/images.md)
+             share/doc/clrt/docs/scene-format.md share/doc/clrt/docs/images.md
+             share/doc/clrt/docs/cli.md share/clrt/scenes/reflect.ray share/clrt/scenes/meshes/icosphere.obj)
   if(NOT EXISTS ${PREFIX}/${file})
     message(FATAL_ERROR "cmake --install did not install ${file}")
   endif()
@@ -27,3 +30,38 @@ foreach(program clrt clrt-img clrt-experiment)
     message(FATAL_ERROR "the installed ${program} --version failed: ${version}")
   endif()
 endforeach()
+
+# Every relative link of the installed pages, to a file that is there.
+file(GLOB_RECURSE pages "${PREFIX}/share/doc/clrt/*.md")
+set(broken "")
+foreach(page IN LISTS pages)
+  file(READ "${page}" text)
+  get_filename_component(folder "${page}" DIRECTORY)
+  string(REGEX MATCHALL "\\]\\([^) \n]+\\)" links "${text}")
+  foreach(link IN LISTS links)
+    string(REGEX REPLACE "^\\]\\(([^)#]*).*$" "\\1" path "${link}")
+    if(path STREQUAL "" OR path MATCHES "^[a-zA-Z]+:")
+      continue()
+    endif()
+    get_filename_component(resolved "${path}" ABSOLUTE BASE_DIR "${folder}")
+    if(NOT EXISTS "${resolved}")
+      file(RELATIVE_PATH where "${PREFIX}" "${page}")
+      string(APPEND broken "\n  ${where}: ${path}")
+    endif()
+  endforeach()
+endforeach()
+if(broken)
+  message(FATAL_ERROR "installed documentation links to files that are not installed:${broken}")
+endif()
+list(LENGTH pages page_count)
+if(page_count LESS 14)
+  message(FATAL_ERROR "only ${page_count} pages of documentation were installed")
+endif()
+
+# The installed clrt renders an installed example scene, its meshes found beside it.
+execute_process(COMMAND ${PREFIX}/bin/clrt ${PREFIX}/share/clrt/scenes/mesh.ray --resolution 16x8 -q
+                        -o ${PREFIX}/mesh.png
+                RESULT_VARIABLE status ERROR_VARIABLE error)
+if(NOT status EQUAL 0 OR NOT EXISTS ${PREFIX}/mesh.png)
+  message(FATAL_ERROR "the installed clrt could not render the installed mesh.ray: ${error}")
+endif()
