@@ -1,5 +1,7 @@
 #include "man_page.hpp"
 
+#include <algorithm>
+
 #include <sstream>
 
 #include "option_list.hpp"
@@ -54,10 +56,17 @@ std::string man_page(const CLI::App& app, const std::string& version, const std:
       out << ".TP\n\\fI" << roff(upper(positional->get_name())) << "\\fR\n"
           << roff(positional->get_description()) << "\n";
   out << ".SH OPTIONS\n";
-  std::string group;
-  for (const OptionEntry& option : listed_options(app)) {
-    if (option.group != group) out << ".SS " << roff(group = option.group) << "\n";
-    write_option(out, option);
+  // Each group once, in the order it first appears, as --help lists them: options added to a
+  // group later (--preview after the animation's) join it there.
+  const std::vector<OptionEntry> options = listed_options(app);
+  std::vector<std::string> groups;
+  for (const OptionEntry& option : options)
+    if (std::find(groups.begin(), groups.end(), option.group) == groups.end())
+      groups.push_back(option.group);
+  for (const std::string& group : groups) {
+    out << ".SS " << roff(group) << "\n";
+    for (const OptionEntry& option : options)
+      if (option.group == group) write_option(out, option);
   }
   out << ".SH SEE ALSO\n" << roff(see_also) << "\n";
   return out.str();

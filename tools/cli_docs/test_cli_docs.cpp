@@ -58,6 +58,19 @@ TEST_CASE("the man page and docs/cli.md list every option --help lists", "[cli][
   }
 }
 
+TEST_CASE("the man page names each group of options once", "[cli][docs]") {
+  const std::string page = file_bytes(CLRT_MAN_PAGE);
+  for (const char* group : {".SS Scene and image\n", ".SS Rendering\n", ".SS Devices\n",
+                            ".SS Output\n", ".SS Animation\n", ".SS Diagnostics\n"}) {
+    INFO(group);
+    const std::size_t first = page.find(group);
+    REQUIRE(first != std::string::npos);
+    CHECK(page.find(group, first + 1) == std::string::npos);
+  }
+  // --preview, added after the animation's options, is listed under Output.
+  CHECK(page.find("\\-\\-preview") < page.find(".SS Animation\n"));
+}
+
 TEST_CASE("the bash completion completes options and their words", "[cli][docs]") {
   CHECK(completions("clrt --sp") == "--spp\n");
   CHECK(completions("clrt scene.ray --mode \"\"") == "trace cast path\n");  // in --help's order
