@@ -120,7 +120,8 @@ TEST_CASE("camera commands with the wrong number of arguments", "[scene][camera]
   require_error("up 0 1\n", 1, 7, "wrong number of arguments");
 }
 
-TEST_CASE("lens gives the thin lens's radius and focus distance; none is a pinhole",
+TEST_CASE("lens gives the thin lens's radius and focus distance, and without it the camera is "
+          "a pinhole",
           "[scene][camera]") {
   const clrt::Scene pinhole = load_text("");
   CHECK(pinhole.camera.lens_radius == 0);
