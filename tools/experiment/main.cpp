@@ -6,6 +6,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <ctime>
 #include <filesystem>
 #include <fstream>
@@ -45,10 +46,62 @@ nlohmann::json machine() {
           {"date", now_text()}};
 }
 
+// Written beside its place and renamed into it, so that an interrupted experiment leaves the
+// last whole file, never half of one.
 void write_file(const fs::path& path, const std::string& text) {
-  std::ofstream out(path, std::ios::binary);
-  out << text;
-  if (!out) throw std::runtime_error("cannot write " + path.string());
+  const fs::path temporary = path.string() + ".partial";
+  {
+    std::ofstream out(temporary, std::ios::binary);
+    out << text;
+    if (!out.flush()) throw std::runtime_error("cannot write " + temporary.string());
+  }
+  fs::rename(temporary, path);
+}
+
+// The settings that make two experiments the same experiment (for --resume).
+nlohmann::json settings_of(const Plan& plan) {
+  return {{"scenes", plan.scenes},   {"repeats", plan.repeats},
+          {"resolution", plan.resolution}, {"spp", plan.spp},
+          {"mode", plan.mode.empty() ? "trace" : plan.mode},
+          {"format", plan.format},   {"clrt_executable", plan.clrt}};
+}
+
+// results.json for `runs`: `complete` once every run of the plan is in.
+nlohmann::json results_of(const Plan& plan, const nlohmann::json& runs, bool complete) {
+  nlohmann::json results = {{"clrt", clrt_version_string()}, {"machine", machine()}};
+  results["settings"] = settings_of(plan);
+  results["complete"] = complete;
+  results["runs"] = runs;
+  results["summary"] = summarize(runs);
+  results["scores"] = device_scores(results["summary"]);
+  results["title"] = experiment_title(results);
+  return results;
+}
+
+// The runs an interrupted experiment in `out` finished, for --resume: none without its
+// results.json; CLI::ValidationError when they belong to another experiment.
+nlohmann::json finished_runs(const Plan& plan) {
+  const fs::path path = fs::path(plan.out_dir) / "results.json";
+  if (!fs::exists(path)) return nlohmann::json::array();
+  std::ifstream in(path);
+  nlohmann::json earlier;
+  try {
+    in >> earlier;
+  } catch (const nlohmann::json::exception&) {
+    throw CLI::ValidationError("--resume: " + path.string() + " is not JSON");
+  }
+  if (!earlier.contains("settings") || earlier["settings"] != settings_of(plan) ||
+      !earlier.contains("runs"))
+    throw CLI::ValidationError("--resume: " + path.string() +
+                               " holds another experiment (other scenes, repeats, resolution, "
+                               "samples, mode, format or clrt)");
+  return earlier["runs"];
+}
+
+bool same_run(const nlohmann::json& record, const Plan& plan, const RunKey& key) {
+  return record["scene"] == plan.scenes[key.scene] &&
+         record["device_spec"] == plan.devices[key.device].spec &&
+         record["variant"] == plan.variants[key.variant].name() && record["repeat"] == key.repeat;
 }
 
 // clrt and the plot script are found from this program's own place, never from where it was
@@ -68,8 +121,10 @@ std::string image_name(const RunKey& k, const std::string& format) {
          std::to_string(k.variant) + "-r" + std::to_string(k.repeat) + "." + format;
 }
 
-// Runs the whole plan; returns every run's record.
-nlohmann::json run_plan(const Plan& plan) {
+// Runs the whole plan, but for the runs `finished` already holds (--resume); returns every run's
+// record. results.json and runs.csv are rewritten after each run, so that an experiment stopped
+// part-way (Ctrl-C) keeps what it finished.
+nlohmann::json run_plan(const Plan& plan, nlohmann::json finished) {
   const fs::path images = fs::path(plan.out_dir) / "images";
   fs::create_directories(images);
   const std::size_t total =
@@ -82,6 +137,16 @@ nlohmann::json run_plan(const Plan& plan) {
       for (std::size_t d = 0; d < plan.devices.size(); ++d)
         for (std::size_t v = 0; v < plan.variants.size(); ++v) {
           const RunKey key{s, d, v, repeat};
+          const auto earlier = std::find_if(finished.begin(), finished.end(), [&](const auto& r) {
+            return same_run(r, plan, key);
+          });
+          if (earlier != finished.end()) {
+            if (earlier->contains("validation") && !reference.count(s))
+              reference[s] = (*earlier)["validation"]["reference"].get<std::string>();
+            runs.push_back(*earlier);
+            ++done;
+            continue;
+          }
           const std::string image = (images / image_name(key, plan.format)).string();
           nlohmann::json record = run_once(plan, key, image);
           std::cerr << "[" << ++done << "/" << total << "] " << plan.scenes[s] << " on "
@@ -101,6 +166,9 @@ nlohmann::json run_plan(const Plan& plan) {
                       << (record["validation"]["flagged"].get<bool>() ? ", image differs" : "")
                       << "\n";
           runs.push_back(record);
+          const fs::path out(plan.out_dir);
+          write_file(out / "results.json", results_of(plan, runs, false).dump(2) + "\n");
+          write_file(out / "runs.csv", runs_csv(runs));
         }
   return runs;
 }
@@ -148,6 +216,10 @@ int main(int argc, char** argv) {
   app.add_option("--python", python, "the Python with matplotlib that draws the plots")
       ->capture_default_str();
   app.add_flag("!--no-plots", plots, "write no plots");
+  bool resume = false;
+  app.add_flag("--resume", resume,
+               "keep the runs an interrupted experiment of the same settings left in --out's "
+               "results.json, and run only the others");
   if (const auto status = clrt::parse_tool_arguments(app, argc, argv)) return *status;
   if (plan.resolution == "scene") plan.resolution.clear();
   try {
@@ -167,16 +239,15 @@ int main(int argc, char** argv) {
   }
   try {
     plan.devices = choose_devices(device_specs);
-    const nlohmann::json runs = run_plan(plan);
-    nlohmann::json results = {{"clrt", clrt_version_string()}, {"machine", machine()}};
-    results["settings"] = {{"scenes", plan.scenes},   {"repeats", plan.repeats},
-                           {"resolution", plan.resolution}, {"spp", plan.spp},
-                           {"mode", plan.mode.empty() ? "trace" : plan.mode},
-                           {"format", plan.format},   {"clrt_executable", plan.clrt}};
-    results["runs"] = runs;
-    results["summary"] = summarize(runs);
-    results["scores"] = device_scores(results["summary"]);
-    results["title"] = experiment_title(results);
+    nlohmann::json finished = nlohmann::json::array();
+    try {
+      if (resume) finished = finished_runs(plan);
+    } catch (const CLI::Error& e) {
+      std::cerr << "clrt-experiment: error: " << e.what() << "\n";
+      return 2;
+    }
+    const nlohmann::json runs = run_plan(plan, finished);
+    const nlohmann::json results = results_of(plan, runs, true);
     const fs::path out(plan.out_dir);
     write_file(out / "results.json", results.dump(2) + "\n");
     write_file(out / "runs.csv", runs_csv(runs));

@@ -3,13 +3,19 @@
 // a variant that changes the picture is flagged with its PSNR; a wavefront sweep draws its plot.
 #include <catch2/catch.hpp>
 
+#include <signal.h>
+#include <spawn.h>
+#include <sys/wait.h>
+
 #include <algorithm>
+#include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <nlohmann/json.hpp>
 #include <regex>
 #include <string>
+#include <thread>
 
 #include "image/image.hpp"
 #include "process_run.hpp"
@@ -17,6 +23,8 @@
 
 using namespace clrt;
 using namespace clrt::experiment;
+
+extern char** environ;
 
 namespace {
 
@@ -128,6 +136,52 @@ TEST_CASE("a run whose picture differs is flagged with its PSNR and kept", "[exp
   CHECK(std::filesystem::exists(runs[1]["command"][7].get<std::string>()));
   CHECK(text_of(dir.file("report.md")).find("differs from the scene's first image: area.ray") !=
         std::string::npos);
+}
+
+TEST_CASE("an experiment stopped part-way keeps its finished runs, and --resume runs the rest",
+          "[experiment][resume]") {
+  test::ScratchDir dir;
+  std::vector<std::string> args = {CLRT_EXPERIMENT, source_file("tests/render/scenes/area.ray"),
+                                   "--repeats", "30", "--resolution", "8x8",
+                                   "--out", dir.path().string(), "--no-plots"};
+  std::vector<char*> argv;
+  for (std::string& arg : args) argv.push_back(arg.data());
+  argv.push_back(nullptr);
+  pid_t pid = -1;
+  REQUIRE(posix_spawn(&pid, CLRT_EXPERIMENT, nullptr, nullptr, argv.data(), environ) == 0);
+  // Interrupted (as Ctrl-C does) once its first run is written down.
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+  while (!std::filesystem::exists(dir.file("results.json")) &&
+         std::chrono::steady_clock::now() < deadline)
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  kill(pid, SIGINT);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  const nlohmann::json part = results_in(dir);
+  REQUIRE(part["complete"] == false);
+  const std::size_t kept = part["runs"].size();
+  CHECK(kept >= 1);
+  CHECK(kept < 30);
+
+  const ProcessResult resumed =
+      run_experiment({args[1], "--repeats", "30", "--resolution", "8x8", "--out",
+                      dir.path().string(), "--no-plots", "--resume"});
+  INFO(resumed.err);
+  CHECK(resumed.exit_code == 0);
+  const nlohmann::json whole = results_in(dir);
+  CHECK(whole["complete"] == true);
+  REQUIRE(whole["runs"].size() == 30);
+  for (std::size_t i = 0; i < kept; ++i) CHECK(whole["runs"][i] == part["runs"][i]);
+  for (const nlohmann::json& run : whole["runs"]) CHECK(run["validation"]["flagged"] == false);
+
+  // Other settings are another experiment: refused, the results left as they are.
+  const ProcessResult other = run_experiment({args[1], "--repeats", "31", "--resolution", "8x8",
+                                              "--out", dir.path().string(), "--no-plots",
+                                              "--resume"});
+  CHECK(other.exit_code == 2);
+  CHECK(other.err.find("--resume: ") != std::string::npos);
+  CHECK(other.err.find("holds another experiment") != std::string::npos);
+  CHECK(results_in(dir) == whole);
 }
 
 TEST_CASE("a path-mode experiment traces every run, both integrators to the same image",
