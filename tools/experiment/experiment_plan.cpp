@@ -90,7 +90,8 @@ std::vector<DeviceChoice> choose_devices(const std::vector<std::string>& specs) 
       const std::string id = std::to_string(e.platform_index) + ":" + std::to_string(e.device_index);
       const bool seen = std::any_of(out.begin(), out.end(),
                                     [&](const DeviceChoice& d) { return d.spec == id; });
-      if (!seen) out.push_back({id, e.device.name()});
+      if (!seen)
+        out.push_back({id, e.device.name(), e.device.platform().name(), e.device.driver_version()});
     }
   return out;
 }

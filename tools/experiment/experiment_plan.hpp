@@ -21,6 +21,7 @@ struct Variant {
 struct DeviceChoice {
   std::string spec;  // "P:D", as clrt --device takes it
   std::string name;  // the device's name, for tables
+  std::string platform, driver;  // its platform's name and its driver's version, for the record
 };
 
 struct Plan {
@@ -34,6 +35,7 @@ struct Plan {
   std::string format = "pfm";
   std::string clrt;         // the executable
   std::string out_dir;
+  std::string load_before;  // /proc/loadavg when the experiment started, for the record
 };
 
 // Files named, and the .ray and .nff files (sorted) of folders named.

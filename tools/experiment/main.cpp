@@ -10,8 +10,10 @@
 #include <ctime>
 #include <filesystem>
 #include <fstream>
+#include <iomanip>
 #include <iostream>
 #include <map>
+#include <sstream>
 #include <thread>
 
 #include "scene/limits.hpp"
@@ -26,6 +28,8 @@
 #include "run_record.hpp"
 #include "version.hpp"
 
+extern char** environ;
+
 namespace fs = std::filesystem;
 using namespace clrt::experiment;
 
@@ -38,11 +42,53 @@ std::string now_text() {
   return text;
 }
 
-nlohmann::json machine() {
+std::string seconds_text(double seconds) {
+  std::ostringstream out;
+  out << std::fixed << std::setprecision(3) << seconds;
+  return out.str();
+}
+
+// The first line of `path` that starts with `key`, after its colon ("model name : AMD EPYC"), or
+// the file's first line without a key; empty when there is none.
+std::string proc_value(const std::string& path, const std::string& key = "") {
+  std::ifstream in(path);
+  for (std::string line; std::getline(in, line);) {
+    if (key.empty()) return line;
+    if (line.rfind(key, 0) != 0) continue;
+    const std::size_t colon = line.find(':');
+    return colon == std::string::npos ? "" : line.substr(line.find_first_not_of(" \t", colon + 1));
+  }
+  return "";
+}
+
+// The variables that change what an OpenCL implementation or clrt does, as they were set.
+nlohmann::json opencl_environment() {
+  nlohmann::json vars = nlohmann::json::object();
+  for (char** e = environ; *e; ++e) {
+    const std::string entry = *e;
+    const std::string name = entry.substr(0, entry.find('='));
+    for (const char* prefix : {"POCL_", "OCL_ICD", "OPENCL_", "DPCPP_", "SYCL_", "CL_", "CLRT_",
+                               "OCLGRIND_", "CUDA_VISIBLE_DEVICES"})
+      if (name.rfind(prefix, 0) == 0) vars[name] = entry.substr(entry.find('=') + 1);
+  }
+  return vars;
+}
+
+// The machine an experiment ran on: enough to tell two records apart and to judge their noise.
+nlohmann::json machine(const Plan& plan) {
   char host[256] = {};
   gethostname(host, sizeof host - 1);
+  nlohmann::json devices = nlohmann::json::array();
+  for (const DeviceChoice& d : plan.devices)
+    devices.push_back({{"spec", d.spec}, {"name", d.name}, {"platform", d.platform},
+                       {"driver", d.driver}});
   return {{"hostname", host},
+          {"cpu_model", proc_value("/proc/cpuinfo", "model name")},
           {"hardware_threads", std::thread::hardware_concurrency()},
+          {"load_average_before", plan.load_before},
+          {"load_average_after", proc_value("/proc/loadavg")},
+          {"devices", devices},
+          {"opencl_environment", opencl_environment()},
           {"date", now_text()}};
 }
 
@@ -68,7 +114,7 @@ nlohmann::json settings_of(const Plan& plan) {
 
 // results.json for `runs`: `complete` once every run of the plan is in.
 nlohmann::json results_of(const Plan& plan, const nlohmann::json& runs, bool complete) {
-  nlohmann::json results = {{"clrt", clrt_version_string()}, {"machine", machine()}};
+  nlohmann::json results = {{"clrt", clrt_version_string()}, {"machine", machine(plan)}};
   results["settings"] = settings_of(plan);
   results["complete"] = complete;
   results["runs"] = runs;
@@ -164,6 +210,13 @@ nlohmann::json run_plan(const Plan& plan, nlohmann::json finished) {
           if (record["exit_code"] == 0)
             std::cerr << record["mrays_per_second"].get<double>() << " Mrays/s"
                       << (record["validation"]["flagged"].get<bool>() ? ", image differs" : "")
+                      << (short_render(record)
+                              ? ", a short render (" +
+                                    seconds_text(record["seconds"]["render"].get<double>()) +
+                                    " s of a " +
+                                    seconds_text(record["process_seconds"].get<double>()) +
+                                    " s command): its Mrays/s measure start-up as much as tracing"
+                              : "")
                       << "\n";
           runs.push_back(record);
           const fs::path out(plan.out_dir);
@@ -239,6 +292,7 @@ int main(int argc, char** argv) {
   }
   try {
     plan.devices = choose_devices(device_specs);
+    plan.load_before = proc_value("/proc/loadavg");
     nlohmann::json finished = nlohmann::json::array();
     try {
       if (resume) finished = finished_runs(plan);

@@ -78,6 +78,13 @@ std::string csv_text(const std::string& s) {
 
 }  // namespace
 
+bool short_render(const nlohmann::json& run) {
+  if (!succeeded(run)) return false;
+  const double render = run["seconds"]["render"].get<double>();
+  const double command = run["process_seconds"].get<double>();
+  return render < kShortRenderSeconds || render < kShortRenderShare * command;
+}
+
 nlohmann::json summarize(const nlohmann::json& runs) {
   std::vector<std::string> order;
   std::map<std::string, std::vector<const nlohmann::json*>> groups;
@@ -95,7 +102,7 @@ nlohmann::json summarize(const nlohmann::json& runs) {
                         {"device_name", first["device_name"]},
                         {"variant", first["variant"]},
                         {"runs", g.size()}};
-    int failed = 0, flagged = 0;
+    int failed = 0, flagged = 0, short_runs = 0;
     std::set<std::string> kernels;
     for (const nlohmann::json* r : g) {
       if (!succeeded(*r)) {
@@ -103,10 +110,12 @@ nlohmann::json summarize(const nlohmann::json& runs) {
         continue;
       }
       if (r->contains("validation") && (*r)["validation"]["flagged"].get<bool>()) ++flagged;
+      if (short_render(*r)) ++short_runs;
       for (const auto& [name, k] : (*r)["kernels"].items()) kernels.insert(name);
     }
     s["failed"] = failed;
     s["flagged"] = flagged;
+    s["short"] = short_runs;
     // The settings the device really ran with (the variant may leave them to clrt).
     for (const nlohmann::json* r : g)
       if (succeeded(*r)) {
@@ -269,6 +278,18 @@ std::string markdown_report(const nlohmann::json& results) {
   }
   out << "\n" << (flagged.str().empty() ? "Every image is identical to its scene's first.\n"
                                         : "Flagged runs:\n\n" + flagged.str());
+  std::ostringstream short_ones;
+  for (const nlohmann::json& s : summary)
+    if (s["short"].get<int>() > 0)
+      short_ones << "- " << scene_name(s["scene"]) << " on " << s["device_spec"].get<std::string>()
+                 << ", " << s["variant"].get<std::string>() << ": " << s["short"] << " of "
+                 << s["runs"] << " runs, render " << cell(s, "render_seconds", 3) << " s of a "
+                 << cell(s, "process_seconds", 3) << " s command\n";
+  if (!short_ones.str().empty())
+    out << "\nShort renders (under " << kShortRenderSeconds << " s, or under "
+        << kShortRenderShare * 100 << "% of their command): their Mrays/s measure the command's "
+        << "start as much as tracing; raise --resolution or --spp for a throughput figure.\n\n"
+        << short_ones.str();
   return out.str();
 }
 

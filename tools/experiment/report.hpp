@@ -7,10 +7,16 @@
 
 namespace clrt::experiment {
 
+// A render too short for its Mrays/s to measure tracing rather than start-up: under
+// kShortRenderSeconds, or under kShortRenderShare of its whole command.
+constexpr double kShortRenderSeconds = 0.2;
+constexpr double kShortRenderShare = 0.5;
+bool short_render(const nlohmann::json& run);
+
 // One entry per (scene, device, variant) that ran, in run order: the medians over its repeats
 // of Mrays/s, Msamples/s, render and process seconds, device busy share, peak MiB, and of each
 // kernel's device seconds, with their [min, max] in "spread" and "kernel_spread"; "runs",
-// "failed" and "flagged" counts.
+// "failed", "flagged" and "short" (short_render) counts.
 nlohmann::json summarize(const nlohmann::json& runs);
 
 // The score of each device: 100 x the geometric mean over the experiment's scenes of the median

@@ -99,6 +99,20 @@ TEST_CASE("two devices, two integrators and repeats in one command, every image 
   CHECK(report.find("| scene | device | variant | Mrays/s") != std::string::npos);
   CHECK(report.find("megakernel") != std::string::npos);
   CHECK(report.find("Every image is identical to its scene's first.") != std::string::npos);
+  // 32x24 renders are short: said on the terminal, counted and listed in the report.
+  CHECK(r.err.find(", a short render (") != std::string::npos);
+  CHECK(results["summary"][0]["short"].get<int>() > 0);
+  CHECK(report.find("\nShort renders (under 0.2 s, or under 50% of their command)") !=
+        std::string::npos);
+  // The machine as the record keeps it.
+  const nlohmann::json& machine = results["machine"];
+  CHECK_FALSE(machine["cpu_model"].get<std::string>().empty());
+  CHECK_FALSE(machine["load_average_before"].get<std::string>().empty());
+  CHECK_FALSE(machine["load_average_after"].get<std::string>().empty());
+  CHECK(machine["opencl_environment"]["POCL_DEVICES"] == "pthread pthread");
+  REQUIRE(machine["devices"].size() == 2);
+  CHECK_FALSE(machine["devices"][0]["driver"].get<std::string>().empty());
+  CHECK(machine["devices"][0]["platform"] == "Portable Computing Language");
   // The title names what was measured; each table's medians come with the repeats' spread.
   const std::string title = results["title"];
   CHECK(title.rfind("32x24, each scene's samples per pixel, on 0:0 ", 0) == 0);
