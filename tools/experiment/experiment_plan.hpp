@@ -29,6 +29,7 @@ struct Plan {
   std::vector<DeviceChoice> devices;
   std::vector<Variant> variants;
   int repeats = 3;
+  int warmups = 1;          // runs of each configuration before those that count
   std::string resolution;   // WxH, or empty for each scene's own
   std::string spp;          // or empty for each scene's own
   std::string mode;         // clrt's --mode for every run, or empty for its default (trace)

@@ -113,10 +113,12 @@ nlohmann::json settings_of(const Plan& plan) {
 }
 
 // results.json for `runs`: `complete` once every run of the plan is in.
-nlohmann::json results_of(const Plan& plan, const nlohmann::json& runs, bool complete) {
+nlohmann::json results_of(const Plan& plan, const nlohmann::json& warmups,
+                          const nlohmann::json& runs, bool complete) {
   nlohmann::json results = {{"clrt", clrt_version_string()}, {"machine", machine(plan)}};
   results["settings"] = settings_of(plan);
   results["complete"] = complete;
+  results["warmup_runs"] = warmups;
   results["runs"] = runs;
   results["summary"] = summarize(runs);
   results["scores"] = device_scores(results["summary"]);
@@ -167,10 +169,36 @@ std::string image_name(const RunKey& k, const std::string& format) {
          std::to_string(k.variant) + "-r" + std::to_string(k.repeat) + "." + format;
 }
 
+// Each configuration's warm-up runs, before any run that counts: the first run of a
+// configuration builds or loads its kernels and finds the caches cold. Their records are kept
+// apart ("warmup_runs"), their images not at all.
+nlohmann::json warm_up(const Plan& plan) {
+  const fs::path images = fs::path(plan.out_dir) / "images";
+  fs::create_directories(images);
+  nlohmann::json warmups = nlohmann::json::array();
+  for (int w = 0; w < plan.warmups; ++w)
+    for (std::size_t s = 0; s < plan.scenes.size(); ++s)
+      for (std::size_t d = 0; d < plan.devices.size(); ++d)
+        for (std::size_t v = 0; v < plan.variants.size(); ++v) {
+          const std::string image = (images / ("warmup." + plan.format)).string();
+          nlohmann::json record = run_once(plan, RunKey{s, d, v, -1 - w}, image);
+          fs::remove(image);
+          record["warmup"] = true;
+          std::cerr << "[warm-up] " << plan.scenes[s] << " on " << plan.devices[d].spec << ", "
+                    << plan.variants[v].name() << ": "
+                    << (record["exit_code"] == 0
+                            ? seconds_text(record["process_seconds"].get<double>()) + " s"
+                            : "failed (exit " + record["exit_code"].dump() + ")")
+                    << ", not counted\n";
+          warmups.push_back(record);
+        }
+  return warmups;
+}
+
 // Runs the whole plan, but for the runs `finished` already holds (--resume); returns every run's
 // record. results.json and runs.csv are rewritten after each run, so that an experiment stopped
 // part-way (Ctrl-C) keeps what it finished.
-nlohmann::json run_plan(const Plan& plan, nlohmann::json finished) {
+nlohmann::json run_plan(const Plan& plan, nlohmann::json finished, const nlohmann::json& warmups) {
   const fs::path images = fs::path(plan.out_dir) / "images";
   fs::create_directories(images);
   const std::size_t total =
@@ -220,7 +248,8 @@ nlohmann::json run_plan(const Plan& plan, nlohmann::json finished) {
                       << "\n";
           runs.push_back(record);
           const fs::path out(plan.out_dir);
-          write_file(out / "results.json", results_of(plan, runs, false).dump(2) + "\n");
+          write_file(out / "results.json",
+                     results_of(plan, warmups, runs, false).dump(2) + "\n");
           write_file(out / "runs.csv", runs_csv(runs));
         }
   return runs;
@@ -253,6 +282,10 @@ int main(int argc, char** argv) {
   app.add_option("--variant", extras, "NAME=ARGS: further clrt arguments as one more variant (repeatable)");
   app.add_option("--repeats", plan.repeats, "runs of each configuration")
       ->transform(clrt::whole_number(1, 1000))
+      ->capture_default_str();
+  app.add_option("--warmup", plan.warmups,
+                 "runs of each configuration before those that count, reported apart")
+      ->transform(clrt::whole_number(0, 100))
       ->capture_default_str();
   app.add_option("--resolution", plan.resolution, "WxH for every scene; `scene` keeps each scene's")
       ->capture_default_str();
@@ -300,8 +333,9 @@ int main(int argc, char** argv) {
       std::cerr << "clrt-experiment: error: " << e.what() << "\n";
       return 2;
     }
-    const nlohmann::json runs = run_plan(plan, finished);
-    const nlohmann::json results = results_of(plan, runs, true);
+    const nlohmann::json warmups = warm_up(plan);
+    const nlohmann::json runs = run_plan(plan, finished, warmups);
+    const nlohmann::json results = results_of(plan, warmups, runs, true);
     const fs::path out(plan.out_dir);
     write_file(out / "results.json", results.dump(2) + "\n");
     write_file(out / "runs.csv", runs_csv(runs));

@@ -278,6 +278,17 @@ std::string markdown_report(const nlohmann::json& results) {
   }
   out << "\n" << (flagged.str().empty() ? "Every image is identical to its scene's first.\n"
                                         : "Flagged runs:\n\n" + flagged.str());
+  const nlohmann::json& warmups = results["warmup_runs"];
+  if (!warmups.empty()) {
+    out << "\nWarm-up runs, not counted above (a configuration's first run builds or loads its "
+           "kernels and finds the caches cold):\n\n| scene | device | variant | Mrays/s | command s "
+           "|\n|---|---|---|---:|---:|\n";
+    for (const nlohmann::json& w : warmups)
+      out << "| " << scene_name(w["scene"]) << " | " << w["device_spec"].get<std::string>()
+          << " | " << w["variant"].get<std::string>() << " | "
+          << (succeeded(w) ? fixed(w["mrays_per_second"].get<double>(), 2) : "failed") << " | "
+          << (succeeded(w) ? fixed(w["process_seconds"].get<double>(), 3) : "") << " |\n";
+  }
   std::ostringstream short_ones;
   for (const nlohmann::json& s : summary)
     if (s["short"].get<int>() > 0)

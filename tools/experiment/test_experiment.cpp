@@ -71,6 +71,12 @@ TEST_CASE("two devices, two integrators and repeats in one command, every image 
   CHECK(results["clrt"].get<std::string>().find("clrt ") == 0);
   const nlohmann::json& runs = results["runs"];
   REQUIRE(runs.size() == 8);  // 1 scene x 2 devices x 2 integrators x 2 repeats
+  // One warm-up of each configuration first, kept apart.
+  REQUIRE(results["warmup_runs"].size() == 4);
+  for (const nlohmann::json& w : results["warmup_runs"]) {
+    CHECK(w["warmup"] == true);
+    CHECK(w["exit_code"] == 0);
+  }
   for (const nlohmann::json& run : runs) {
     CHECK(run["exit_code"] == 0);
     CHECK(run["rays"]["camera"] == 32 * 24);
@@ -99,6 +105,7 @@ TEST_CASE("two devices, two integrators and repeats in one command, every image 
   CHECK(report.find("| scene | device | variant | Mrays/s") != std::string::npos);
   CHECK(report.find("megakernel") != std::string::npos);
   CHECK(report.find("Every image is identical to its scene's first.") != std::string::npos);
+  CHECK(report.find("\nWarm-up runs, not counted above") != std::string::npos);
   // 32x24 renders are short: said on the terminal, counted and listed in the report.
   CHECK(r.err.find(", a short render (") != std::string::npos);
   CHECK(results["summary"][0]["short"].get<int>() > 0);
