@@ -148,7 +148,8 @@ nlohmann::json summarize(const nlohmann::json& runs) {
 nlohmann::json device_scores(const nlohmann::json& summary) {
   if (summary.empty()) return nlohmann::json::object();
   const std::string first_variant = summary[0]["variant"];
-  std::map<std::string, std::vector<double>> rates;
+  // The medians, and the slowest and fastest repeats, of each scene.
+  std::map<std::string, std::vector<double>> rates, slowest, fastest;
   std::set<std::string> incomplete;
   std::map<std::string, std::string> names;
   for (const nlohmann::json& s : summary) {
@@ -157,19 +158,27 @@ nlohmann::json device_scores(const nlohmann::json& summary) {
     names[device] = s["device_name"];
     if (s["failed"].get<int>() > 0 || s["mrays_per_second"].get<double>() <= 0)
       incomplete.insert(device);
-    else
+    else {
       rates[device].push_back(s["mrays_per_second"]);
+      slowest[device].push_back(s["spread"]["mrays_per_second"][0]);
+      fastest[device].push_back(s["spread"]["mrays_per_second"][1]);
+    }
   }
+  const auto score = [](const std::vector<double>& values) {
+    double log_sum = 0;
+    for (double r : values) log_sum += std::log(r);
+    return std::round(100 * std::exp(log_sum / static_cast<double>(values.size())));
+  };
   nlohmann::json out = nlohmann::json::object();
   for (const auto& [device, name] : names) {
     if (incomplete.count(device)) {
       out[device] = {{"name", name}, {"score", nullptr}, {"variant", first_variant}};
       continue;
     }
-    double log_sum = 0;
-    for (double r : rates[device]) log_sum += std::log(r);
-    const double geomean = std::exp(log_sum / static_cast<double>(rates[device].size()));
-    out[device] = {{"name", name}, {"score", std::round(100 * geomean)}, {"variant", first_variant}};
+    out[device] = {{"name", name},
+                   {"score", score(rates[device])},
+                   {"spread", {score(slowest[device]), score(fastest[device])}},
+                   {"variant", first_variant}};
   }
   return out;
 }
@@ -238,9 +247,9 @@ std::string markdown_report(const nlohmann::json& results) {
   std::set<std::string> kernels;
   for (const nlohmann::json& s : summary)
     for (const auto& [name, seconds] : s["kernels"].items()) kernels.insert(name);
-  out << "\nEach kernel's share of the device's busy seconds (medians; where lanes ran kernels at "
-         "once, each had an equal part of that time):\n\n| scene | device | variant |";
-  for (const std::string& k : kernels) out << " " << k << " |";
+  out << "\nDevice seconds per kernel (medians; where lanes ran kernels at once, each had an "
+         "equal part of that time):\n\n| scene | device | variant |";
+  for (const std::string& k : kernels) out << " " << k << " s |";
   out << "\n|---|---|---|";
   for (std::size_t k = 0; k < kernels.size(); ++k) out << "---:|";
   out << "\n";
@@ -259,7 +268,11 @@ std::string markdown_report(const nlohmann::json& results) {
       << ") |\n|---|---:|\n";
   for (const auto& [device, s] : results["scores"].items())
     out << "| " << device << " " << s["name"].get<std::string>() << " | "
-        << (s["score"].is_null() ? std::string("(a scene failed)") : fixed(s["score"], 0)) << " |\n";
+        << (s["score"].is_null()
+                ? std::string("(a scene failed)")
+                : fixed(s["score"], 0) + " (" + fixed(s["spread"][0], 0) + "-" +
+                      fixed(s["spread"][1], 0) + ")")
+        << " |\n";
 
   std::ostringstream flagged;
   for (const nlohmann::json& r : results["runs"]) {

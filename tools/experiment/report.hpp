@@ -20,7 +20,8 @@ bool short_render(const nlohmann::json& run);
 nlohmann::json summarize(const nlohmann::json& runs);
 
 // The score of each device: 100 x the geometric mean over the experiment's scenes of the median
-// Mrays/s of its first variant (see README "Experiments"). Devices with a failed scene get none.
+// Mrays/s of its first variant (see README "Experiments"), and in "spread" the same of the
+// slowest and of the fastest repeats. Devices with a failed scene get none.
 nlohmann::json device_scores(const nlohmann::json& summary);
 
 // What the experiment measured, for every report's and plot's title: the resolution, the

@@ -96,7 +96,12 @@ TEST_CASE("two devices, two integrators and repeats in one command, every image 
   CHECK(runs[1]["integrator"] == "megakernel");
   CHECK(results["summary"].size() == 4);
   REQUIRE(results["scores"].size() == 2);
-  for (const auto& [device, score] : results["scores"].items()) CHECK(score["score"].get<double>() > 0);
+  for (const auto& [device, score] : results["scores"].items()) {
+    CHECK(score["score"].get<double>() > 0);
+    // With the same mean of the slowest and of the fastest repeats around it.
+    CHECK(score["spread"][0].get<double>() <= score["score"].get<double>());
+    CHECK(score["score"].get<double>() <= score["spread"][1].get<double>());
+  }
 
   const std::string csv = text_of(dir.file("runs.csv"));
   CHECK(std::count(csv.begin(), csv.end(), '\n') == 9);
@@ -106,6 +111,8 @@ TEST_CASE("two devices, two integrators and repeats in one command, every image 
   CHECK(report.find("megakernel") != std::string::npos);
   CHECK(report.find("Every image is identical to its scene's first.") != std::string::npos);
   CHECK(report.find("\nWarm-up runs, not counted above") != std::string::npos);
+  CHECK(report.find("\nDevice seconds per kernel (medians;") != std::string::npos);
+  CHECK(report.find(" generate s |") != std::string::npos);
   // 32x24 renders are short: said on the terminal, counted and listed in the report.
   CHECK(r.err.find(", a short render (") != std::string::npos);
   CHECK(results["summary"][0]["short"].get<int>() > 0);
