@@ -1,6 +1,7 @@
 #include "render/render_stats.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <iomanip>
 #include <nlohmann/json.hpp>
 #include <sstream>
@@ -42,6 +43,12 @@ double RenderStats::device_busy() const {
   return sum / static_cast<double>(devices.size()) / render_seconds;
 }
 
+double RenderStats::frame_share(const DeviceReport& device) const {
+  std::uint64_t all = 0;
+  for (const DeviceReport& d : devices) all += d.camera_samples;
+  return all ? static_cast<double>(device.camera_samples) / static_cast<double>(all) : 0.0;
+}
+
 void RenderStats::merge(const RenderStats& o) {
   devices.insert(devices.end(), o.devices.begin(), o.devices.end());
   for (unsigned k = 0; k < CLRT_RAY_KINDS; ++k) rays[k] += o.rays[k];
@@ -74,7 +81,11 @@ std::string RenderStats::to_text() const {
   for (const DeviceReport& d : devices)
     out << "device:        " << d.name << " (" << d.platform << ", driver " << d.driver << ", "
         << d.opencl_c << "; local size " << d.local_size << ", wavefront " << d.wavefront
-        << ", lanes " << d.lanes << ")\n";
+        << ", lanes " << d.lanes << ")"
+        << (devices.size() > 1 ? ", " + std::to_string(std::lround(100 * frame_share(d))) +
+                                     "% of the frame"
+                               : std::string())
+        << "\n";
   out << "integrator:    " << integrator << "\n";
   out << "rays:          " << total_rays() << " (";
   for (unsigned k = 0; k < CLRT_RAY_KINDS; ++k)
@@ -133,7 +144,9 @@ nlohmann::json RenderStats::to_json() const {
                             {"local_size", d.local_size},
                             {"wavefront", d.wavefront},
                             {"lanes", d.lanes},
-                            {"busy_seconds", d.busy_seconds}});
+                            {"busy_seconds", d.busy_seconds},
+                            {"camera_samples", d.camera_samples},
+                            {"frame_share", frame_share(d)}});
   json by_kind = json::object();
   for (unsigned k = 0; k < CLRT_RAY_KINDS; ++k) by_kind[ray_kind_name(k)] = rays[k];
   by_kind["total"] = total_rays();

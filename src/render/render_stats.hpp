@@ -21,6 +21,7 @@ struct DeviceReport {
   std::uint64_t wavefront = 0;  // rays per queue (camera samples per wave where there are no queues)
   std::uint32_t lanes = 0;      // waves in flight
   double busy_seconds = 0;      // time some kernel of this device was executing
+  std::uint64_t camera_samples = 0;  // camera samples it traced: its share of the frame
 };
 
 struct PassStats {
@@ -66,6 +67,8 @@ struct RenderStats {
   double frames_per_second() const;
   // The share of the render time the devices were executing kernels (their mean).
   double device_busy() const;
+  // The share of the camera samples of these stats that `device` (one of `devices`) traced.
+  double frame_share(const DeviceReport& device) const;
   // Another device's share of the same render (its rays, passes, kernels and buffers).
   void merge(const RenderStats& other);
   std::string to_text() const;

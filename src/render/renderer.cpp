@@ -38,6 +38,7 @@ struct DeviceWorker {
   std::vector<Lane> lanes;
   std::unique_ptr<BusyTimeline> timeline;
   DeviceReport report;
+  std::uint64_t camera_samples = 0;  // traced since the last report: its share of the work
 };
 
 namespace {
@@ -118,9 +119,11 @@ void rethrow_lane_errors(const std::vector<std::exception_ptr>& errors) {
 }
 
 // One round over `region`: its rows dealt out among the lanes, a thread each, all joined
-// before the next round adds to the sums this one leaves.
+// before the next round adds to the sums this one leaves. Adds each lane's camera samples to
+// `traced`.
 void render_round(const PixelRect& region, RoundOutput& output,
-                  const std::vector<Integrator*>& workers, Progress* progress) {
+                  const std::vector<Integrator*>& workers, std::vector<std::uint64_t>& traced,
+                  Progress* progress) {
   RowDealer dealer(region);
   std::vector<std::exception_ptr> errors(workers.size());
   const std::uint32_t samples = output.round().count;
@@ -131,6 +134,7 @@ void render_round(const PixelRect& region, RoundOutput& output,
       while (dealer.next(integrator.pixels_per_wave(samples), band)) {
         const std::uint64_t offset = std::uint64_t{band.y - region.y} * region.width;
         integrator.render(band, output, offset);
+        traced[i] += band.pixel_count() * samples;
         if (progress) progress->advance(band.pixel_count() * samples);
       }
     } catch (...) {
@@ -262,19 +266,25 @@ AnyImage Renderer::render(const PixelRect& region, bool eight_bit, Progress* pro
     store = std::make_unique<FloatPixelStore>(floats);
   }
   std::vector<Integrator*> workers;
+  std::vector<DeviceWorker*> owners;  // each lane's device
   for (DeviceWorker& d : devices_->workers)
-    for (Lane& lane : d.lanes) workers.push_back(lane.integrator.get());
+    for (Lane& lane : d.lanes) {
+      workers.push_back(lane.integrator.get());
+      owners.push_back(&d);
+    }
+  std::vector<std::uint64_t> traced(workers.size(), 0);
   const std::vector<SampleRound> rounds =
       sample_rounds(static_cast<std::uint32_t>(options_.samples), region.pixel_count(), rays_in_flight_);
   std::vector<dev::f4> sums(rounds.size() > 1 ? region.pixel_count() : 0);
   sample_rounds_ = std::max<std::uint64_t>(sample_rounds_, rounds.size());
   for (const SampleRound& round : rounds) {
     RoundOutput output(round, sums, *store, watcher);
-    render_round(region, output, workers, progress);
+    render_round(region, output, workers, traced, progress);
     if (progress && rounds.size() > 1)
       progress->note(std::to_string(round.first + round.count) + "/" +
                      std::to_string(round.total) + " spp");
   }
+  for (std::size_t i = 0; i < workers.size(); ++i) owners[i]->camera_samples += traced[i];
   render_seconds_ += seconds_since(start);
   return image;
 }
@@ -301,6 +311,8 @@ void Renderer::report(RenderStats& stats) {
     own.devices.push_back(w.report);
     const DeviceTime time = w.timeline->take();
     own.devices.back().busy_seconds = time.busy_seconds;
+    own.devices.back().camera_samples = w.camera_samples;
+    w.camera_samples = 0;
     for (const auto& [name, seconds] : time.kernel_share_seconds) own.kernels[name].share_seconds += seconds;
   }
   stats.merge(own);

@@ -54,6 +54,31 @@ TEST_CASE("the JSON statistics count rays by kind, passes and kernels", "[cli][s
   CHECK(pass_shadows == shadow);
 }
 
+TEST_CASE("each device's share of the frame: its camera samples, which add up to the frame's",
+          "[cli][stats]") {
+  ScratchDir dir;
+  const CommandResult r =
+      run_clrt(render_args("reflect.ray", dir) + " --spp 4 -q --stats=json --device all --wavefront 1024",
+               "POCL_DEVICES='pthread pthread'");
+  REQUIRE(r.exit_code == 0);
+  const nlohmann::json stats = nlohmann::json::parse(r.output);
+  REQUIRE(stats["devices"].size() == 2);
+  std::uint64_t samples = 0;
+  double shares = 0;
+  for (const nlohmann::json& d : stats["devices"]) {
+    samples += d["camera_samples"].get<std::uint64_t>();
+    shares += d["frame_share"].get<double>();
+  }
+  CHECK(samples == 40 * 30 * 4);
+  CHECK(shares == Approx(1));
+  const CommandResult text =
+      run_clrt(render_args("reflect.ray", dir) + " --spp 4 -q --stats --device all --wavefront 1024",
+               "POCL_DEVICES='pthread pthread'");
+  CHECK(text.output.find("% of the frame\n") != std::string::npos);
+  // One device traces the whole frame.
+  CHECK(json_stats("")["devices"][0]["frame_share"] == 1.0);
+}
+
 TEST_CASE("the kernels' shares add up to the busy time and their intervals to more",
           "[cli][stats]") {
   for (const char* lanes : {" --lanes 1", " --lanes 3 --wavefront 1024"}) {
