@@ -12,6 +12,7 @@ local-size.png Mrays/s against the local size, when the experiment swept it
 import json
 import os
 import sys
+import textwrap
 from collections import defaultdict
 
 import matplotlib
@@ -36,12 +37,24 @@ def spread_bars(entries, key):
 
 
 def titled(ax, what, title):
-    ax.set_title(f"{what}\n{title}", fontsize="medium")
+    """The plot's subject over the experiment's title, wrapped so that neither is cut off."""
+    ax.set_title(f"{what}\n" + textwrap.fill(title, 70), fontsize="medium")
+
+
+def colour(n):
+    """A colour of its own for each of the first 20 series; past 20 they repeat, hatched."""
+    colours = plt.get_cmap("tab20").colors
+    return colours[n % len(colours)]
+
+
+def legend_beside(ax):
+    """The legend right of the axes, never over the data."""
+    ax.legend(fontsize="x-small", loc="upper left", bbox_to_anchor=(1.01, 1.0))
 
 
 def save(fig, out, name):
     fig.tight_layout()
-    fig.savefig(os.path.join(out, name), dpi=110)
+    fig.savefig(os.path.join(out, name), dpi=110, bbox_inches="tight")
     plt.close(fig)
 
 
@@ -55,13 +68,14 @@ def plot_mrays(summary, out, title):
         present = [i for i, sc in enumerate(scenes) if (sc, config) in entry]
         bars = [entry[(scenes[i], config)] for i in present]
         ax.bar([i + k * width for i in present], [s["mrays_per_second"] for s in bars], width,
-               yerr=spread_bars(bars, "mrays_per_second"), capsize=3, label=config)
+               yerr=spread_bars(bars, "mrays_per_second"), capsize=3, label=config,
+               color=colour(k), hatch="//" if k >= 20 else None)
     ax.set_xticks([i + 0.4 - width / 2 for i in range(len(scenes))])
     ax.set_xticklabels(scenes, rotation=45, ha="right", fontsize="small")
     ax.set_ylim(bottom=0)
     ax.set_ylabel("Mrays/s (all ray kinds, render time)")
     titled(ax, "Throughput per scene, device and variant", title)
-    ax.legend(fontsize="small")
+    legend_beside(ax)
     save(fig, out, "mrays.png")
 
 
@@ -74,45 +88,48 @@ def plot_kernels(summary, out, title):
     kernels = sorted({k for c in configs for k in seconds[c]},
                      key=lambda k: -sum(seconds[c][k] for c in configs))
     fig, ax = plt.subplots(figsize=(9, 2.2 + 0.5 * len(configs)))
-    colours = plt.get_cmap("tab20").colors
     left = [0.0] * len(configs)
     for n, kernel in enumerate(kernels):
         shares = []
         for c in configs:
             total = sum(seconds[c].values()) or 1.0
             shares.append(100.0 * seconds[c][kernel] / total)
-        ax.barh(configs, shares, left=left, label=kernel, color=colours[n % len(colours)])
+        ax.barh(configs, shares, left=left, label=kernel, color=colour(n),
+                hatch="//" if n >= 20 else None)
         left = [a + b for a, b in zip(left, shares)]
     ax.set_xlim(0, 100)
     ax.set_xlabel("% of the device's busy time (medians, summed over scenes)")
     titled(ax, "Where the device time goes", title)
-    ax.legend(fontsize="x-small", ncol=1, loc="center left", bbox_to_anchor=(1.01, 0.5))
+    legend_beside(ax)
     save(fig, out, "kernels.png")
 
 
 def plot_sweep(summary, out, key, axis_label, what, title, name):
-    """Mrays/s against one setting, when the experiment swept it (the others held)."""
-    if len({s.get(key) for s in summary if s.get(key)}) < 2:
-        return
+    """Mrays/s against one setting, when the experiment swept it: only the lines (scene, device,
+    integrator) that ran at two values of it or more. Devices whose defaults merely differ (PoCL's
+    local size against Intel's) swept nothing, and draw nothing."""
     lines = defaultdict(list)
     for s in summary:
         if s.get(key):
             line = f"{scene_name(s)}, {s['device_spec']}, {s.get('integrator', '')}"
             lines[line].append((s[key], s))
+    lines = {line: points for line, points in lines.items() if len({p[0] for p in points}) > 1}
+    if not lines:
+        return
     fig, ax = plt.subplots(figsize=(7, 4.5))
-    for line, points in lines.items():
+    for n, (line, points) in enumerate(lines.items()):
         points.sort(key=lambda p: p[0])
         ax.errorbar([p[0] for p in points], [p[1]["mrays_per_second"] for p in points],
                     yerr=spread_bars([p[1] for p in points], "mrays_per_second"), marker="o",
-                    capsize=3, label=line)
+                    capsize=3, label=line, color=colour(n), linestyle="-" if n < 20 else "--")
     # A power-of-two axis cannot reach 0; it starts at half the smallest size swept.
     ax.set_xscale("log", base=2)
-    ax.set_xlim(left=min(s[key] for s in summary if s.get(key)) / 2)
+    ax.set_xlim(left=min(p[0] for points in lines.values() for p in points) / 2)
     ax.set_ylim(bottom=0)
     ax.set_xlabel(axis_label)
     ax.set_ylabel("Mrays/s")
     titled(ax, what, title)
-    ax.legend(fontsize="x-small")
+    legend_beside(ax)
     save(fig, out, name)
 
 
