@@ -122,6 +122,7 @@ nlohmann::json results_of(const Plan& plan, const nlohmann::json& warmups,
   results["runs"] = runs;
   results["summary"] = summarize(runs);
   results["scores"] = device_scores(results["summary"]);
+  results["comparisons"] = compare_variants(runs);
   results["title"] = experiment_title(results);
   return results;
 }

@@ -8,6 +8,7 @@
 #include <set>
 #include <sstream>
 
+#include "rank_test.hpp"
 #include "run_record.hpp"
 
 namespace clrt::experiment {
@@ -183,6 +184,41 @@ nlohmann::json device_scores(const nlohmann::json& summary) {
   return out;
 }
 
+nlohmann::json compare_variants(const nlohmann::json& runs) {
+  // Each (scene, device)'s variants in run order, with their successful runs' Mrays/s.
+  std::map<std::string, std::vector<std::pair<std::string, std::vector<double>>>> groups;
+  std::vector<std::string> order;
+  for (const nlohmann::json& r : runs) {
+    const std::string where = r["scene"].get<std::string>() + "\n" + r["device_spec"].get<std::string>();
+    if (!groups.count(where)) order.push_back(where);
+    auto& variants = groups[where];
+    const std::string variant = r["variant"];
+    auto it = std::find_if(variants.begin(), variants.end(),
+                           [&](const auto& v) { return v.first == variant; });
+    if (it == variants.end()) it = variants.insert(variants.end(), {variant, {}});
+    if (succeeded(r)) it->second.push_back(r["mrays_per_second"].get<double>());
+  }
+  nlohmann::json out = nlohmann::json::array();
+  for (const std::string& where : order) {
+    const auto& variants = groups[where];
+    const std::string scene = where.substr(0, where.find('\n'));
+    const std::string device = where.substr(where.find('\n') + 1);
+    const auto& [baseline, base_values] = variants.front();
+    for (std::size_t v = 1; v < variants.size(); ++v) {
+      const auto& [variant, values] = variants[v];
+      nlohmann::json c = {{"scene", scene}, {"device_spec", device}, {"variant", variant},
+                          {"baseline", baseline}};
+      const double base = spread(base_values).median;
+      c["ratio"] = base > 0 && !values.empty() ? spread(values).median / base : 0.0;
+      c["p"] = mann_whitney_p(values, base_values);
+      c["smallest_p"] = smallest_mann_whitney_p(static_cast<int>(values.size()),
+                                                static_cast<int>(base_values.size()));
+      out.push_back(c);
+    }
+  }
+  return out;
+}
+
 std::string experiment_title(const nlohmann::json& results) {
   const nlohmann::json& settings = results["settings"];
   const std::string resolution = settings["resolution"];
@@ -291,6 +327,23 @@ std::string markdown_report(const nlohmann::json& results) {
   }
   out << "\n" << (flagged.str().empty() ? "Every image is identical to its scene's first.\n"
                                         : "Flagged runs:\n\n" + flagged.str());
+  const nlohmann::json& comparisons = results["comparisons"];
+  if (!comparisons.empty()) {
+    out << "\nEach variant against the first of its scene and device: the ratio of their median "
+           "Mrays/s, and the two-sided p-value of the Mann-Whitney U test on their repeats (below "
+           "0.05: a difference the repeats' noise is unlikely to make):\n\n| scene | device | "
+           "variant | against | Mrays/s ratio | p |\n|---|---|---|---|---:|---:|\n";
+    bool too_few = false;
+    for (const nlohmann::json& c : comparisons) {
+      out << "| " << scene_name(c["scene"]) << " | " << c["device_spec"].get<std::string>() << " | "
+          << c["variant"].get<std::string>() << " | " << c["baseline"].get<std::string>() << " | "
+          << fixed(c["ratio"], 3) << " | " << fixed(c["p"], 3) << " |\n";
+      too_few = too_few || c["smallest_p"].get<double>() >= 0.05;
+    }
+    if (too_few)
+      out << "\nWith these repeats the test cannot reach p < 0.05 (3 repeats of each: at best "
+             "0.1); --repeats 4 or more can.\n";
+  }
   const nlohmann::json& warmups = results["warmup_runs"];
   if (!warmups.empty()) {
     out << "\nWarm-up runs, not counted above (a configuration's first run builds or loads its "

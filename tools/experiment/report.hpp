@@ -24,6 +24,11 @@ nlohmann::json summarize(const nlohmann::json& runs);
 // slowest and of the fastest repeats. Devices with a failed scene get none.
 nlohmann::json device_scores(const nlohmann::json& summary);
 
+// Each variant against the first of its scene and device (in run order): the ratio of their
+// median Mrays/s, and the Mann-Whitney p-value of their repeats (rank_test.hpp) with the smallest
+// p the repeats allow. One entry per (scene, device, later variant).
+nlohmann::json compare_variants(const nlohmann::json& runs);
+
 // What the experiment measured, for every report's and plot's title: the resolution, the
 // samples per pixel and the devices ("1280x720, 4 spp, on 0:0 pthread-...").
 std::string experiment_title(const nlohmann::json& results);

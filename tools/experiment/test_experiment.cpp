@@ -19,6 +19,7 @@
 
 #include "image/image.hpp"
 #include "process_run.hpp"
+#include "rank_test.hpp"
 #include "scratch_dir.hpp"
 
 using namespace clrt;
@@ -111,6 +112,14 @@ TEST_CASE("two devices, two integrators and repeats in one command, every image 
   CHECK(report.find("megakernel") != std::string::npos);
   CHECK(report.find("Every image is identical to its scene's first.") != std::string::npos);
   CHECK(report.find("\nWarm-up runs, not counted above") != std::string::npos);
+  // The megakernel against the wavefront on each device, with 2 repeats too few to tell.
+  REQUIRE(results["comparisons"].size() == 2);
+  CHECK(results["comparisons"][0]["variant"] == "megakernel");
+  CHECK(results["comparisons"][0]["baseline"] == "wavefront");
+  CHECK(results["comparisons"][0]["ratio"].get<double>() > 0);
+  CHECK(results["comparisons"][0]["smallest_p"].get<double>() == Approx(1.0 / 3));
+  CHECK(report.find("Mann-Whitney U test") != std::string::npos);
+  CHECK(report.find("--repeats 4 or more can.") != std::string::npos);
   CHECK(report.find("\nDevice seconds per kernel (medians;") != std::string::npos);
   CHECK(report.find(" generate s |") != std::string::npos);
   // 32x24 renders are short: said on the terminal, counted and listed in the report.
@@ -143,6 +152,26 @@ TEST_CASE("two devices, two integrators and repeats in one command, every image 
   check_plot(dir.file("mrays.png"));
   check_plot(dir.file("kernels.png"));
   CHECK_FALSE(std::filesystem::exists(dir.file("wavefront.png")));
+}
+
+TEST_CASE("the Mann-Whitney test against its exact values", "[experiment][statistics]") {
+  // Three against three, wholly apart: 2 of the C(6, 3) = 20 splits are as far (either way).
+  CHECK(mann_whitney_p({1, 2, 3}, {4, 5, 6}) == Approx(0.1));
+  CHECK(mann_whitney_p({4, 5, 6}, {1, 2, 3}) == Approx(0.1));
+  CHECK(smallest_mann_whitney_p(3, 3) == Approx(0.1));
+  CHECK(mann_whitney_p({1, 2, 3, 4}, {5, 6, 7, 8}) == Approx(2.0 / 70));
+  CHECK(smallest_mann_whitney_p(4, 4) == Approx(2.0 / 70));
+  // Interleaved or equal: nothing to tell apart.
+  CHECK(mann_whitney_p({1, 3, 5}, {2, 4, 6}) == Approx(0.7));
+  CHECK(mann_whitney_p({1, 1, 1}, {1, 1, 1}) == Approx(1));
+  CHECK(mann_whitney_p({}, {1, 2}) == 1);
+  // Beyond 20 values, the normal approximation: 15 against 15 wholly apart.
+  std::vector<double> low, high;
+  for (int i = 0; i < 15; ++i) {
+    low.push_back(i);
+    high.push_back(100 + i);
+  }
+  CHECK(mann_whitney_p(low, high) < 1e-5);
 }
 
 TEST_CASE("a run whose picture differs is flagged with its PSNR and kept", "[experiment]") {
