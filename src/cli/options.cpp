@@ -111,7 +111,8 @@ void add_animation_options(CLI::App& app, CliOptions& o) {
 
 void add_device_options(CLI::App& app, CliOptions& o) {
   app.add_option("--device", o.device,
-                 "cpu, gpu, all, P:D (platform:device index) or part of a device or platform name")
+                 "cpu, gpu, all, P:D (platform:device index), NAME:D (device D of the platform "
+                 "named NAME: pocl:0) or part of a device or platform name")
       ->capture_default_str();
   app.add_flag("--list-devices", o.list_devices, "list the OpenCL devices and exit");
   app.add_option("--threads,--nthreads", o.threads,

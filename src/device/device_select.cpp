@@ -34,18 +34,40 @@ bool parse_index_pair(const std::string& spec, int& platform, int& device) {
   return true;
 }
 
+// "NAME:D": a word naming a platform (part of its name or vendor, as "pocl", "intel") and a
+// device index within it, a spelling that stays the same whatever order the ICD loader lists
+// the platforms in.
+bool parse_named_pair(const std::string& spec, std::string& platform, int& device) {
+  const auto colon = spec.rfind(':');
+  if (colon == std::string::npos || colon == 0 || colon + 1 == spec.size()) return false;
+  const std::string name = spec.substr(0, colon), index = spec.substr(colon + 1);
+  const auto digit = [](unsigned char c) { return std::isdigit(c); };
+  if (index.size() > 6 || !std::all_of(index.begin(), index.end(), digit) ||
+      std::all_of(name.begin(), name.end(), digit))
+    return false;
+  platform = lower(name);
+  device = std::stoi(index);
+  return true;
+}
+
 std::vector<DeviceEntry> matching(const std::vector<DeviceEntry>& all, const std::string& spec) {
   std::vector<DeviceEntry> out;
   const std::string key = lower(spec);
   int platform = 0, device = 0;
   const bool indexed = parse_index_pair(spec, platform, device);
+  std::string platform_word;
+  int named_device = 0;
+  const bool named = !indexed && parse_named_pair(spec, platform_word, named_device);
   for (const DeviceEntry& e : all) {
     const cl_device_type type = e.device.type();
     const bool match =
         key == "all" || (key == "cpu" && (type & CL_DEVICE_TYPE_CPU)) ||
         (key == "gpu" && (type & CL_DEVICE_TYPE_GPU)) ||
         (indexed && e.platform_index == platform && e.device_index == device) ||
-        (!indexed && key != "cpu" && key != "gpu" &&
+        (named && e.device_index == named_device &&
+         (lower(e.device.platform().name()).find(platform_word) != std::string::npos ||
+          lower(e.device.platform().vendor()).find(platform_word) != std::string::npos)) ||
+        (!indexed && !named && key != "cpu" && key != "gpu" &&
          (lower(e.device.name()).find(key) != std::string::npos ||
           lower(e.device.platform().name()).find(key) != std::string::npos));
     if (match) out.push_back(e);

@@ -39,7 +39,15 @@ TEST_CASE("cpu is PoCL's CPU device wherever PoCL is installed, whatever is list
     return is_pocl(e) && (e.device.type() & CL_DEVICE_TYPE_CPU);
   });
   INFO("the first device: " << all.front().device.platform().name());
-  if (pocl_installed) CHECK(is_pocl(cpu[0]));
+  if (pocl_installed) {
+    CHECK(is_pocl(cpu[0]));
+    // NAME:D names it whatever the platforms' order: PoCL's vendor is "The pocl project".
+    const std::vector<DeviceEntry> named = select_devices("pocl:0");
+    REQUIRE(named.size() == 1);
+    CHECK(is_pocl(named[0]));
+    CHECK(named[0].device_index == 0);
+    CHECK(select_devices("Portable:0").size() == 1);
+  }
 }
 
 TEST_CASE("a spec that matches nothing lists the devices that exist", "[device]") {
