@@ -21,16 +21,28 @@ std::string type_name(const compute::device& d) {
   return "other";
 }
 
-bool parse_index_pair(const std::string& spec, int& platform, int& device) {
-  const auto colon = spec.find(':');
+bool all_digits(const std::string& s) {
+  return std::all_of(s.begin(), s.end(), [](unsigned char c) { return std::isdigit(c); });
+}
+
+// A spec "WHERE:D" (D a device index of at most 6 digits, WHERE non-empty), split at its last
+// colon.
+bool split_device_spec(const std::string& spec, std::string& where, int& device) {
+  const auto colon = spec.rfind(':');
   if (colon == std::string::npos || colon == 0 || colon + 1 == spec.size()) return false;
-  const std::string a = spec.substr(0, colon), b = spec.substr(colon + 1);
-  const auto digits = [](const std::string& s) {
-    return std::all_of(s.begin(), s.end(), [](unsigned char c) { return std::isdigit(c); });
-  };
-  if (!digits(a) || !digits(b) || a.size() > 6 || b.size() > 6) return false;
-  platform = std::stoi(a);
-  device = std::stoi(b);
+  const std::string index = spec.substr(colon + 1);
+  if (index.size() > 6 || !all_digits(index)) return false;
+  where = spec.substr(0, colon);
+  device = std::stoi(index);
+  return true;
+}
+
+// "P:D": platform and device index, as --list-devices prints them.
+bool parse_index_pair(const std::string& spec, int& platform, int& device) {
+  std::string where;
+  if (!split_device_spec(spec, where, device) || where.size() > 6 || !all_digits(where))
+    return false;
+  platform = std::stoi(where);
   return true;
 }
 
@@ -38,15 +50,9 @@ bool parse_index_pair(const std::string& spec, int& platform, int& device) {
 // device index within it, a spelling that stays the same whatever order the ICD loader lists
 // the platforms in.
 bool parse_named_pair(const std::string& spec, std::string& platform, int& device) {
-  const auto colon = spec.rfind(':');
-  if (colon == std::string::npos || colon == 0 || colon + 1 == spec.size()) return false;
-  const std::string name = spec.substr(0, colon), index = spec.substr(colon + 1);
-  const auto digit = [](unsigned char c) { return std::isdigit(c); };
-  if (index.size() > 6 || !std::all_of(index.begin(), index.end(), digit) ||
-      std::all_of(name.begin(), name.end(), digit))
-    return false;
-  platform = lower(name);
-  device = std::stoi(index);
+  std::string where;
+  if (!split_device_spec(spec, where, device) || all_digits(where)) return false;
+  platform = lower(where);
   return true;
 }
 

@@ -10,8 +10,6 @@
 #include <csignal>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <string>
 
 #include "image/image.hpp"
@@ -32,13 +30,6 @@ std::string clrt_with_viewer(const ScratchDir& dir, const std::string& script) {
   return clrt;
 }
 
-std::string text_of(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
 // Runs `clrt args`, ended by `timeout` if it hangs (status 124); standard error to err.txt.
 int run_bounded(const ScratchDir& dir, const std::string& clrt, const std::string& args) {
   const std::string command = "timeout 180 " + quoted(clrt) + " " + args + " 2>" +
@@ -49,7 +40,7 @@ int run_bounded(const ScratchDir& dir, const std::string& clrt, const std::strin
 
 // The fake viewer's process, recorded in pid.txt, ended.
 void end_fake_viewer(const ScratchDir& dir) {
-  const std::string pid = text_of(dir.file("pid.txt"));
+  const std::string pid = file_bytes(dir.file("pid.txt"));
   if (!pid.empty()) kill(std::stoi(pid), SIGKILL);
 }
 
@@ -64,7 +55,7 @@ TEST_CASE("the preview: a viewer that never answers and ignores SIGTERM is kille
   const std::string out = dir.file("out.png");
   const int status = run_bounded(
       dir, clrt, quoted(test_scene("test2.ray")) + " --resolution 16x8 --preview -o " + quoted(out));
-  const std::string err = text_of(dir.file("err.txt"));
+  const std::string err = file_bytes(dir.file("err.txt"));
   end_fake_viewer(dir);
   INFO(err);
   CHECK(status == 0);
@@ -85,7 +76,7 @@ TEST_CASE("the preview: a viewer that stops reading does not hold the render", "
       run_bounded(dir, clrt,
                   quoted(test_scene("test2.ray")) +
                       " --resolution 1600x1200 --mode cast --preview -o " + quoted(out));
-  const std::string err = text_of(dir.file("err.txt"));
+  const std::string err = file_bytes(dir.file("err.txt"));
   end_fake_viewer(dir);
   INFO(err);
   CHECK(status == 0);

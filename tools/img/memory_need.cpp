@@ -50,6 +50,10 @@ void MemoryNeed::add_read(const std::string& path, const ImageInfo& info) {
   if (!reads_as_float(info.format)) add(product(info.frames, kFrameOverhead));
 }
 
+void MemoryNeed::add_float_frames(std::uint64_t pixels, std::uint64_t frames) {
+  add_pixels(pixels, frames, held_bytes_per_pixel(true));
+}
+
 void MemoryNeed::add_gif_write(std::uint64_t pixels, std::uint64_t frames, bool held_float) {
   // A float image is quantised whole into 8-bit frames first; the GIF itself is streamed to
   // its file.

@@ -24,6 +24,8 @@ class MemoryNeed {
   // size.
   void add_write(std::uint64_t pixels, std::uint64_t frames, bool held_float,
                  ImageFormat written, ExrPixel exr_pixel);
+  // Every one of `frames` frames of `pixels` held once more as floats (a viewer's copy).
+  void add_float_frames(std::uint64_t pixels, std::uint64_t frames);
   // Writing a GIF of `pixels` in `frames` frames, held as floats or 8-bit.
   void add_gif_write(std::uint64_t pixels, std::uint64_t frames, bool held_float);
   std::uint64_t bytes() const { return bytes_; }

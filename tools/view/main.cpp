@@ -4,7 +4,6 @@
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
-#include <cstdint>
 #include <iostream>
 #include <limits>
 #include <optional>
@@ -63,15 +62,14 @@ void add_options(CLI::App& app, ViewOptions& options) {
 void check_view_memory(const std::string& a, const std::string& b) {
   using clrt::img::pixels_of;
   clrt::img::MemoryNeed need;
-  constexpr std::uint64_t kFloatPixel = 12;
   const clrt::ImageInfo first = clrt::read_image_info(a);
   need.add_read(a, first);
-  need.add_pixels(pixels_of(first), first.frames, kFloatPixel);
+  need.add_float_frames(pixels_of(first), first.frames);
   if (!b.empty()) {
     const clrt::ImageInfo second = clrt::read_image_info(b);
     need.add_read(b, second);
-    need.add_pixels(pixels_of(second), second.frames, kFloatPixel);
-    need.add_pixels(pixels_of(first), std::max(first.frames, second.frames), kFloatPixel);
+    need.add_float_frames(pixels_of(second), second.frames);
+    need.add_float_frames(pixels_of(first), std::max(first.frames, second.frames));
   }
   clrt::img::check_memory(need, "showing " + a + (b.empty() ? "" : " and " + b));
 }
