@@ -40,17 +40,6 @@ CLRT_INLINE LobeSample delta_sample(float3 dir, float weight, uint kind, float r
   return s;
 }
 
-/* What every delta lobe NAME says alike: it is not smooth, its weight is its share of the
- * samples, and it has no value for a given pair of directions (only its own samples reach it). */
-#define CLRT_DELTA_LOBE(name)                                                                  \
-  CLRT_INLINE bool name##_lobe_is_smooth(void) { return false; }                               \
-  CLRT_INLINE float name##_lobe_choice_weight(float3 albedo) { return albedo.x; }              \
-  CLRT_INLINE float3 name##_lobe_value(float3 albedo, float choice, __global const Material* m, \
-                                       float3 n, float3 wo, float3 wi, float cos_i,            \
-                                       float* pdf) {                                           \
-    return (float3)(0.0f);                                                                      \
-  }
-
 /* A unit vector at polar angle theta (given as its cosine and sine) and azimuth 2 pi u about
  * the unit axis a, built in a branch-free orthonormal basis (Duff et al., JCGT 2017). */
 CLRT_INLINE float3 around_axis(float3 a, float cos_theta, float sin_theta, float u) {

@@ -8,7 +8,15 @@ CLRT_INLINE float3 mirror_lobe_albedo(__global const Material* m, float share) {
   return (float3)(fmax(0.0f, m->kr));
 }
 
-CLRT_DELTA_LOBE(mirror)
+CLRT_INLINE bool mirror_lobe_is_smooth(void) { return false; }
+
+CLRT_INLINE float mirror_lobe_choice_weight(float3 albedo) { return albedo.x; }
+
+/* A delta lobe has no value for a given pair of directions. */
+CLRT_INLINE float3 mirror_lobe_value(float3 albedo, float choice, __global const Material* m,
+                                     float3 n, float3 wo, float3 wi, float cos_i, float* pdf) {
+  return (float3)(0.0f);
+}
 
 CLRT_INLINE bool mirror_lobe_sample(float3 albedo, float choice, __global const Material* m,
                                     const ShadePoint* sp, float3 d, float2 u, float y, LobeSample* s) {
