@@ -150,7 +150,7 @@ std::unique_ptr<CLI::App> clrt_command_line(CliOptions& o, StatsRequest& stats,
                                             const ProgramOptions& program) {
   auto app = std::make_unique<CLI::App>(
       program.name + ": a wavefront OpenCL ray tracer for .ray and .nff scenes", program.name);
-  identify_tool(*app);
+  identify_tool(*app, {program.manual, {"ray", "RAY", "nff", "NFF"}});
   app->add_option("scene", o.scene, "the .ray or .nff scene to render");
   // --help lists the options in groups, in the order a render is set up.
   using AddOptions = void (*)(CLI::App&, CliOptions&);
@@ -178,9 +178,6 @@ std::unique_ptr<CLI::App> clrt_command_line(CliOptions& o, StatsRequest& stats,
     program.add_own_options(*app);
   }
   app->option_defaults()->group("Diagnostics");
-  app->footer(std::string("Every option, its defaults and its pbrt spelling: man clrt, and "
-                          "docs/cli.md (installed as ") +
-              CLRT_INSTALLED_DOC_DIR + "/docs/cli.md)");
   app->add_flag("--stats", stats.flag,
                 "print rays by kind, times and queue sizes to stdout (--stats=json: as JSON)");
   app->add_option("--stats-format", stats.format, "text or json")

@@ -63,6 +63,7 @@ struct ProgramOptions {
   bool preview = true;    // --preview
   bool dump_scene = true; // --dump-scene
   std::function<void(CLI::App&)> add_own_options;  // e.g. clrt-mpi's --tile
+  std::string manual = "docs/cli.md";  // the page --help and the man page point at
 };
 
 // --stats and --stats-format as given, before they are read into CliOptions::stats.
@@ -72,7 +73,7 @@ struct StatsRequest {
 };
 
 // The parser itself, filling `o` and `stats` when it parses: what --help lists, and what the
-// man page and the shell completion are generated from (tools/cli_docs/).
+// man page and the shell completion are generated from (cli/docs/).
 std::unique_ptr<CLI::App> clrt_command_line(CliOptions& o, StatsRequest& stats,
                                             const ProgramOptions& program = {});
 

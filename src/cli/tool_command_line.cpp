@@ -28,8 +28,12 @@ std::string extras_message(const CLI::App& app) {
 
 }  // namespace
 
-void identify_tool(CLI::App& app) {
+void identify_tool(CLI::App& app, const ToolManual& manual) {
   const std::string name = app.get_name();
+  add_cli_docs_option(app, manual);
+  if (!manual.page.empty())
+    app.footer("The whole manual: man " + name + ", and " + manual.page + " (installed as " +
+               CLRT_INSTALLED_DOC_DIR + "/" + manual.page + ")");
   app.set_version_flag("--version", name == "clrt" ? std::string(clrt_version_string())
                                                    : name + ", from " + clrt_version_string());
   app.failure_message([name](const CLI::App*, const CLI::Error& error) {
@@ -46,7 +50,8 @@ std::optional<int> parse_tool_arguments(CLI::App& app, std::vector<std::string> 
   try {
     app.parse(std::vector<std::string>(args.rbegin(), args.rend()));  // CLI11 takes them last first
   } catch (const CLI::ParseError& e) {
-    if (e.get_exit_code() == 0) return report(e);
+    // 0: --help, --version, --write-cli-docs; a RuntimeError has said what failed.
+    if (e.get_exit_code() == 0 || dynamic_cast<const CLI::RuntimeError*>(&e)) return report(e);
     const std::optional<std::string> culprit = unknown_word_message(app, args);
     if (culprit)
       report(CLI::ParseError(*culprit, e.get_exit_code()));

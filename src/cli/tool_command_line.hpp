@@ -6,14 +6,18 @@
 
 #include <CLI/CLI.hpp>
 
+#include "cli/docs/cli_docs_option.hpp"
+
 #include <optional>
 #include <string>
 #include <vector>
 
 namespace clrt {
 
-// Gives `app` the --version flag and the error format; call before adding options.
-void identify_tool(CLI::App& app);
+// Gives `app` the --version flag, the error format, the hidden option that writes its man page
+// and completion, and (when `manual` names a page) a --help footer pointing at the man page and
+// the installed page; call before adding options.
+void identify_tool(CLI::App& app, const ToolManual& manual = {});
 
 // Parses `args` (the words after the program's name): nothing when the program goes on, else
 // the status to exit with (the message printed, unless `print` is false: the MPI ranks but

@@ -15,6 +15,7 @@
 #include "cli/picture_options.hpp"
 #include "cli/run_clrt.hpp"
 #include "image/interrupt_cleanup.hpp"
+#include "cli/docs/cli_docs_option.hpp"
 #include "mpi/mpi_options.hpp"
 #include "mpi/mpi_report.hpp"
 #include "mpi/mpi_session.hpp"
@@ -148,8 +149,12 @@ int run(const mpi::Session& session, const CliOptions& cli, const mpi::TileSize&
 int main(int argc, char** argv) {
   clrt::remove_temporaries_on_signal();
   clrt::return_large_blocks_when_freed();
-  clrt::mpi::Session session(argc, argv);
   clrt::mpi::TileSize tile;
+  // The build writes the man page without an MPI job to start.
+  if (clrt::asks_for_cli_docs({argv + 1, argv + argc}))
+    return clrt::parse_arguments({argv + 1, argv + argc}, true, clrt::mpi::mpi_program_options(tile))
+        .exit_code.value_or(2);
+  clrt::mpi::Session session(argc, argv);
   const clrt::ParseResult parsed = clrt::parse_arguments(
       {argv + 1, argv + argc}, session.first(), clrt::mpi::mpi_program_options(tile));
   if (parsed.exit_code) return *parsed.exit_code;

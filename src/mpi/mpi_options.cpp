@@ -12,6 +12,7 @@ ProgramOptions mpi_program_options(TileSize& tile) {
   program.animation = false;
   program.preview = false;
   program.dump_scene = false;
+  program.manual = "docs/scale-out.md";
   program.add_own_options = [&tile](CLI::App& app) {
     app.add_option_function<std::string>(
         "--tile",

@@ -34,6 +34,10 @@ using clrt::test::XScreen;
 
 namespace {
 
+// What the viewer may fill of the Xvfb screen (window.cpp).
+constexpr ScreenArea kXvfbArea{XScreen::kWidth - kWindowFrame.width,
+                               XScreen::kHeight - kWindowFrame.height};
+
 std::string text_of(const std::string& path) {
   std::ifstream in(path);
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
@@ -108,7 +112,7 @@ TEST_CASE("clrt-view shows a PFM with exposure and gamma as the host tone-maps i
 
   ViewState state;
   state.tone = {1, 2.2};
-  state.zoom = fitting_zoom(16, 12, 1);
+  state.zoom = fitting_zoom(16, 12, 1, kXvfbArea);
   const ViewSources sources = make_sources(hdr_ramp(), nullptr);
   const Canvas expected = compose(layout_view(state, sources), state, sources);
   const WindowPixels window = shown(screen, expected);
@@ -118,6 +122,37 @@ TEST_CASE("clrt-view shows a PFM with exposure and gamma as the host tone-maps i
   // column 8 (1.0) doubles past 1 and clamps to 255; green of row 0 is 0.
   CHECK(window.pixels[8 * 64] == 0xff00baU);
   CHECK(window.title.find("exposure +1.0 gamma 2.2") != std::string::npos);
+}
+
+TEST_CASE("clrt-view reduces an image wider than the screen until it fits, and --zoom takes any "
+          "factor",
+          "[view][screenshot]") {
+  if (!XScreen::available()) CLRT_SKIP_TEST("Xvfb is not installed");
+  ScratchDir dir;
+  const int width = 2 * XScreen::kWidth, height = 60;
+  std::vector<float> rgb;
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x)
+      rgb.insert(rgb.end(), {float(x % 7) / 6, float(y) / height, float(x) / width});
+  const FloatImage wide(width, height, std::move(rgb));
+  const std::string pfm = dir.file("wide.pfm");
+  write_image(pfm, wide);
+  const ViewSources sources = make_sources(wide, nullptr);
+  for (const std::vector<std::string>& zoom :
+       {std::vector<std::string>{}, std::vector<std::string>{"--zoom", "0.3"}}) {
+    INFO((zoom.empty() ? "fitted" : "--zoom 0.3"));
+    XScreen screen;
+    const std::string log = dir.file("view.log");
+    std::vector<std::string> command{CLRT_VIEW, pfm};
+    command.insert(command.end(), zoom.begin(), zoom.end());
+    screen.start(command, log);
+    ViewState state;
+    state.zoom = zoom.empty() ? fitting_zoom(width, height, 1, kXvfbArea) : 0.3;
+    const Canvas expected = compose(layout_view(state, sources), state, sources);
+    const WindowPixels window = shown(screen, expected);
+    check_shows(window, expected, log);
+    CHECK(window.width <= kXvfbArea.width);
+  }
 }
 
 TEST_CASE("clrt-view shows the frame of an FSF animation it is asked for, paused",
@@ -242,7 +277,7 @@ TEST_CASE("clrt --preview shows the render in clrt-view as it fills in, and the 
   CHECK(bytes == read_png(plain).frames[0]);
 
   // The window holds the finished render: the PNG's bytes, magnified.
-  const Canvas expected = magnified(bytes, 24, 18, fitting_zoom(24, 18, 1));
+  const Canvas expected = magnified(bytes, 24, 18, static_cast<int>(fitting_zoom(24, 18, 1, kXvfbArea)));
   const WindowPixels window = shown(screen, expected, "render complete");
   check_shows(window, expected, log);
   CHECK(window.title.find("render complete") != std::string::npos);

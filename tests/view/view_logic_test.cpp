@@ -90,8 +90,79 @@ TEST_CASE("layout: one picture, or A and B side by side with their difference, a
   CHECK(canvas.at(20, 0) == kBackground);
   CHECK(canvas.at(2 * (20 + kGap), 0) == 0x0000ffU);  // only blue of pixel 0 differs: 1 after scaling
   CHECK(canvas.at(2 * (20 + kGap) + 10, 0) == 0x000000U);
-  CHECK(fitting_zoom(16, 12, 1) == 64);
-  CHECK(fitting_zoom(1920, 1080, 1) == 1);
+}
+
+TEST_CASE("zoom by any factor: a reduced picture shows the mean radiance of what it covers",
+          "[view][layout]") {
+  // 4x2: the columns' values 0, 1, 2, 3 in red, the rows' 0 and 0.5 in green.
+  std::vector<float> rgb;
+  for (int y = 0; y < 2; ++y)
+    for (int x = 0; x < 4; ++x) rgb.insert(rgb.end(), {float(x) / 4, float(y) / 2, 0});
+  const ViewSources sources = make_sources(FloatImage{4, 2, rgb}, nullptr);
+  ViewState state;
+  state.zoom = 0.5;
+  const Layout half = layout_view(state, sources);
+  CHECK((half.width == 2 && half.height == 1));
+  const Canvas reduced = compose(half, state, sources);
+  // Pixel 0 covers columns 0 and 1 of both rows: red (0 + 0.25) / 2, green 0.25.
+  const float first[3] = {0.125f, 0.25f, 0};
+  CHECK(reduced.at(0, 0) == tone_map_pixel(first, state.tone));
+  const float second[3] = {0.625f, 0.25f, 0};
+  CHECK(reduced.at(1, 0) == tone_map_pixel(second, state.tone));
+  const auto hit = hit_pixel(half, 1, 0);
+  REQUIRE(hit);
+  CHECK((hit->x == 2 && hit->y == 0));
+
+  // 1.5x: three screen columns for two image columns, the first image column twice.
+  state.zoom = 1.5;
+  const Layout magnified = layout_view(state, sources);
+  CHECK((magnified.width == 6 && magnified.height == 3));
+  const Canvas shown = compose(magnified, state, sources);
+  CHECK(shown.at(1, 0) == shown.at(0, 0));
+  CHECK(shown.at(2, 0) != shown.at(1, 0));
+  CHECK(hit_pixel(magnified, 2, 2)->x == 1);
+  CHECK(hit_pixel(magnified, 2, 2)->y == 1);
+}
+
+TEST_CASE("the zoom a window opens at fits the screen, and the keys step through whole zooms "
+          "and their reciprocals",
+          "[view][layout]") {
+  const ScreenArea full_hd{1904, 1016};
+  CHECK(fitting_zoom(16, 12, 1, full_hd) == 64);           // magnified within 1024x768
+  CHECK(fitting_zoom(16, 12, 1, {500, 300}) == 25);        // a small screen's fewer
+  CHECK(fitting_zoom(1920, 1080, 1, full_hd) == Approx(1016.0 / 1080));  // reduced to fit
+  CHECK(fitting_zoom(3840, 2160, 1, full_hd) == Approx(1016.0 / 2160));
+  CHECK(fitting_zoom(1024, 768, 3, full_hd) == Approx((1904.0 - 2 * kGap) / (3 * 1024)));
+  CHECK(fitting_zoom(1 << 20, 1, 1, full_hd) == kMinZoom);
+  CHECK(zoom_in(1) == 2);
+  CHECK(zoom_in(2.5) == 3);
+  CHECK(zoom_out(2.5) == 2);
+  CHECK(zoom_out(1) == 0.5);
+  CHECK(zoom_out(0.5) == Approx(1.0 / 3));
+  CHECK(zoom_in(1.0 / 3) == 0.5);
+  CHECK(zoom_in(0.4) == 0.5);
+  CHECK(zoom_out(0.4) == Approx(1.0 / 3));
+  CHECK(zoom_in(0.5) == 1);
+  CHECK(zoom_out(kMinZoom) == kMinZoom);
+  CHECK(zoom_in(kMaxZoom) == kMaxZoom);
+}
+
+TEST_CASE("showing more pictures side by side lowers the zoom until they fit the screen",
+          "[view][layout]") {
+  const FloatImage wide{800, 10, std::vector<float>(3 * 800 * 10, 0.5f)};
+  const AnyImage b = wide;
+  const ViewSources sources = make_sources(wide, &b);
+  ViewState state;
+  state.screen = {1000, 700};
+  state.zoom = 1;
+  Playback playback;
+  apply_key(Key::SideBySide, state, playback, sources);
+  CHECK(layout_view(state, sources).width <= 1000);
+  CHECK(state.zoom == Approx((1000.0 - kGap) / 1600));
+  apply_key(Key::SideBySide, state, playback, sources);  // one picture again: the zoom stays
+  CHECK(state.zoom == Approx((1000.0 - kGap) / 1600));
+  apply_key(Key::ZoomToFit, state, playback, sources);
+  CHECK(state.zoom == 1);
 }
 
 TEST_CASE("images of different sizes cannot be compared", "[view][layout]") {
@@ -106,21 +177,22 @@ TEST_CASE("the readout names the pictures, the frame, the tone and the values un
   ViewState state;
   state.tone = {1.5, 2.2};
   CHECK(readout_text({"a.pfm", "b.pfm"}, sources, state, true, std::nullopt) ==
-        "A: a.pfm | exposure +1.5 gamma 2.2");
+        "A: a.pfm | exposure +1.5 gamma 2.2 | zoom 1x");
   state.flipped = Picture::B;
   CHECK(readout_text({"a.pfm", "b.pfm"}, sources, state, true, PixelHit{Picture::B, 0, 0}) ==
-        "B: b.pfm | exposure +1.5 gamma 2.2 | (0, 0) A 0.25 0.5 1.5 B 0.25 0.5 1 diff 0 0 1");
+        "B: b.pfm | exposure +1.5 gamma 2.2 | zoom 1x | (0, 0) A 0.25 0.5 1.5 B 0.25 0.5 1 diff 0 0 1");
 
   const Rgba8Image animation{1, 1, {{0, 0, 0, 255}, {255, 0, 0, 255}, {0, 0, 255, 255}}};
   const ViewSources frames = make_sources(animation, nullptr);
   state = {};
   state.frame = 1;
+  state.zoom = 1.0 / 3;
   CHECK(readout_text({"turn.fsf", ""}, frames, state, false, std::nullopt) ==
-        "turn.fsf | frame 2/3 paused | exposure +0.0 gamma 1.0");
+        "turn.fsf | frame 2/3 paused | exposure +0.0 gamma 1.0 | zoom 0.333x");
   state.tone.curve = ToneCurve::Filmic;
   state.tone.srgb = true;
   CHECK(readout_text({"turn.fsf", ""}, frames, state, false, std::nullopt) ==
-        "turn.fsf | frame 2/3 paused | exposure +0.0 filmic sRGB");
+        "turn.fsf | frame 2/3 paused | exposure +0.0 filmic sRGB | zoom 0.333x");
 }
 
 TEST_CASE("playback advances by the frame rate and loops, a step by hand pauses it",
@@ -178,7 +250,8 @@ TEST_CASE("keys: exposure, gamma, sRGB, filmic, flip, difference, side by side, 
   apply_key(Key::SideBySide, alone, playback, one);
   CHECK((alone.flipped == Picture::A && !alone.side_by_side));  // nothing to compare with
   apply_key(Key::ZoomOut, alone, playback, one);
-  CHECK(alone.zoom == 1);
+  CHECK(alone.zoom == 0.5);
+  apply_key(Key::ZoomIn, alone, playback, one);
   apply_key(Key::ZoomIn, alone, playback, one);
   CHECK(alone.zoom == 2);
   CHECK_FALSE(apply_key(Key::Quit, alone, playback, one));

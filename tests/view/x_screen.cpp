@@ -65,7 +65,8 @@ XScreen::XScreen() {
       dup2(devnull, 2);
       // -noreset: the server would otherwise reset, refusing connections for a moment, each time
       // its last client (this test's check that it is up) leaves.
-      exec_or_exit({"Xvfb", display_, "-screen", "0", "1600x1200x24", "-nolisten", "tcp", "-noreset"});
+      const std::string size = std::to_string(kWidth) + "x" + std::to_string(kHeight) + "x24";
+      exec_or_exit({"Xvfb", display_, "-screen", "0", size, "-nolisten", "tcp", "-noreset"});
     }
     for (int wait = 0; wait < 200; ++wait) {
       if (can_connect(display_)) return;

@@ -22,6 +22,7 @@ class XScreen {
  public:
   // Whether Xvfb is installed; without it the tests report skipped.
   static bool available();
+  static constexpr int kWidth = 1600, kHeight = 1200;  // the screen's pixels
   // Starts Xvfb on a free display and waits until it takes connections; std::runtime_error if
   // it does not come up.
   XScreen();

@@ -11,6 +11,24 @@ foreach(optional clrt-mpi clrt-view)
   endif()
 endforeach()
 install(TARGETS ${clrt_installed_programs} RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+# Each program's man page and bash completion, written by the program itself from the parser it
+# runs (src/cli/docs/cli_docs_option.hpp), into share/ of the build tree as they are installed.
+set(clrt_cli_docs "")
+foreach(program IN LISTS clrt_installed_programs)
+  set(page ${PROJECT_BINARY_DIR}/share/man/man1/${program}.1)
+  set(completion ${PROJECT_BINARY_DIR}/share/bash-completion/completions/${program})
+  add_custom_command(OUTPUT ${page} ${completion}
+    COMMAND ${CMAKE_COMMAND} -E make_directory ${PROJECT_BINARY_DIR}/share/man/man1
+            ${PROJECT_BINARY_DIR}/share/bash-completion/completions
+    COMMAND ${program} --write-man-page ${page}
+    COMMAND ${program} --write-bash-completion ${completion}
+    DEPENDS ${program}
+    COMMENT "Writing ${program}'s man page and bash completion")
+  list(APPEND clrt_cli_docs ${page} ${completion})
+  install(FILES ${page} DESTINATION ${CMAKE_INSTALL_MANDIR}/man1)
+  install(FILES ${completion} DESTINATION ${CMAKE_INSTALL_DATADIR}/bash-completion/completions)
+endforeach()
+add_custom_target(clrt_cli_docs ALL DEPENDS ${clrt_cli_docs})
 install(PROGRAMS tools/experiment/plot_experiment.py DESTINATION ${CMAKE_INSTALL_DATADIR}/clrt)
 # The scenes of scenes/ (without the large ones), to try clrt on: share/clrt/scenes.
 install(DIRECTORY scenes/ DESTINATION ${CMAKE_INSTALL_DATADIR}/clrt/scenes PATTERN large EXCLUDE)

@@ -261,7 +261,7 @@ nlohmann::json run_plan(const Plan& plan, nlohmann::json finished, const nlohman
 int main(int argc, char** argv) {
   CLI::App app{"clrt-experiment: scenes x devices x variants x repeats, one clrt process each",
                "clrt-experiment"};
-  clrt::identify_tool(app);
+  clrt::identify_tool(app, {"docs/experiments.md", {"ray", "RAY", "nff", "NFF"}});
   std::vector<std::string> scene_paths, device_specs = {"cpu"}, extras;
   std::string integrators = "wavefront", wavefronts, local_sizes, python = CLRT_PYTHON3;
   const std::string plot_script =
@@ -277,6 +277,7 @@ int main(int argc, char** argv) {
                  "(repeatable; default cpu)");
   app.add_option("--integrator", integrators,
                  "comma-separated: " + CLI::detail::join(clrt::integrator_names(), ", "))
+      ->type_name("{" + CLI::detail::join(clrt::integrator_names(), ",") + "},...")
       ->capture_default_str();
   app.add_option("--wavefront", wavefronts, "comma-separated queue sizes (default: the device's)");
   app.add_option("--local-size", local_sizes, "comma-separated work-group sizes (default: the device's)");

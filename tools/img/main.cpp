@@ -15,7 +15,7 @@ int main(int argc, char** argv) {
   CLI::App app{"Convert, describe, compare and stitch the images clrt writes (FSF, PNG, PPM, "
                "PFM, OpenEXR).",
                "clrt-img"};
-  clrt::identify_tool(app);
+  clrt::identify_tool(app, {"docs/images.md", {}});
   app.require_subcommand(1);
   Command command;
   add_convert(app, command);

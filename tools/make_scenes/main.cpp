@@ -13,7 +13,7 @@
 int main(int argc, char** argv) {
   CLI::App app{"Writes clrt's large procedural benchmark scenes and their meshes, or the material knob.",
                "clrt-make-scenes"};
-  clrt::identify_tool(app);
+  clrt::identify_tool(app, {"docs/performance.md", {}});
   std::string folder = "build/scenes-large";
   double scale = 1;
   app.add_option("OUTDIR", folder, "folder to write into (created if missing)")

@@ -43,14 +43,19 @@ bool apply_key(Key key, ViewState& state, Playback& playback, const ViewSources&
       break;
     case Key::Difference:
       if (sources.comparing()) state.show_difference = !state.show_difference;
+      keep_on_screen(state, sources);
       break;
     case Key::SideBySide:
       if (sources.comparing()) state.side_by_side = !state.side_by_side;
+      keep_on_screen(state, sources);
       break;
-    case Key::ZoomIn: ++state.zoom; break;
-    case Key::ZoomOut:
-      if (state.zoom > 1) --state.zoom;
+    case Key::ZoomIn: state.zoom = zoom_in(state.zoom); break;
+    case Key::ZoomOut: state.zoom = zoom_out(state.zoom); break;
+    case Key::ZoomToFit: {
+      const int pictures = static_cast<int>(layout_view(state, sources).places.size());
+      state.zoom = fitting_zoom(sources.width, sources.height, pictures, state.screen);
       break;
+    }
     case Key::Quit: return false;
   }
   return true;

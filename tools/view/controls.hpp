@@ -21,6 +21,7 @@ enum class Key {
   SideBySide,    // s
   ZoomIn,        // ]
   ZoomOut,       // [
+  ZoomToFit,     // z: the zoom the window opened at, for what it shows now
   Quit,          // q or escape
 };
 

@@ -24,7 +24,7 @@ struct ViewOptions {
   std::string tonemap = "clamp";
   bool srgb = false;
   int frame = 1;
-  std::optional<int> zoom;
+  std::optional<double> zoom;
   bool pause = false, side_by_side = false, difference = false, show_b = false, preview = false;
 };
 
@@ -47,8 +47,9 @@ void add_options(CLI::App& app, ViewOptions& options) {
       ->check(clrt::decimal_number(0.1, 1000.0));
   app.add_flag("--pause", options.pause, "start an animation paused");
   app.add_option("--zoom", options.zoom,
-                 "screen pixels per image pixel (default: the most that fit 1024x768)")
-      ->transform(clrt::whole_number(1, 256));
+                 "screen pixels per image pixel, any factor from 1/64 to 256 (0.5 halves the "
+                 "image; default: what fits the screen, docs/viewer.md)")
+      ->check(clrt::decimal_number(clrt::view::kMinZoom, clrt::view::kMaxZoom));
   app.add_flag("--side-by-side", options.side_by_side, "two images: show them side by side");
   app.add_flag("--difference", options.difference, "two images: show their difference");
   app.add_flag("--flip", options.show_b, "two images: start on the second");
@@ -106,13 +107,11 @@ int view(const ViewOptions& options) {
   state.show_difference = options.difference;
   state.flipped = options.show_b ? Picture::B : Picture::A;
   state.frame = std::min(options.frame, sources.frame_count()) - 1;
-  const int pictures = state.side_by_side ? (state.show_difference ? 3 : 2) : 1;
-  state.zoom = options.zoom.value_or(fitting_zoom(sources.width, sources.height, pictures));
   Playback playback;
   playback.fps = options.fps;
   playback.playing = !options.pause;
   const ViewNames names{options.preview ? "clrt --preview" : options.a, options.b};
-  return run_window(sources, names, state, playback, feed ? &*feed : nullptr);
+  return run_window(sources, names, state, options.zoom, playback, feed ? &*feed : nullptr);
 }
 
 }  // namespace
@@ -121,7 +120,7 @@ int main(int argc, char** argv) {
   CLI::App app{"Show the images clrt writes (FSF animations, PNG, PPM, PFM, OpenEXR), compare two, "
                "or watch a render fill in (clrt --preview).",
                "clrt-view"};
-  clrt::identify_tool(app);
+  clrt::identify_tool(app, {"docs/viewer.md", {}});
   ViewOptions options;
   add_options(app, options);
   if (const auto status = clrt::parse_tool_arguments(app, argc, argv)) return *status;

@@ -38,6 +38,8 @@ std::string readout_text(const ViewNames& names, const ViewSources& sources,
     std::snprintf(tone, sizeof tone, " gamma %.1f", state.tone.gamma);
     text += tone;
   }
+  std::snprintf(tone, sizeof tone, " | zoom %.3gx", state.zoom);
+  text += tone;
   if (!hit) return text;
   text += " | (" + std::to_string(hit->x) + ", " + std::to_string(hit->y) + ")";
   text += values("A", ViewSources::frame_of(sources.a, state.frame), hit->x, hit->y);

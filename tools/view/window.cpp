@@ -2,6 +2,7 @@
 
 #include <SDL.h>
 
+#include <algorithm>
 #include <chrono>
 #include <iostream>
 #include <optional>
@@ -25,6 +26,7 @@ std::optional<Key> key_of(const SDL_Keysym& key) {
     case SDLK_s: return Key::SideBySide;
     case SDLK_RIGHTBRACKET: return Key::ZoomIn;
     case SDLK_LEFTBRACKET: return Key::ZoomOut;
+    case SDLK_z: return Key::ZoomToFit;
     case SDLK_q: case SDLK_ESCAPE: return Key::Quit;
     default: return std::nullopt;
   }
@@ -32,9 +34,8 @@ std::optional<Key> key_of(const SDL_Keysym& key) {
 
 class Window {
  public:
-  // At its first picture's size: without a window manager, one that grows later can reach past
-  // the screen's edge.
-  Window(int width, int height) {
+  // SDL and the display; the window opens with open(), once its size is known from the screen's.
+  Window() {
     if (SDL_Init(SDL_INIT_VIDEO) != 0) throw std::runtime_error(SDL_GetError());
     // Without a display SDL falls back to drivers that draw nowhere: a window nobody sees would
     // keep clrt --preview streaming into it, and the user waiting for it.
@@ -43,17 +44,26 @@ class Window {
       SDL_Quit();
       throw std::runtime_error("no display (SDL found only its " + driver + " video driver)");
     }
-    window_ = SDL_CreateWindow("clrt-view", SDL_WINDOWPOS_UNDEFINED, SDL_WINDOWPOS_UNDEFINED,
-                               width, height, 0);
-    if (!window_) {
-      const std::string error = SDL_GetError();
-      SDL_Quit();
-      throw std::runtime_error(error);
-    }
   }
   ~Window() {
-    SDL_DestroyWindow(window_);
+    if (window_) SDL_DestroyWindow(window_);
     SDL_Quit();
+  }
+
+  // The first display's usable bounds (without panels and docks), less room for the window's
+  // frame and title bar, which SDL cannot tell before a window exists.
+  ScreenArea screen() const {
+    SDL_Rect bounds{};
+    if (SDL_GetDisplayUsableBounds(0, &bounds) != 0) return kFirstWindow;
+    return {std::max(1, bounds.w - kWindowFrame.width), std::max(1, bounds.h - kWindowFrame.height)};
+  }
+
+  // At its first picture's size: without a window manager, one that grows later can reach past
+  // the screen's edge.
+  void open(int width, int height) {
+    window_ = SDL_CreateWindow("clrt-view", SDL_WINDOWPOS_UNDEFINED, SDL_WINDOWPOS_UNDEFINED,
+                               width, height, 0);
+    if (!window_) throw std::runtime_error(SDL_GetError());
   }
   Window(const Window&) = delete;
   Window& operator=(const Window&) = delete;
@@ -84,12 +94,16 @@ class Window {
 
 }  // namespace
 
-int run_window(ViewSources& sources, const ViewNames& names, ViewState state, Playback playback,
-               PreviewFeed* feed) {
+int run_window(ViewSources& sources, const ViewNames& names, ViewState state,
+               std::optional<double> zoom, Playback playback, PreviewFeed* feed) {
   std::optional<Window> window;
   try {
+    window.emplace();
+    state.screen = window->screen();
+    const int pictures = static_cast<int>(layout_view(state, sources).places.size());
+    state.zoom = zoom.value_or(fitting_zoom(sources.width, sources.height, pictures, state.screen));
     const Layout first = layout_view(state, sources);
-    window.emplace(first.width, first.height);
+    window->open(first.width, first.height);
   } catch (const std::exception& error) {
     std::cerr << "clrt-view: error: cannot open a window: " << error.what() << "\n";
     return 1;

@@ -1,4 +1,4 @@
-#include "option_list.hpp"
+#include "cli/docs/option_list.hpp"
 
 namespace clrt::cli_docs {
 namespace {

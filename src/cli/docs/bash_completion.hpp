@@ -1,6 +1,7 @@
 // A bash completion script for a CLI11 parser: its option names, the fixed words of options that
 // take one (--mode trace|cast|path), file names for other text values, and for the positional
-// argument the files ending in `positional_extensions` and folders.
+// argument the files ending in `positional_extensions` and folders (any file when it is empty);
+// for a program of commands (clrt-img convert), the commands and then each command's own.
 #pragma once
 
 #include <CLI/CLI.hpp>
