@@ -369,6 +369,8 @@ TEST_CASE("clrt-view's usage errors exit 2 and an unreadable image 1, before any
   CHECK(text_of(dir.file("err.txt")) == "clrt-view: error: name an image to show\n");
   CHECK(status("--preview a.png") == 2);
   CHECK(status("--gamma 0 a.png") == 2);
+  CHECK(status("--zoom 0 a.png") == 2);
+  CHECK(text_of(dir.file("err.txt")).rfind("clrt-view: error: --zoom: 0 is not in the range ", 0) == 0);
   CHECK(status("'" + dir.file("missing.pfm") + "'") == 1);
   CHECK(text_of(dir.file("err.txt")).rfind("clrt-view: error: ", 0) == 0);
   write_image(dir.file("a.pfm"), hdr_ramp());
