@@ -102,6 +102,32 @@ CLRT_INLINE void sincos_turns(float u, float* s, float* c) {
   }
 }
 
+/* atan(t) for any finite t, within about 2 ulp: |t| > 1 goes to pi/2 - atan(1/|t|), above
+ * tan(pi/8) to pi/4 + atan((t - 1) / (t + 1)), and the rest, |r| <= 0.4143, into atan's odd
+ * Taylor series, whose first omitted term (r^19 / 19) is below 3e-9 there. */
+CLRT_INLINE float exact_atan(float t) {
+  const float a = fabs(t);
+  const bool inverted = a > 1.0f;
+  const float b = inverted ? 1.0f / a : a;
+  const bool shifted = b > 0.414213568f;
+  const float r = shifted ? (b - 1.0f) / (b + 1.0f) : b;
+  const float r2 = r * r;
+  float series = 0.0588235296f;
+  series = 0.0666666701f - r2 * series;
+  series = 0.0769230798f - r2 * series;
+  series = 0.0909090936f - r2 * series;
+  series = 0.111111112f - r2 * series;
+  series = 0.142857149f - r2 * series;
+  series = 0.200000003f - r2 * series;
+  series = 0.333333343f - r2 * series;
+  /* pi/4 and pi/2 each as a float and its remainder, added last, so that neither constant's
+   * rounding (half an ulp of the result) adds to the series'. */
+  float angle = r - r * (r2 * series);
+  if (shifted) angle = 0.785398185f + (angle - 2.18556941e-08f);
+  if (inverted) angle = 1.57079637f - (angle + 4.37113883e-08f);
+  return t < 0.0f ? -angle : angle;
+}
+
 /* x^y for x >= 0, with 0^0 = 1 as pow() has it. PoCL's pow() made the whole shade kernel 3.5x
  * slower (250 ms against 72 ms on reflect.ray at 1280x720); this costs two short series. */
 CLRT_INLINE float power(float x, float y) {

@@ -1,7 +1,7 @@
 // kernels/math/exact.h on the device against the host. The vector functions must give exactly
 // the bits of IEEE 754 single precision evaluated in their stated order (what makes every
-// OpenCL implementation render the same image); exact_log2, exact_exp2 and power must be within
-// 2 ulp of the true value, computed in double.
+// OpenCL implementation render the same image); exact_log2, exact_exp2, exact_atan and power
+// must be within 2 ulp of the true value, computed in double.
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -27,7 +27,8 @@ __kernel void vector_math(__global const float4* a, __global const float4* b, ui
   out[4 * i] = (float4)(dot3(x, y), length3(x), dot4(a[i], b[i]), dot2(x.xy, y.xy));
   out[4 * i + 1] = (float4)(cross3(x, y), 0.0f);
   out[4 * i + 2] = (float4)(normalize3(x), 0.0f);
-  out[4 * i + 3] = (float4)(exact_log2(a[i].w), exact_exp2(b[i].w), power(fabs(a[i].x), fabs(b[i].w)), 0.0f);
+  out[4 * i + 3] = (float4)(exact_log2(a[i].w), exact_exp2(b[i].w), power(fabs(a[i].x), fabs(b[i].w)),
+                          exact_atan(a[i].y / b[i].y));
 }
 )CL";
 
@@ -77,7 +78,7 @@ TEST_CASE("exact.h's vector functions give IEEE 754's bits, in their stated orde
   run(test_program(kKernels), VectorMathArgs{upload(a), upload(b), static_cast<cl_uint>(kCount), out},
       kCount);
   const std::vector<dev::f4> got = download(out, 4 * kCount);
-  double worst_log = 0, worst_exp = 0;
+  double worst_log = 0, worst_exp = 0, worst_atan = 0;
   for (std::size_t i = 0; i < kCount; ++i) {
     const dev::f4 x = a[i], y = b[i];
     volatile float p0 = x.x * y.x, p1 = x.y * y.y, p2 = x.z * y.z, p3 = x.w * y.w;
@@ -107,6 +108,8 @@ TEST_CASE("exact.h's vector functions give IEEE 754's bits, in their stated orde
     }
     worst_log = std::max(worst_log, ulps(r3.x, std::log2(static_cast<double>(x.w))));
     worst_exp = std::max(worst_exp, ulps(r3.y, std::exp2(static_cast<double>(y.w))));
+    volatile float quotient = x.y / y.y;  // quotients from 1e-4 to 1e4, both signs
+    worst_atan = std::max(worst_atan, ulps(r3.w, std::atan(static_cast<double>(quotient))));
     const double base = std::fabs(x.x), exponent = std::fabs(y.w);
     const double truth = base > 0 ? std::pow(base, exponent) : (exponent == 0 ? 1.0 : 0.0);
     // x^y = 2^t for t = y log2 x: a relative error e in t is an error of e |t| ln 2 in the result,
@@ -123,7 +126,9 @@ TEST_CASE("exact.h's vector functions give IEEE 754's bits, in their stated orde
   CHECK(got[4 * 2 + 3].z == 1.0f);
   CHECK(got[4 * 3 + 3].y == std::numeric_limits<float>::denorm_min());
   CHECK(std::isinf(got[4 * 5 + 3].y));
-  INFO("worst exact_log2 " << worst_log << " ulp, exact_exp2 " << worst_exp << " ulp");
+  INFO("worst exact_log2 " << worst_log << " ulp, exact_exp2 " << worst_exp << " ulp, exact_atan "
+                             << worst_atan << " ulp");
   CHECK(worst_log <= 2.0);
   CHECK(worst_exp <= 2.0);
+  CHECK(worst_atan <= 2.0);
 }

@@ -1,14 +1,50 @@
 /* `light r g b area x y z ux uy uz vx vy vz [samples]`: a parallelogram that emits its colour as
  * radiance from both faces, sampled at `samples` stratified points, each taking an equal share
- * of its intensity; paths that cross it see it. */
+ * of its intensity; paths that cross it see it.
+ *
+ * The Whitted modes place the points uniformly on its surface, as the course does. Path mode
+ * draws them uniformly in the solid angle a rectangle subtends (math/spherical_rectangle.h),
+ * which spares the points beside a light the noise of samples whose 1 / d^2 varies across it,
+ * wherever that angle is large enough for single precision to hold it (1/64 sr: beyond, the
+ * light looks small and uniform points are nearly as good); a parallelogram that is not a
+ * rectangle keeps uniform points. Sampling and crossing decide alike from the same point, so
+ * multiple importance sampling weighs each direction with the density that drew it. */
 #ifndef CLRT_RENDER_LIGHTS_AREA_H
 #define CLRT_RENDER_LIGHTS_AREA_H
 
 #include "../light_sample.h"
+#include "math/spherical_rectangle.h"
+
+/* The program's transport model (render/transport_step.h) decides how points are drawn. */
+#if defined(CLRT_TRANSPORT) && CLRT_TRANSPORT == CLRT_MODE_PATH
+#define CLRT_AREA_BY_SOLID_ANGLE 1
+#else
+#define CLRT_AREA_BY_SOLID_ANGLE 0
+#endif
+
+#define CLRT_AREA_MIN_SOLID_ANGLE 0.015625f
+
+/* Whether `light` is drawn by solid angle from o; if so, *r holds its spherical rectangle. */
+CLRT_INLINE bool area_light_by_solid_angle(__global const Light* light, float3 o, SphericalRectangle* r) {
+  if (!CLRT_AREA_BY_SOLID_ANGLE) return false;
+  const float3 u = xyz(light->edge_u), v = xyz(light->edge_v);
+  if (fabs(dot3(u, v)) > 1e-5f * length3(u) * length3(v)) return false;
+  *r = spherical_rectangle(xyz(light->position), u, v, o);
+  return r->solid_angle >= CLRT_AREA_MIN_SOLID_ANGLE;
+}
 
 /* Sample j of the light's grid_u x grid_v strata, placed in its stratum by u. */
 CLRT_INLINE LightSample area_light_sample(__global const Light* light, uint j, float3 p, float2 u) {
   const float2 uv = stratified(j, light->grid_u, light->grid_v, u);
+  SphericalRectangle r;
+  if (area_light_by_solid_angle(light, p, &r)) {
+    LightSample s = sample_at_point(p + spherical_rectangle_point(&r, uv),
+                                    xyz(light->color) / (float)light->samples, p);
+    /* One of `samples` points uniform in the solid angle S: density 1 / S. */
+    s.geometry = r.solid_angle;
+    s.density = 1.0f / r.solid_angle;
+    return s;
+  }
   const float3 position =
       xyz(light->position) + (uv.x * xyz(light->edge_u) + uv.y * xyz(light->edge_v));
   LightSample s = sample_at_point(position, xyz(light->color) / (float)light->samples, p);
@@ -43,7 +79,8 @@ CLRT_INLINE LightCrossing area_light_crossing(__global const Light* light, float
   LightCrossing c;
   c.t = t;
   c.radiance = xyz(light->color);
-  c.density = t * t / (cos_light * area);
+  SphericalRectangle r;
+  c.density = area_light_by_solid_angle(light, o, &r) ? 1.0f / r.solid_angle : t * t / (cos_light * area);
   return c;
 }
 
