@@ -154,7 +154,7 @@ TEST_CASE("every program's completion completes its commands and the words of it
     }
 }
 
-TEST_CASE("--write-man-page reports a page it cannot write", "[cli][docs]") {
+TEST_CASE("a program asked to write its man page where it cannot says so", "[cli][docs]") {
   const ScratchDir scratch;
   const std::string missing_folder = scratch.file("no-such-folder/clrt-img.1");
   const CommandResult r = run_program(CLRT_IMG_EXE, "--write-man-page " + quoted(missing_folder));
