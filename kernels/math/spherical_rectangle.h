@@ -19,10 +19,20 @@
 typedef struct SphericalRectangle {
   float3 x, y, z;            /* the frame: unit edges and the normal pointing away from o */
   float x0, x1, y0, y1, z0;  /* the rectangle in that frame, o at the origin */
-  float excess2, excess3;    /* the angles at corners (x0, y1) and (x0, y0), less pi/2 */
+  float excess23;            /* the angles at corners (x0, y1) and (x0, y0), less pi/2 each */
   float b0, b1;              /* the z of the normals of the planes through the y0 and y1 edges */
   float solid_angle;
 } SphericalRectangle;
+
+/* atan(a) + atan(b) with one arctangent: the angle whose tangent is (a + b) / (1 - a b), in the
+ * half-turn beyond +-pi/2 when 1 - a b < 0 (pi as a float and its remainder). */
+CLRT_INLINE float atan_sum(float a, float b) {
+  const float y = a + b, x = 1.0f - a * b;
+  if (x == 0.0f) return y < 0.0f ? -1.57079637f : 1.57079637f;
+  const float angle = exact_atan(y / x);
+  if (x > 0.0f) return angle;
+  return y < 0.0f ? (angle - 3.14159274f) + 8.74227766e-08f : (angle + 3.14159274f) - 8.74227766e-08f;
+}
 
 /* The rectangle with corner c and perpendicular edges eu and ev, seen from o. */
 CLRT_INLINE SphericalRectangle spherical_rectangle(float3 c, float3 eu, float3 ev, float3 o) {
@@ -43,12 +53,13 @@ CLRT_INLINE SphericalRectangle spherical_rectangle(float3 c, float3 eu, float3 e
   r.y1 = r.y0 + lv;
   const float h = -r.z0, h2 = r.z0 * r.z0;
   const float x02 = r.x0 * r.x0, x12 = r.x1 * r.x1, y02 = r.y0 * r.y0, y12 = r.y1 * r.y1;
-  /* Each corner's angle less pi/2: atan(x y / (h r)), signed by the sides it lies between. */
-  const float e0 = exact_atan(-(r.x1 * r.y0) / (h * sqrt(x12 + y02 + h2)));
-  const float e1 = exact_atan((r.x1 * r.y1) / (h * sqrt(x12 + y12 + h2)));
-  r.excess2 = exact_atan(-(r.x0 * r.y1) / (h * sqrt(x02 + y12 + h2)));
-  r.excess3 = exact_atan((r.x0 * r.y0) / (h * sqrt(x02 + y02 + h2)));
-  r.solid_angle = e0 + e1 + r.excess2 + r.excess3;
+  /* Each corner's angle less pi/2 is atan(x y / (h r)), signed by the sides it lies between. */
+  const float t0 = -(r.x1 * r.y0) / (h * sqrt(x12 + y02 + h2));
+  const float t1 = (r.x1 * r.y1) / (h * sqrt(x12 + y12 + h2));
+  const float t2 = -(r.x0 * r.y1) / (h * sqrt(x02 + y12 + h2));
+  const float t3 = (r.x0 * r.y0) / (h * sqrt(x02 + y02 + h2));
+  r.excess23 = atan_sum(t2, t3);
+  r.solid_angle = atan_sum(t0, t1) + r.excess23;
   r.b0 = -r.y0 / sqrt(h2 + y02);
   r.b1 = r.y1 / sqrt(h2 + y12);
   return r;
@@ -58,7 +69,7 @@ CLRT_INLINE SphericalRectangle spherical_rectangle(float3 c, float3 eu, float3 e
 CLRT_INLINE float3 spherical_rectangle_point(const SphericalRectangle* r, float2 uv) {
   /* The angle a_u = u S + 2 pi - g2 - g3 of the paper is pi + phi with phi below: its sine and
    * cosine are those of phi, negated, so the quotient f_u keeps their ratio. */
-  const float phi = uv.x * r->solid_angle - r->excess2 - r->excess3;
+  const float phi = uv.x * r->solid_angle - r->excess23;
   float turns = fabs(phi) * 0.159154937f; /* 1 / (2 pi) */
   if (turns >= 1.0f) turns -= 1.0f;
   float sin_phi, cos_phi;

@@ -29,6 +29,11 @@ CLRT_INLINE bool area_light_by_solid_angle(__global const Light* light, float3 o
   if (!CLRT_AREA_BY_SOLID_ANGLE) return false;
   const float3 u = xyz(light->edge_u), v = xyz(light->edge_v);
   if (fabs(dot3(u, v)) > 1e-5f * length3(u) * length3(v)) return false;
+  /* The solid angle is at most the area over the squared distance h to the light's plane: a
+   * light that cannot reach the threshold costs no arctangent. */
+  const float3 n = cross3(u, v);
+  const float area = length3(n), h = fabs(dot3(xyz(light->position) - o, n)) / area;
+  if (area < CLRT_AREA_MIN_SOLID_ANGLE * h * h) return false;
   *r = spherical_rectangle(xyz(light->position), u, v, o);
   return r->solid_angle >= CLRT_AREA_MIN_SOLID_ANGLE;
 }
