@@ -151,8 +151,8 @@ TEST_CASE("path mode draws a near rectangular light uniformly in the solid angle
   chi2_test(observed, expected);
 }
 
-TEST_CASE("a light that looks small, a parallelogram and the Whitted modes keep uniform points "
-          "on the surface",
+TEST_CASE("a light that looks small, a parallelogram, the Whitted modes and a point in the light's "
+          "plane keep uniform points on the surface",
           "[kernels][path][lights]") {
   const auto area_density = [](const Rectangle& r, V3 w, double distance) {
     const V3 n = cross(r.u, r.v);
@@ -176,5 +176,14 @@ TEST_CASE("a light that looks small, a parallelogram and the Whitted modes keep 
       CHECK(d.densities[i].x == Approx(expected).epsilon(1e-4));
       CHECK(d.densities[i].z == Approx(expected).epsilon(1e-4));
     }
+  }
+  // A point in the light's own plane, beside it: no solid angle to draw in, and no NaN.
+  const V3 beside = kRectangle.corner + 1.5 * kRectangle.u + 0.5 * kRectangle.v;
+  const Draws d = draw(kPathKernel, kRectangle, beside, 64);
+  for (std::size_t i = 0; i < 64; ++i) {
+    INFO("sample " << i);
+    CHECK((std::isfinite(d.directions[i].x) && std::isfinite(d.directions[i].y) &&
+           std::isfinite(d.directions[i].z) && d.directions[i].w > 0));
+    CHECK(std::isfinite(d.densities[i].x));
   }
 }

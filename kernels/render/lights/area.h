@@ -35,7 +35,8 @@ CLRT_INLINE bool area_light_by_solid_angle(__global const Light* light, float3 o
   const float area = length3(n), h = fabs(dot3(xyz(light->position) - o, n)) / area;
   if (area < CLRT_AREA_MIN_SOLID_ANGLE * h * h) return false;
   *r = spherical_rectangle(xyz(light->position), u, v, o);
-  return r->solid_angle >= CLRT_AREA_MIN_SOLID_ANGLE;
+  /* A point in the light's plane (z0 = 0) would give infinite tangents and samples at o itself. */
+  return r->z0 < 0.0f && r->solid_angle >= CLRT_AREA_MIN_SOLID_ANGLE;
 }
 
 /* Sample j of the light's grid_u x grid_v strata, placed in its stratum by u. */
