@@ -34,13 +34,14 @@ CLRT_INLINE float atan_sum(float a, float b) {
   return y < 0.0f ? (angle - 3.14159274f) + 8.74227766e-08f : (angle + 3.14159274f) - 8.74227766e-08f;
 }
 
-/* The rectangle with corner c and perpendicular edges eu and ev, seen from o. */
-CLRT_INLINE SphericalRectangle spherical_rectangle(float3 c, float3 eu, float3 ev, float3 o) {
+/* The rectangle with corner c and perpendicular edges eu and ev of lengths lu and lv, unit
+ * normal n, seen from o. */
+CLRT_INLINE SphericalRectangle spherical_rectangle(float3 c, float3 eu, float lu, float3 ev, float lv,
+                                                   float3 n, float3 o) {
   SphericalRectangle r;
-  const float lu = length3(eu), lv = length3(ev);
   r.x = eu / lu;
   r.y = ev / lv;
-  r.z = cross3(r.x, r.y);
+  r.z = n;
   const float3 d = c - o;
   r.x0 = dot3(d, r.x);
   r.y0 = dot3(d, r.y);

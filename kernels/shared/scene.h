@@ -50,9 +50,10 @@ enum { CLRT_LIGHT_KINDS(CLRT_LIGHT_KIND_VALUE) CLRT_LIGHT_KIND_COUNT };
 typedef struct Light {
   f4 color;     /* rgb intensity of the whole light; w unused */
   f4 position;  /* point and spot: position; area: corner; w unused */
-  f4 direction; /* directional: unit direction of travel; spot: unit axis S; w unused */
-  f4 edge_u;    /* area: first edge; w unused */
-  f4 edge_v;    /* area: second edge; w unused */
+  f4 direction; /* directional: unit direction of travel; spot: unit axis S; w unused;
+                   area: unit normal, w 1 when its edges are perpendicular (a rectangle), else 0 */
+  f4 edge_u;    /* area: first edge; w its length */
+  f4 edge_v;    /* area: second edge; w its length */
   u32 kind;     /* CLRT_LIGHT_* */
   u32 samples;  /* shadow samples per shading point: 1, or the area light's sample count */
   u32 grid_u, grid_v;  /* area stratification: grid_u * grid_v == samples */

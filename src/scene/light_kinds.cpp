@@ -102,10 +102,18 @@ void spot_record(const LightSpec& light, dev::Light& d) {
   d.spot_exponent = static_cast<float>(light.exponent);
 }
 
+// Besides its edges, what path mode's solid-angle sampling needs of the light at every sample
+// (kernels/render/lights/area.h), worked out once in double: the edges' lengths, the unit
+// normal, and whether the edges are perpendicular within 1e-5 of their lengths' product.
 void area_record(const LightSpec& light, dev::Light& d) {
   d.kind = dev::CLRT_LIGHT_AREA;
   d.edge_u = f4_of(light.edge_u);
   d.edge_v = f4_of(light.edge_v);
+  const double lu = length(light.edge_u), lv = length(light.edge_v);
+  d.edge_u.w = static_cast<float>(lu);
+  d.edge_v.w = static_cast<float>(lv);
+  d.direction = f4_of(normalize(cross(light.edge_u, light.edge_v)));
+  d.direction.w = std::fabs(dot(light.edge_u, light.edge_v)) <= 1e-5 * lu * lv ? 1.0f : 0.0f;
   const Grid grid = stratification_grid(d.samples);
   d.grid_u = grid.u;
   d.grid_v = grid.v;

@@ -26,15 +26,16 @@
 
 /* Whether `light` is drawn by solid angle from o; if so, *r holds its spherical rectangle. */
 CLRT_INLINE bool area_light_by_solid_angle(__global const Light* light, float3 o, SphericalRectangle* r) {
-  if (!CLRT_AREA_BY_SOLID_ANGLE) return false;
-  const float3 u = xyz(light->edge_u), v = xyz(light->edge_v);
-  if (fabs(dot3(u, v)) > 1e-5f * length3(u) * length3(v)) return false;
+  /* The host worked out the edges' lengths, the unit normal and whether the light is a
+   * rectangle (src/scene/light_kinds.cpp): every sample would otherwise repeat them. */
+  if (!CLRT_AREA_BY_SOLID_ANGLE || light->direction.w == 0.0f) return false;
+  const float lu = light->edge_u.w, lv = light->edge_v.w;
+  const float3 c = xyz(light->position), n = xyz(light->direction);
   /* The solid angle is at most the area over the squared distance h to the light's plane: a
    * light that cannot reach the threshold costs no arctangent. */
-  const float3 n = cross3(u, v);
-  const float area = length3(n), h = fabs(dot3(xyz(light->position) - o, n)) / area;
-  if (area < CLRT_AREA_MIN_SOLID_ANGLE * h * h) return false;
-  *r = spherical_rectangle(xyz(light->position), u, v, o);
+  const float h = fabs(dot3(c - o, n));
+  if (lu * lv < CLRT_AREA_MIN_SOLID_ANGLE * h * h) return false;
+  *r = spherical_rectangle(c, xyz(light->edge_u), lu, xyz(light->edge_v), lv, n, o);
   /* A point in the light's plane (z0 = 0) would give infinite tangents and samples at o itself. */
   return r->z0 < 0.0f && r->solid_angle >= CLRT_AREA_MIN_SOLID_ANGLE;
 }
