@@ -19,7 +19,9 @@ struct V3 {
 };
 inline V3 operator*(double s, V3 v) { return {s * v.x, s * v.y, s * v.z}; }
 inline V3 operator+(V3 a, V3 b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
+inline V3 operator-(V3 a, V3 b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
 inline double dot(V3 a, V3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+inline V3 cross(V3 a, V3 b) { return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x}; }
 inline V3 unit(V3 v) { return (1.0 / std::sqrt(dot(v, v))) * v; }
 inline V3 of(const dev::f4& v) { return {v.x, v.y, v.z}; }
 
@@ -32,8 +34,7 @@ struct Frame {
 inline Frame frame_of(V3 n) {
   const V3 a = std::fabs(n.x) < 0.9 ? V3{1, 0, 0} : V3{0, 1, 0};
   const V3 t = unit(a + (-dot(a, n)) * n);
-  const V3 b{n.y * t.z - n.z * t.y, n.z * t.x - n.x * t.z, n.x * t.y - n.y * t.x};
-  return {n, t, b};
+  return {n, t, cross(n, t)};
 }
 
 constexpr int kZBins = 16, kPhiBins = 32;

@@ -54,8 +54,6 @@ struct Rectangle {
   V3 corner, u, v;
 };
 
-V3 minus(V3 a, V3 b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
-V3 cross(V3 a, V3 b) { return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x}; }
 double norm(V3 a) { return std::sqrt(dot(a, a)); }
 
 // The solid angle of triangle abc (vectors from the eye), Van Oosterom and Strackee.
@@ -67,7 +65,7 @@ double triangle_solid_angle(V3 a, V3 b, V3 c) {
 }
 
 double solid_angle(const Rectangle& r, V3 p) {
-  const V3 a = minus(r.corner, p), b = a + r.u, c = a + r.u + r.v, d = a + r.v;
+  const V3 a = r.corner - p, b = a + r.u, c = a + r.u + r.v, d = a + r.v;
   return triangle_solid_angle(a, b, c) + triangle_solid_angle(a, c, d);
 }
 
@@ -76,9 +74,9 @@ bool hits(const Rectangle& r, V3 p, V3 w) {
   const V3 n = cross(r.u, r.v);
   const double facing = dot(n, w);
   if (facing == 0) return false;
-  const double t = dot(n, minus(r.corner, p)) / facing;
+  const double t = dot(n, r.corner - p) / facing;
   if (t <= 0) return false;
-  const V3 q = minus(p + t * w, r.corner);
+  const V3 q = p + t * w - r.corner;
   const double a = dot(q, r.u) / dot(r.u, r.u), b = dot(q, r.v) / dot(r.v, r.v);
   return a >= 0 && a <= 1 && b >= 0 && b <= 1;
 }
@@ -131,7 +129,7 @@ TEST_CASE("path mode draws a near rectangular light uniformly in the solid angle
   const std::size_t count = sample_count();
   const Draws d = draw(kPathKernel, kRectangle, p, count);
   const V3 centre = kRectangle.corner + 0.5 * kRectangle.u + 0.5 * kRectangle.v;
-  const Frame frame = frame_of(unit(minus(centre, p)));
+  const Frame frame = frame_of(unit(centre - p));
   std::vector<double> observed(kZBins * kPhiBins, 0.0), expected(kZBins * kPhiBins, 0.0);
   int off_light = 0;
   for (std::size_t i = 0; i < count; ++i) {

@@ -51,11 +51,7 @@ bool apply_key(Key key, ViewState& state, Playback& playback, const ViewSources&
       break;
     case Key::ZoomIn: state.zoom = zoom_in(state.zoom); break;
     case Key::ZoomOut: state.zoom = zoom_out(state.zoom); break;
-    case Key::ZoomToFit: {
-      const int pictures = static_cast<int>(layout_view(state, sources).places.size());
-      state.zoom = fitting_zoom(sources.width, sources.height, pictures, state.screen);
-      break;
-    }
+    case Key::ZoomToFit: state.zoom = zoom_to_fit(state, sources); break;
     case Key::Quit: return false;
   }
   return true;

@@ -58,11 +58,14 @@ double zoom_out(double zoom) {
   return std::max(kMinZoom, 1 / (std::floor(1 / zoom + 1e-9) + 1));
 }
 
+double zoom_to_fit(const ViewState& state, const ViewSources& sources) {
+  const int pictures = static_cast<int>(pictures_shown(state, sources).size());
+  return fitting_zoom(sources.width, sources.height, pictures, state.screen);
+}
+
 void keep_on_screen(ViewState& state, const ViewSources& sources) {
-  const Layout layout = layout_view(state, sources);
-  if (fits(layout, state.screen)) return;
-  const int pictures = static_cast<int>(layout.places.size());
-  state.zoom = std::min(state.zoom, fitting_zoom(sources.width, sources.height, pictures, state.screen));
+  if (!fits(layout_view(state, sources), state.screen))
+    state.zoom = std::min(state.zoom, zoom_to_fit(state, sources));
 }
 
 Layout layout_view(const ViewState& state, const ViewSources& sources) {

@@ -61,6 +61,9 @@ double fitting_zoom(int image_width, int image_height, int pictures, ScreenArea 
 double zoom_in(double zoom);
 double zoom_out(double zoom);
 
+// fitting_zoom() for the pictures `state` shows, on its screen.
+double zoom_to_fit(const ViewState& state, const ViewSources& sources);
+
 // Lowers the zoom just enough that what `state` shows fits its screen (after a key showed more
 // pictures side by side); a view that fits is left as it is.
 void keep_on_screen(ViewState& state, const ViewSources& sources);

@@ -100,8 +100,7 @@ int run_window(ViewSources& sources, const ViewNames& names, ViewState state,
   try {
     window.emplace();
     state.screen = window->screen();
-    const int pictures = static_cast<int>(layout_view(state, sources).places.size());
-    state.zoom = zoom.value_or(fitting_zoom(sources.width, sources.height, pictures, state.screen));
+    state.zoom = zoom.value_or(zoom_to_fit(state, sources));
     const Layout first = layout_view(state, sources);
     window->open(first.width, first.height);
   } catch (const std::exception& error) {
