@@ -4,6 +4,7 @@
 
 #include <cstddef>
 #include <functional>
+#include <memory>
 #include <string>
 
 #include "device/device_select.hpp"
@@ -47,7 +48,10 @@ class DeviceContext {
   // table can be its buffer as it lies.
   bool works_in_host_memory() const;
   // A read-only buffer over `bytes` of host memory at `data` (page-aligned), without a copy.
-  compute::buffer share_host_memory(const void* data, std::size_t bytes, const std::string& what) const;
+  // `owner` keeps that memory alive until the runtime has deleted the buffer, which OpenCL lets
+  // it do after clReleaseMemObject returns (its destructor callback says when).
+  compute::buffer share_host_memory(const void* data, std::size_t bytes, const std::string& what,
+                                    std::shared_ptr<const void> owner) const;
 
  private:
   DeviceEntry entry_;
@@ -55,8 +59,11 @@ class DeviceContext {
   compute::command_queue queue_;
 
   DeviceContext(const DeviceEntry& entry, const compute::context& context);
-  // A buffer of `bytes` as the device gives it, its refusal worded for `what`.
-  compute::buffer create_buffer(std::size_t bytes, const std::string& what) const;
+  // A buffer of `bytes` as the device gives it (`host` as clCreateBuffer takes it with `flags`),
+  // its refusal worded for `what`.
+  compute::buffer create_buffer(std::size_t bytes, const std::string& what,
+                                cl_mem_flags flags = CL_MEM_READ_WRITE,
+                                const void* host = nullptr) const;
 };
 
 }  // namespace clrt

@@ -1,6 +1,7 @@
 // Typed device buffers to and from host tables.
 #pragma once
 
+#include <memory>
 #include <string>
 #include <type_traits>
 #include <vector>
@@ -17,14 +18,15 @@ Global<T> upload(DeviceContext& device, const std::vector<T, A>& table, const st
   return Global<T>(device.allocate_copy(table.data(), sizeof(T) * table.size(), what));
 }
 
-// A read-only buffer of `table`: on a device that works in host memory, `table` itself (it must
-// then outlive the buffer and stay unchanged; page alignment is what lets a driver use it in
-// place), elsewhere a copy.
+// A read-only buffer of `table`, which `owner` holds: on a device that works in host memory,
+// `table` itself (it must stay unchanged; `owner` is kept until the runtime deletes the buffer;
+// page alignment is what lets a driver use it in place), elsewhere a copy.
 template <class T>
 Global<const T> share(DeviceContext& device, const std::vector<T, PageAlignedAllocator<T>>& table,
-                      const std::string& what) {
+                      const std::string& what, const std::shared_ptr<const void>& owner) {
   if (table.empty() || !device.works_in_host_memory()) return upload(device, table, what);
-  return Global<const T>(device.share_host_memory(table.data(), sizeof(T) * table.size(), what));
+  return Global<const T>(
+      device.share_host_memory(table.data(), sizeof(T) * table.size(), what, owner));
 }
 
 // An uninitialised buffer of `count` Ts.

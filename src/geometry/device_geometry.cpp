@@ -4,16 +4,19 @@
 
 namespace clrt {
 
-DeviceGeometry::DeviceGeometry(DeviceContext& device, const GeometryData& geometry) {
-  args_.instance_count = static_cast<cl_uint>(geometry.instances.size());
-  args_.plane_count = geometry.plane_count;
-  args_.instances = share(device, geometry.instances, "instance table");
-  args_.meshes = share(device, geometry.meshes, "mesh table");
-  args_.triangle_normals = share(device, geometry.triangle_normals, "triangle normal table");
-  args_.triangle_materials = share(device, geometry.triangle_materials, "triangle material table");
+DeviceGeometry::DeviceGeometry(DeviceContext& device, std::shared_ptr<const GeometryData> tables)
+    : tables_(std::move(tables)) {
+  const GeometryData& g = *tables_;
+  args_.instance_count = static_cast<cl_uint>(g.instances.size());
+  args_.plane_count = g.plane_count;
+  args_.instances = share(device, g.instances, "instance table", tables_);
+  args_.meshes = share(device, g.meshes, "mesh table", tables_);
+  args_.triangle_normals = share(device, g.triangle_normals, "triangle normal table", tables_);
+  args_.triangle_materials = share(device, g.triangle_materials, "triangle material table", tables_);
   // The table is stored as nodes but addressed in 64-byte blocks (kernels/shared/bvh.h).
   static_assert(sizeof(dev::BvhNode) % sizeof(dev::BvhBlock) == 0);
-  args_.bvh = Global<const dev::BvhBlock>(share(device, geometry.nodes, "BVH node table").buffer);
+  args_.bvh =
+      Global<const dev::BvhBlock>(share(device, g.nodes, "BVH node table", tables_).buffer);
 }
 
 }  // namespace clrt

@@ -2,6 +2,8 @@
 // (kernels/geometry/scene_intersect.h) that every kernel tracing rays takes first.
 #pragma once
 
+#include <memory>
+
 #include "device/device_context.hpp"
 #include "device/kernel_args.hpp"
 #include "geometry/geometry_data.hpp"
@@ -34,13 +36,15 @@ struct SceneArgs {
 
 class DeviceGeometry {
  public:
-  // On a device that works in host memory the buffers are `geometry`'s own tables, which must
-  // then outlive this object unchanged.
-  DeviceGeometry(DeviceContext& device, const GeometryData& geometry);
+  // On a device that works in host memory the buffers are `tables`' own, kept alive until the
+  // runtime has deleted every buffer over them.
+  DeviceGeometry(DeviceContext& device, std::shared_ptr<const GeometryData> tables);
 
   const SceneArgs& args() const { return args_; }
+  const GeometryData& tables() const { return *tables_; }
 
  private:
+  std::shared_ptr<const GeometryData> tables_;
   SceneArgs args_;
 };
 

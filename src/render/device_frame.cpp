@@ -4,14 +4,15 @@
 
 namespace clrt {
 
-DeviceFrame::DeviceFrame(DeviceContext& device, const FrameData& frame, const GeometryData& tables)
+DeviceFrame::DeviceFrame(DeviceContext& device, const FrameData& frame,
+                         std::shared_ptr<const GeometryData> tables)
     : host(frame),
-      geometry(device, tables),
+      geometry(device, std::move(tables)),
       camera(upload(device, std::vector<dev::Camera>{frame.camera}, "camera")),
       params(upload(device, std::vector<dev::RenderParams>{frame.params}, "render parameters")),
       materials(upload(device, frame.materials, "material table")),
       lights(upload(device, frame.lights, "light table")),
-      bytes(tables.device_bytes() + sizeof(dev::Camera) + sizeof(dev::RenderParams) +
+      bytes(geometry.tables().device_bytes() + sizeof(dev::Camera) + sizeof(dev::RenderParams) +
             sizeof(dev::Material) * frame.materials.size() +
             sizeof(dev::Light) * frame.lights.size()) {}
 

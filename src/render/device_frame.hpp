@@ -9,7 +9,8 @@
 namespace clrt {
 
 struct DeviceFrame {
-  DeviceFrame(DeviceContext& device, const FrameData& frame, const GeometryData& tables);
+  DeviceFrame(DeviceContext& device, const FrameData& frame,
+              std::shared_ptr<const GeometryData> tables);
 
   // Replaces the camera for the launches queued after this.
   void set_camera(DeviceContext& device, const dev::Camera& camera);

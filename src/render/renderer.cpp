@@ -195,11 +195,14 @@ Renderer::Renderer(const Scene& scene, GeometryData geometry, const RenderSetup&
 
 Renderer::Renderer(const Scene& scene, GeometryData geometry, const RenderSetup& setup,
                    std::vector<PreparedDevice> prepared, Progress* progress)
-    : options_(setup.options), geometry_(std::move(geometry)), devices_(std::make_unique<Devices>()) {
+    : options_(setup.options), devices_(std::make_unique<Devices>()) {
   check_render_setup(setup);
-  setup_stats_.bvh_seconds = geometry_.build_seconds;
-  setup_stats_.geometry_bytes = geometry_.device_bytes();
-  setup_stats_.bvh_bytes = geometry_.nodes.size() * sizeof(dev::BvhNode);
+  // Shared by every device's frame: a device that reads the tables in place holds them until its
+  // runtime has deleted its buffers, which may be after this renderer is gone.
+  const auto tables = std::make_shared<const GeometryData>(std::move(geometry));
+  setup_stats_.bvh_seconds = tables->build_seconds;
+  setup_stats_.geometry_bytes = tables->device_bytes();
+  setup_stats_.bvh_bytes = tables->nodes.size() * sizeof(dev::BvhNode);
   const FrameData frame = make_frame(scene, options_);
 
   if (progress) progress->phase("building the kernels");
@@ -217,7 +220,7 @@ Renderer::Renderer(const Scene& scene, GeometryData geometry, const RenderSetup&
       w.context = std::make_unique<DeviceContext>(entry);
       w.program = build_renderer_program(*w.context, options_.mode);
     }
-    w.frame = std::make_unique<DeviceFrame>(*w.context, frame, geometry_);
+    w.frame = std::make_unique<DeviceFrame>(*w.context, frame, tables);
     w.timeline = std::make_unique<BusyTimeline>();
     IntegratorConfig config;
     config.capacity = tuning.wavefront;

@@ -74,7 +74,6 @@ class Renderer {
  private:
   struct Devices;
   const RenderOptions options_;
-  const GeometryData geometry_;
   std::unique_ptr<Devices> devices_;
   RenderStats setup_stats_;  // BVH and kernel build, reported once
   std::uint64_t rays_in_flight_ = 0;  // every lane's wavefront: what a round should keep busy

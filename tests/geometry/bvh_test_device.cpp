@@ -1,5 +1,7 @@
 #include "bvh_test_device.hpp"
 
+#include <memory>
+
 #include "cl_fixture.hpp"
 #include "geometry/bvh_query_args.hpp"
 
@@ -23,7 +25,7 @@ std::vector<dev::f4> pack(const std::vector<TestRay>& rays) {
 template <class Args, class Result>
 std::vector<Result> run_queries(const GeometryData& geometry, const std::vector<TestRay>& rays,
                                 Global<Result> Args::*results) {
-  const DeviceGeometry device_geometry(test::device(), geometry);
+  const DeviceGeometry device_geometry(test::device(), std::make_shared<const GeometryData>(geometry));
   Args args;
   args.scene = device_geometry.args();
   args.rays = test::upload(pack(rays), "rays");

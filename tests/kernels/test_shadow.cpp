@@ -5,6 +5,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <memory>
 #include <limits>
 #include <vector>
 
@@ -64,8 +65,8 @@ const std::vector<Probe> kProbes = {
 };
 
 std::vector<dev::f4> run_shadow(const Scene& scene, const std::vector<dev::ShadowRay>& shadows) {
-  const GeometryData geometry = build_geometry(scene);
-  const DeviceGeometry device_geometry(test::device(), geometry);
+  const DeviceGeometry device_geometry(test::device(),
+                                       std::make_shared<const GeometryData>(build_geometry(scene)));
   const auto count = static_cast<cl_uint>(shadows.size());
   ShadowArgs args;
   args.scene = device_geometry.args();

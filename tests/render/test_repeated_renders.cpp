@@ -53,7 +53,7 @@ TEST_CASE("renders that share one context and program keep their bits, render af
       setup.options.integrator = integrator;
       const FloatImage first = render_on(scene, setup, prepared.front());
       for (int i = 1; i < 30; ++i) {
-        INFO(name << ", render " << i + 1);
+        INFO(name << ", " << integrator << ", render " << i + 1);
         CHECK(same_bits(render_on(scene, setup, prepared.front()), first));
       }
     }

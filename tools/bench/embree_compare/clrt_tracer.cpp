@@ -24,8 +24,7 @@ dev::RenderParams tracing_params() {
 ClrtTracer::ClrtTracer(DeviceContext& device, const compute::program& program,
                        GeometryData geometry)
     : device_(device),
-      tables_(std::move(geometry)),
-      geometry_(device, tables_),
+      geometry_(device, std::make_shared<const GeometryData>(std::move(geometry))),
       params_(upload(device, std::vector<dev::RenderParams>{tracing_params()}, "render parameters")),
       intersect_(program),
       shadow_(program),

@@ -24,7 +24,7 @@ struct ClrtBatch {
 class ClrtTracer {
  public:
   // `program` is the renderer's program (renderer_program_source()) built on `device`. The tracer
-  // keeps `geometry`: a CPU device reads its tables where they lie, for as long as the tracer lives.
+  // keeps `geometry`: a CPU device reads its tables where they lie.
   ClrtTracer(DeviceContext& device, const compute::program& program, GeometryData geometry);
 
   // For scene_closest_hit of every ray (intersect.cl).
@@ -40,7 +40,6 @@ class ClrtTracer {
 
  private:
   DeviceContext& device_;
-  GeometryData tables_;
   DeviceGeometry geometry_;
   Global<const dev::RenderParams> params_;
   TypedKernel<IntersectArgs> intersect_;

@@ -82,9 +82,9 @@ RaySet random_rays(const Box& bounds, int count) {
   return rays;
 }
 
-Tracer::Tracer(DeviceContext& device, const GeometryData& geometry)
+Tracer::Tracer(DeviceContext& device, std::shared_ptr<const GeometryData> geometry)
     : device_(device),
-      geometry_(device, geometry),
+      geometry_(device, std::move(geometry)),
       program_(device.build(assemble_kernel_source(kSource, "bench_bvh.cl"))),
       closest_(program_),
       any_(program_),

@@ -1,6 +1,7 @@
 // Rays for the BVH benchmark (clrt-bench bvh) and their throughput through scene_closest_hit / scene_any_hit.
 #pragma once
 
+#include <memory>
 #include <vector>
 
 #include "device/device_context.hpp"
@@ -34,7 +35,7 @@ struct Throughput {
 
 class Tracer {
  public:
-  Tracer(DeviceContext& device, const GeometryData& geometry);
+  Tracer(DeviceContext& device, std::shared_ptr<const GeometryData> geometry);
 
   // The best of `runs` timed launches after one warm-up launch.
   Throughput closest_hit_mrays(const RaySet& rays, int runs);

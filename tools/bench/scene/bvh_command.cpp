@@ -37,11 +37,12 @@ double mib(std::size_t bytes) { return static_cast<double>(bytes) / (1024.0 * 10
 
 void run_case(DeviceContext& device, const Case& c, int ray_count, int runs) {
   const Scene scene = c.make();
-  const GeometryData geometry = build_geometry(scene);
+  const auto tables = std::make_shared<const GeometryData>(build_geometry(scene));
+  const GeometryData& geometry = *tables;
   const Box bounds = scene_bounds(geometry);
   const RaySet camera = camera_rays(c.own_camera ? scene.camera : camera_for(bounds), ray_count);
   const RaySet random = random_rays(bounds, ray_count);
-  Tracer tracer(device, geometry);
+  Tracer tracer(device, tables);
   const std::size_t triangles = geometry.triangle_count();
   // A build rate only where the triangles are the build's work: one mesh, placed once.
   const bool one_mesh = triangles > 0 && geometry.instances.size() == 1;
