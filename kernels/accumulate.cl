@@ -1,7 +1,7 @@
 /* Deterministic accumulation without float atomics, in the order both integrators follow
  * (the megakernel in megakernel.cl adds in exactly this order):
- *   1. a ray's colour: its ambient term (or its miss colour), then + each unblocked light
- *      sample's term in light-sample order (a blocked sample adds 0);
+ *   1. a ray's colour: its ambient term + its surface's emission (or its miss colour), then
+ *      + each unblocked light sample's term in light-sample order (a blocked sample adds 0);
  *   2. a sample's level d: the colours of its rays of depth d, left to right in the ray tree
  *      (reflection before refraction at every branch), added from the first;
  *   3. a sample's colour: 0 + level 0 + level 1 + ... (levels without rays add nothing);

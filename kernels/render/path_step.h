@@ -85,6 +85,8 @@ CLRT_INLINE float3 path_step(const Ray* ray, const Hit* hit, __global const Mate
   const bool missed = hit->instance == CLRT_NO_HIT;
   float3 c = crossed_emission(ray, lights, params, missed ? INFINITY : hit->geometric_normal.w);
   if (missed) return c + miss_colour(ray, params);
+  /* No light sample aims at glowing surfaces, so a path that hits one takes all of its light. */
+  c += emitted(ray, hit, materials);
   /* Past the depth cap a ray only gathers the light it meets: the cap vertex still draws a
    * direction, so that its next-event estimates' MIS weights have their other strategy, and the
    * light its mirror and glass lobes bring (which no shadow ray samples) is not lost. */

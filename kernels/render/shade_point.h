@@ -2,6 +2,7 @@
  * megakernel so that both compute every term with the same instructions:
  *   shade_point    the surface at a hit, seen from the ray;
  *   miss_colour    what a ray that hits nothing contributes;
+ *   emitted        what a glowing surface sends back along the ray;
  *   offset_origin  where a secondary or shadow ray leaves the surface;
  *   shadow_ray_to  the shadow ray that decides whether a light sample's term counts;
  *   child_ray      a ray that continues from the hit. */
@@ -41,6 +42,15 @@ CLRT_INLINE ShadePoint shade_point(const Ray* ray, const Hit* hit, __global cons
 
 CLRT_INLINE float3 miss_colour(const Ray* ray, __global const RenderParams* params) {
   return vload3(0, ray->weight) * xyz(params->background);
+}
+
+/* The radiance the hit surface emits towards the ray's origin, times the ray's weight: its
+ * material's emission on the front side (the side its normal points to), nothing behind. */
+CLRT_INLINE float3 emitted(const Ray* ray, const Hit* hit, __global const Material* materials) {
+  __global const Material* m = &materials[hit->material];
+  if (m->emission.w == 0.0f || dot3(xyz(hit->geometric_normal), vload3(0, ray->dir)) >= 0.0f)
+    return (float3)(0.0f);
+  return vload3(0, ray->weight) * xyz(m->emission);
 }
 
 /* The point a secondary or shadow ray leaves from: p moved by epsilon along the geometric

@@ -3,7 +3,7 @@
  * (render/ray_sink.h), which queues them (wavefront) or follows them at once (megakernel). The
  * children are handed over refraction first, so that a depth-first stack pops the reflection
  * first: the tree order accumulate.cl sums in. The step returns the ray's own colour: its miss
- * colour, or its ambient term plus (cast mode) every light's term or (trace mode) what the sink
+ * colour, or its ambient term and its surface's emission plus (cast mode) every light's term or (trace mode) what the sink
  * added. */
 #ifndef CLRT_RENDER_WHITTED_STEP_H
 #define CLRT_RENDER_WHITTED_STEP_H
@@ -77,7 +77,7 @@ CLRT_INLINE float3 whitted_step(const Ray* ray, const Hit* hit, __global const M
   vertex.sp = shade_point(ray, hit, materials);
   vertex.material = &materials[vertex.sp.material];
   vertex.path = ray->path;
-  float3 c = ambient_colour(&vertex.sp, vertex.material, params);
+  float3 c = ambient_colour(&vertex.sp, vertex.material, params) + emitted(ray, hit, materials);
   gather_light_samples(&vertex, &vertex.sp, lights, params, tracing, owner, sink, &c);
   if (!tracing || ray->depth >= params->max_depth) return c;
   Ray reflected, refracted;

@@ -29,11 +29,12 @@ typedef struct Camera {
 CLRT_CHECK_SIZE(Camera, 128);
 
 typedef struct Material {
-  f4 color; /* rgb surface colour; w unused */
+  f4 color;    /* rgb surface colour; w unused */
   float ka, kd, ks, shininess;
   float kr, kt, ior, pad;
+  f4 emission; /* rgb radiance leaving the front side (the normal's); w 1 if any channel is not 0 */
 } Material;
-CLRT_CHECK_SIZE(Material, 48);
+CLRT_CHECK_SIZE(Material, 64);
 
 /* The light kinds the device knows, one row X(KIND, name) for each device file
  * kernels/render/lights/name.h, whose name_light_* functions sample it, say whether it reads

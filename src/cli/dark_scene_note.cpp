@@ -9,6 +9,14 @@ namespace clrt {
 std::optional<std::string> dark_scene_note(const Scene& scene, RenderMode mode) {
   const Vec3& sky = scene.background;
   const bool dim = std::max({sky.x, sky.y, sky.z}) <= kDimBackground;
+  // Glowing surfaces light a path-mode scene; in the Whitted modes they show but light nothing.
+  const bool glows = std::any_of(scene.materials.begin(), scene.materials.end(), [](const MaterialSpec& m) {
+    return m.emission.x > 0 || m.emission.y > 0 || m.emission.z > 0;
+  });
+  if (glows && mode == RenderMode::Path) return std::nullopt;
+  if (glows && scene.lights.empty())
+    return std::string("the scene has no light, so only its glowing surfaces show; they light the "
+                       "other objects in --mode path (docs/scene-format.md#materials)");
   if (scene.lights.empty() && !scene.instances.empty() && (mode != RenderMode::Path || dim))
     return std::string("the scene has no light, so its objects render black") +
            (mode == RenderMode::Path ? " under its dim background" : "") +

@@ -60,6 +60,8 @@ std::vector<dev::Material> make_materials(const Scene& scene) {
   for (const MaterialSpec& m : scene.materials) {
     dev::Material d{};
     d.color = f4_of(m.color);
+    d.emission = f4_of(m.emission);
+    d.emission.w = m.emission.x != 0 || m.emission.y != 0 || m.emission.z != 0 ? 1.0f : 0.0f;
     d.ka = static_cast<float>(m.ka);
     d.kd = static_cast<float>(m.kd);
     d.ks = static_cast<float>(m.ks);

@@ -1,4 +1,4 @@
-// material / surface: appends a material and makes it the current one.
+// material / surface: appends a material and makes it the current one; emission: one that glows.
 #include "scene/command_table.hpp"
 #include "scene/limits.hpp"
 
@@ -29,11 +29,24 @@ void material(LoaderState& s, const CommandArgs& a) {
   s.material = static_cast<int>(s.scene.materials.size()) - 1;
 }
 
+// emission R G B: the objects that follow glow with radiance (R, G, B), in the current material
+// otherwise. A copy of that material takes the emission, so the objects already made with it
+// stay as they were.
+void emission(LoaderState& s, const CommandArgs& a) {
+  a.require_count({3});
+  MaterialSpec m = s.scene.materials.at(static_cast<std::size_t>(s.material));
+  m.emission = {a.number_in(0, 0, limits::kMaxNumber, "R"), a.number_in(1, 0, limits::kMaxNumber, "G"),
+                a.number_in(2, 0, limits::kMaxNumber, "B")};
+  s.scene.materials.push_back(m);
+  s.material = static_cast<int>(s.scene.materials.size()) - 1;
+}
+
 }  // namespace
 
 void add_material_commands(CommandTable& table) {
   table["material"] = material;
   table["surface"] = material;
+  table["emission"] = emission;
 }
 
 }  // namespace clrt

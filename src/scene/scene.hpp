@@ -29,6 +29,7 @@ struct MaterialSpec {
   double ka = 0.2, kd = 0.8, ks = 0, shininess = 1;
   double kr = 0, kt = 0;
   double ior = 1;  // a value <= 0 in the file is stored as 1
+  Vec3 emission{0, 0, 0};  // radiance leaving the front side (`emission`)
 };
 
 // A light as its command gives it. Its kind is the name of its row of light_kind_table()

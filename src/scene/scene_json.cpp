@@ -41,7 +41,8 @@ Json camera(const Scene& scene) {
 
 Json material(const MaterialSpec& m) {
   return {{"color", json_of(m.color)}, {"ka", m.ka}, {"kd", m.kd}, {"ks", m.ks},
-          {"shininess", m.shininess}, {"kr", m.kr}, {"kt", m.kt}, {"ior", m.ior}};
+          {"shininess", m.shininess}, {"kr", m.kr}, {"kt", m.kt}, {"ior", m.ior},
+          {"emission", json_of(m.emission)}};
 }
 
 Json light(const LightSpec& l) {

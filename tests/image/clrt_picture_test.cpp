@@ -179,4 +179,8 @@ TEST_CASE("a scene with objects and no light gets a note that they render black"
   CHECK_THAT(clrt_run(dir, lit + small).err, !Contains("note:"));
   const std::string empty = quoted(dir.write("empty.ray", "background 0 0 1\n"));
   CHECK_THAT(clrt_run(dir, empty + small).err, !Contains("note:"));
+  // Glowing surfaces light a path-mode scene; the Whitted modes only show them.
+  const std::string glow = quoted(dir.write("glow.ray", "emission 1 1 1\nsphere\n"));
+  CHECK_THAT(clrt_run(dir, glow + small + " --mode path").err, !Contains("note:"));
+  CHECK_THAT(clrt_run(dir, glow + small).err, Contains("only its glowing surfaces show"));
 }

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <initializer_list>
 #include <limits>
 #include <string>
 #include <vector>
@@ -158,6 +159,25 @@ double mean_of(const FloatImage& image, int channel) {
   return sum / static_cast<double>(image.rgb.size() / 3);
 }
 
+// Renders `path` in path mode at 4096 samples per pixel with each integrator and each maximum
+// depth of `depths`: the red mean must be `expected` within the relative `tolerance`.
+void check_mean_at_depths(const std::string& path, std::initializer_list<int> depths,
+                          double expected, double tolerance) {
+  for (const int depth : depths) {
+    for (const std::string& integrator : integrator_names()) {
+      const FloatImage image = render_file(path, [&](RenderOptions& o) {
+        o.mode = RenderMode::Path;
+        o.samples = 4096;
+        o.max_depth = depth;
+        o.integrator = integrator;
+      });
+      const double mean = mean_of(image, 0);
+      INFO("max depth " << depth << ", " << integrator << ": " << mean << " against " << expected);
+      CHECK(mean == Approx(expected).epsilon(tolerance));
+    }
+  }
+}
+
 }  // namespace
 
 TEST_CASE("a plane under a near area light with one shadow ray matches its closed form at every depth",
@@ -173,20 +193,21 @@ TEST_CASE("a plane under a near area light with one shadow ray matches its close
   std::ofstream(path) << "eye 0 0.25 0\nlookat 0 0 0\nup 0 0 -1\nfov 2\nresolution 4 4\n"
                          "background 0 0 0\nmaterial 1 1 1 0 0.5 0 1 0 0\nplane\n"
                          "light 1 1 1 area -1 0.5 -1 2 0 0 0 0 2 1\n";
-  const double expected = 0.5 * form_factor_below_centre(1, 1, 0.5);
-  for (const int depth : {0, 1, 2, 5}) {
-    for (const std::string& integrator : integrator_names()) {
-      const FloatImage image = render_file(path, [&](RenderOptions& o) {
-        o.mode = RenderMode::Path;
-        o.samples = 4096;
-        o.max_depth = depth;
-        o.integrator = integrator;
-      });
-      const double mean = mean_of(image, 0);
-      INFO("max depth " << depth << ": " << mean << " against " << expected);
-      CHECK(mean == Approx(expected).epsilon(0.01));
-    }
-  }
+  check_mean_at_depths(path, {0, 1, 2, 5}, 0.5 * form_factor_below_centre(1, 1, 0.5), 0.01);
+}
+
+TEST_CASE("a floor under a glowing sphere receives pi L sin^2(alpha) at every depth", "[path]") {
+  // A Lambertian floor of albedo 0.5 straight below a sphere of radius 1 centred 2 above it,
+  // glowing with radiance 4, seen from between them through a narrow field: the sphere fills a
+  // cone of half-angle alpha with sin(alpha) = 1/2, so the floor receives pi L sin^2(alpha)
+  // and sends back 0.5 L sin^2(alpha) = 0.5. The sphere is black, so no light comes back from
+  // it, and no shadow ray aims at it: every path that bounces into it brings the light.
+  const ScratchDir dir;
+  const std::string path = dir.file("glow.ray");
+  std::ofstream(path) << "eye 0 0.25 0\nlookat 0 0 0\nup 0 0 -1\nfov 2\nresolution 4 4\n"
+                         "background 0 0 0\nmaterial 1 1 1 0 0.5 0 1 0 0\nplane\n"
+                         "material 0 0 0 0 0 0 1 0 0\nemission 4 4 4\nsphere 0 2 0 1\n";
+  check_mean_at_depths(path, {0, 1, 5}, 0.5, 0.03);  // 4 standard errors of 65536 paths
 }
 
 TEST_CASE("light that reaches the last vertex through a mirror counts", "[path]") {

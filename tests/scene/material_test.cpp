@@ -88,3 +88,31 @@ TEST_CASE("material argument counts and non-numbers", "[scene][material][errors]
   require_error("material 1 1 1 1 .2 .8 0 1 0 0 1 9\n", 1, 34, "found 12");
   require_error("material 1 1 1 x .2 .8 0 1 0 0 1\n", 1, 16, "expected a number");
 }
+
+TEST_CASE("emission gives the objects after it a glowing copy of the current material",
+          "[scene][material]") {
+  const clrt::Scene s = load_text(
+      "material 1 0 0 .2 .8 0 1 0 0\nsphere\nemission 1 2 3\ncube\nemission 0.5 0 0\nplane\n"
+      "material 0 1 0 .2 .8 0 1 0 0\ncone\n");
+  REQUIRE(s.materials.size() == 5);
+  REQUIRE(s.instances.size() == 4);
+  CHECK(s.instances[0].material == 1);
+  CHECK(s.materials[1].emission == Vec3{0, 0, 0});
+  CHECK(s.instances[1].material == 2);
+  check_material(s.materials[2], {1, 0, 0}, 0.2, 0.8, 0, 1, 0, 0, 1);
+  CHECK(s.materials[2].emission == Vec3{1, 2, 3});
+  CHECK(s.instances[2].material == 3);
+  CHECK(s.materials[3].emission == Vec3{0.5, 0, 0});
+  CHECK(s.instances[3].material == 4);
+  CHECK(s.materials[4].emission == Vec3{0, 0, 0});  // the next material starts without it
+  // Before any material, the default one glows.
+  const clrt::Scene d = load_text("emission 1 1 1\nsphere\n");
+  check_material(d.materials.at(1), {1, 1, 1}, 0.2, 0.8, 0, 1, 0, 0, 1);
+  CHECK(d.materials[1].emission == Vec3{1, 1, 1});
+}
+
+TEST_CASE("emission takes three numbers, none negative", "[scene][material][errors]") {
+  require_error("emission 1 1\n", 1, 13, "takes 3 arguments, found 2");
+  require_error("emission 1 -1 1\n", 1, 12, "G must be in [0, ");
+  require_error("emission 1 1 x\n", 1, 14, "expected a number");
+}
