@@ -49,8 +49,8 @@ CLRT_INLINE void hit_record_resolve(const HitRecord* r, float3 o, float3 d, __gl
                                __global const TriangleNormals* triangle_normals,
                                __global const u32* triangle_materials, Hit* hit) {
   hit->instance = r->instance;
-  hit->pad = 0u;
   if (r->instance == CLRT_NO_HIT) {
+    hit->glow = CLRT_NO_GLOW;
     hit->primitive = 0u;
     hit->material = 0u;
     hit->geometric_normal = (float4)(0.0f, 0.0f, 0.0f, r->t);
@@ -58,6 +58,7 @@ CLRT_INLINE void hit_record_resolve(const HitRecord* r, float3 o, float3 d, __gl
     return;
   }
   __global const Instance* inst = instances + r->instance;
+  hit->glow = inst->glow;
   float3 geometric, shading;
   if (inst->shape != CLRT_SHAPE_MESH) {
     const float3 object_normal = inst->shape == CLRT_SHAPE_SPHERE

@@ -54,6 +54,20 @@ CLRT_INLINE float3 crossed_emission(const Ray* ray, __global const Light* lights
   return e;
 }
 
+/* The multiple importance sampling weight of the glow a path met on a surface that the glow light
+ * samples as well, against the density of that light's sample in the path's direction; a camera
+ * ray, a delta lobe's ray (pdf 0) or a surface the light does not sample keeps all of it. */
+CLRT_INLINE float glow_hit_weight(const Ray* ray, const Hit* hit, __global const Material* materials,
+                                  __global const Light* lights, __global const RenderParams* params) {
+  if (!(ray->pdf > 0.0f) || hit->glow == CLRT_NO_GLOW || params->glow_light == CLRT_NO_GLOW)
+    return 1.0f;
+  __global const Light* light = &lights[params->glow_light];
+  const float cos_light = fabs(dot3(xyz(hit->geometric_normal), vload3(0, ray->dir)));
+  const float density = glow_light_density(light, hit->glow, vload3(0, ray->origin), hit->geometric_normal.w,
+                                           cos_light, xyz(materials[hit->material].emission));
+  return power_heuristic(1.0f, ray->pdf, (float)light->samples * density);
+}
+
 struct TransportVertex {
   ShadePoint sp;
   PathLobes lobes;
@@ -85,8 +99,7 @@ CLRT_INLINE float3 path_step(const Ray* ray, const Hit* hit, __global const Mate
   const bool missed = hit->instance == CLRT_NO_HIT;
   float3 c = crossed_emission(ray, lights, params, missed ? INFINITY : hit->geometric_normal.w);
   if (missed) return c + miss_colour(ray, params);
-  /* No light sample aims at glowing surfaces, so a path that hits one takes all of its light. */
-  c += emitted(ray, hit, materials);
+  c += emitted(ray, hit, materials) * glow_hit_weight(ray, hit, materials, lights, params);
   /* Past the depth cap a ray only gathers the light it meets: the cap vertex still draws a
    * direction, so that its next-event estimates' MIS weights have their other strategy, and the
    * light its mirror and glass lobes bring (which no shadow ray samples) is not lost. */

@@ -54,7 +54,7 @@ typedef struct Hit {
   u32 instance;        /* CLRT_NO_HIT on a miss */
   u32 primitive;       /* triangle index for meshes, 0 for canonical shapes */
   u32 material;        /* index into the material table, resolved by the intersector */
-  u32 pad;
+  u32 glow;            /* its instance's Instance.glow */
 } Hit;
 CLRT_CHECK_SIZE(Hit, 48);
 

@@ -47,9 +47,12 @@ CLRT_CHECK_SIZE(Material, 64);
 enum { CLRT_LIGHT_KINDS(CLRT_LIGHT_KIND_VALUE) CLRT_LIGHT_KIND_COUNT };
 #undef CLRT_LIGHT_KIND_VALUE
 
-/* Non-ambient lights only: ambient lights are summed into RenderParams.ambient. */
+/* Non-ambient lights only: ambient lights are summed into RenderParams.ambient. In path mode the
+ * last record may be the glow light (CLRT_LIGHT_GLOW, kernels/render/lights/glow.h), made from
+ * the scene's glowing geometry rather than a `light` command; its grid_u rows of the emitter
+ * table (Emitter) follow it in the same buffer. */
 typedef struct Light {
-  f4 color;     /* rgb intensity of the whole light; w unused */
+  f4 color;     /* rgb intensity of the whole light; glow: w the emitter table's total power */
   f4 position;  /* point and spot: position; area: corner; w unused */
   f4 direction; /* directional: unit direction of travel; spot: unit axis S; w unused;
                    area: unit normal, w 1 when its edges are perpendicular (a rectangle), else 0 */
@@ -64,6 +67,24 @@ typedef struct Light {
   u32 pad;
 } Light;
 CLRT_CHECK_SIZE(Light, 112);
+
+/* One glowing triangle or sphere in world space: a row of the table from which path mode draws
+ * the glow light's samples, a row in proportion to its power (the luminance of its emission times
+ * its area). */
+typedef struct Emitter {
+  f4 origin;   /* triangle: first corner; sphere: centre; w: the table's cumulative share of the
+                  power through this row (the last row's is 1) */
+  f4 edge1;    /* triangle: second corner - first; w: sphere: radius, triangle: 0 */
+  f4 edge2;    /* triangle: third corner - first, cross(edge1, edge2) pointing to its glowing
+                  side; w unused */
+  f4 radiance; /* rgb emitted from the front; w unused */
+} Emitter;
+CLRT_CHECK_SIZE(Emitter, 64);
+
+/* Instance.glow and Hit.glow: the surface is not in the emitter table; or it is one of the
+ * table's triangles (a row the hit does not name). Any other value is a sphere's row. */
+#define CLRT_NO_GLOW 0xffffffffu
+#define CLRT_GLOW_TRIANGLES 0xfffffffeu
 
 #define CLRT_SHAPE_SPHERE 0u
 #define CLRT_SHAPE_PLANE 1u
@@ -85,7 +106,8 @@ typedef struct Instance {
   u32 shape;             /* CLRT_SHAPE_* */
   u32 material;          /* material index, or CLRT_MATERIAL_PER_TRIANGLE */
   u32 mesh;              /* CLRT_SHAPE_MESH: index into the mesh table */
-  u32 pad0;
+  u32 glow;              /* its place in the emitter table (CLRT_NO_GLOW, CLRT_GLOW_TRIANGLES
+                            or its sphere's row) */
   float cone_r0, cone_r1; /* CLRT_SHAPE_CONE: radius at y = -1 and at y = +1 */
   float pad1, pad2;
 } Instance;
@@ -131,7 +153,8 @@ typedef struct RenderParams {
   float max_sample_value; /* a camera sample whose largest channel exceeds it is scaled down to it
                            * before a pixel's samples are summed (--max-sample-value); INFINITY:
                            * never */
-  u32 pad[2];
+  u32 glow_light;         /* the glow light's index in the light table, or CLRT_NO_GLOW */
+  u32 pad;
 } RenderParams;
 CLRT_CHECK_SIZE(RenderParams, 64);
 

@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "geometry/bvh_scene.hpp"
+#include "geometry/emitter_table.hpp"
 #include "geometry/instance_table.hpp"
 #include "geometry/mesh_table.hpp"
 
@@ -42,6 +43,7 @@ GeometryData build_tables(const Scene& scene, const std::function<void(std::size
     triangles += source.size();
     if (triangles > UINT32_MAX) throw std::length_error("the scene has more than 2^32 - 1 triangles");
   }
+  build_emitter_table(scene, sources, out);
   build_scene_bvh(scene, sources, out, rows_written);
   return out;
 }

@@ -24,6 +24,10 @@ struct GeometryData {
                                                        // mesh's order (meshes take their
                                                        // instance's material)
   BvhTable nodes;                     // the top level's root is node 0
+  // The glowing surfaces path mode samples (geometry/emitter_table.hpp), which the frame's light
+  // table carries after the glow light's record; their total power, luminance times area.
+  std::vector<dev::Emitter> emitters;
+  double emitter_power = 0;
   double build_seconds = 0;                            // BVH build time, for --stats
 
   // Host-only maps back to the scene (the BVH build reorders instances and triangles):

@@ -15,14 +15,11 @@ struct Extent {
   }
 };
 
-// Column j of M's linear part.
-Vec3 column(const Mat4& m, int j) { return {m.m[0][j], m.m[1][j], m.m[2][j]}; }
-
 // The disk x^2 + z^2 <= r^2 at height y, under M: the ellipse spanned by r times M's x and z
 // columns, whose reach along world axis i is r * sqrt(m_i0^2 + m_i2^2).
 Extent disk(const Mat4& m, double y, double r) {
   const Vec3 c = m.transform_point({0, y, 0});
-  const Vec3 ex = column(m, 0), ez = column(m, 2);
+  const Vec3 ex = m.column(0), ez = m.column(2);
   const Vec3 half{r * std::hypot(ex.x, ez.x), r * std::hypot(ex.y, ez.y), r * std::hypot(ex.z, ez.z)};
   return {c - half, c + half};
 }
@@ -72,7 +69,7 @@ std::optional<WorldSphere> world_sphere(const InstanceSpec& spec) {
   if (spec.shape != ShapeKind::Sphere) return std::nullopt;
   const Mat4& m = spec.transform;
   // A similarity's columns are orthogonal and of one length, the scale.
-  const Vec3 c[3] = {column(m, 0), column(m, 1), column(m, 2)};
+  const Vec3 c[3] = {m.column(0), m.column(1), m.column(2)};
   const double scale2 = (dot(c[0], c[0]) + dot(c[1], c[1]) + dot(c[2], c[2])) / 3;
   const double tolerance = 1e-6 * scale2;
   for (int i = 0; i < 3; ++i)

@@ -18,6 +18,10 @@ struct Mat4 {
   Vec3 transform_point(const Vec3& p) const;
   Vec3 transform_vector(const Vec3& v) const;
   Mat4 transposed() const;
+  // Column j of the linear part: where the object's unit axis j goes.
+  Vec3 column(int j) const { return {m[0][j], m[1][j], m[2][j]}; }
+  // The linear part's determinant: negative when M turns space inside out.
+  double determinant() const { return dot(column(0), cross(column(1), column(2))); }
   // Inverse of an affine matrix (last row 0 0 0 1); the caller guarantees it is invertible.
   Mat4 inverse() const;
 };

@@ -1,5 +1,7 @@
 #include "render/device_frame.hpp"
 
+#include <vector>
+
 #include "device/transfer.hpp"
 
 namespace clrt {
@@ -11,10 +13,12 @@ DeviceFrame::DeviceFrame(DeviceContext& device, const FrameData& frame,
       camera(upload(device, std::vector<dev::Camera>{frame.camera}, "camera")),
       params(upload(device, std::vector<dev::RenderParams>{frame.params}, "render parameters")),
       materials(upload(device, frame.materials, "material table")),
-      lights(upload(device, frame.lights, "light table")),
       bytes(geometry.tables().device_bytes() + sizeof(dev::Camera) + sizeof(dev::RenderParams) +
-            sizeof(dev::Material) * frame.materials.size() +
-            sizeof(dev::Light) * frame.lights.size()) {}
+            sizeof(dev::Material) * frame.materials.size()) {
+  const std::vector<unsigned char> table = light_table_bytes(frame, geometry.tables());
+  lights = Global<const dev::Light>(device.allocate_copy(table.data(), table.size(), "light table"));
+  bytes += table.size();
+}
 
 void DeviceFrame::set_camera(DeviceContext& device, const dev::Camera& new_camera) {
   host.camera = new_camera;

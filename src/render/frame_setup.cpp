@@ -1,6 +1,7 @@
 #include "render/frame_setup.hpp"
 
 #include <cmath>
+#include <cstring>
 
 #include "math/device_vector.hpp"
 #include "scene/light_kinds.hpp"
@@ -119,7 +120,36 @@ dev::RenderParams make_params(const Scene& scene, const RenderOptions& options) 
   p.mode = device_mode(options.mode);
   p.epsilon = kEpsilon;
   p.max_sample_value = options.max_sample_value;
+  p.glow_light = CLRT_NO_GLOW;  // make_frame adds it
   return p;
+}
+
+FrameData make_frame(const Scene& scene, const GeometryData& geometry, const RenderOptions& options) {
+  FrameData frame{make_camera(scene, options), make_params(scene, options), make_materials(scene),
+                  make_lights(scene)};
+  if (options.mode != RenderMode::Path || geometry.emitters.empty()) return frame;
+  dev::Light glow{};
+  glow.kind = dev::CLRT_LIGHT_GLOW;
+  glow.color.w = static_cast<float>(geometry.emitter_power);
+  glow.samples = 1;
+  glow.grid_u = static_cast<dev::u32>(geometry.emitters.size());
+  glow.grid_v = 1;
+  glow.first_sample = frame.params.shadow_samples;
+  frame.params.glow_light = static_cast<dev::u32>(frame.lights.size());
+  frame.lights.push_back(glow);
+  ++frame.params.light_count;
+  frame.params.shadow_samples += glow.samples;
+  return frame;
+}
+
+std::vector<unsigned char> light_table_bytes(const FrameData& frame, const GeometryData& geometry) {
+  const std::size_t light_bytes = sizeof(dev::Light) * frame.lights.size();
+  const std::size_t row_bytes =
+      frame.params.glow_light == CLRT_NO_GLOW ? 0 : sizeof(dev::Emitter) * geometry.emitters.size();
+  std::vector<unsigned char> bytes(light_bytes + row_bytes);
+  if (light_bytes) std::memcpy(bytes.data(), frame.lights.data(), light_bytes);
+  if (row_bytes) std::memcpy(bytes.data() + light_bytes, geometry.emitters.data(), row_bytes);
+  return bytes;
 }
 
 }  // namespace clrt

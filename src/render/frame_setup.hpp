@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "math/stratification_grid.hpp"
+#include "geometry/geometry_data.hpp"
 #include "render/render_options.hpp"
 #include "scene/scene.hpp"
 #include "shared/scene.h"
@@ -36,9 +37,13 @@ struct FrameData {
   std::vector<dev::Light> lights;
 };
 
-inline FrameData make_frame(const Scene& scene, const RenderOptions& options) {
-  return {make_camera(scene, options), make_params(scene, options), make_materials(scene),
-          make_lights(scene)};
-}
+// In path mode with glowing surfaces in `geometry`'s emitter table, the light table ends with
+// the glow light's record (its rows follow it on the device: DeviceFrame).
+FrameData make_frame(const Scene& scene, const GeometryData& geometry, const RenderOptions& options);
+
+// The light table as the device reads it: the frame's light records, then `geometry`'s emitter
+// rows when the last record is the glow light's (kernels/render/lights/glow.h reads them right
+// after it).
+std::vector<unsigned char> light_table_bytes(const FrameData& frame, const GeometryData& geometry);
 
 }  // namespace clrt

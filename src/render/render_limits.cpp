@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "geometry/emitter_table.hpp"
 #include "render/integrator.hpp"
 #include "render/render_tuning.hpp"
 #include "render/wave_sizes.hpp"
@@ -51,9 +52,11 @@ void check_request(const Scene& scene, const RenderOptions& o) {
                   std::to_string(limits::kMaxShadowSamples));
 }
 
-std::uint64_t shadow_samples_per_point(const Scene& scene) {
+// As make_frame counts them: path mode's glow light takes one.
+std::uint64_t shadow_samples_per_point(const Scene& scene, const RenderOptions& o) {
   std::uint64_t sum = 0;
   for (const LightSpec& light : scene.lights) sum += static_cast<std::uint64_t>(shadow_samples(light));
+  if (o.mode == RenderMode::Path && glow_is_sampled(scene)) ++sum;
   return sum;
 }
 
@@ -65,7 +68,7 @@ std::uint64_t pixel_count(const RenderOptions& o) {
 std::uint64_t check_device(const Scene& scene, const RenderOptions& o, const DeviceBudget& device,
                            std::uint64_t geometry_bytes) {
   const WaveSizes sizes = wave_sizes(device.wavefront, static_cast<std::uint64_t>(o.samples),
-                                     shadow_samples_per_point(scene));
+                                     shadow_samples_per_point(scene, o));
   std::uint64_t queues = 0;
   for (const DeviceBuffer& buffer : integrator_entry(o.integrator).buffers(sizes)) {
     if (buffer.bytes > device.max_allocation)

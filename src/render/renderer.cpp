@@ -203,7 +203,7 @@ Renderer::Renderer(const Scene& scene, GeometryData geometry, const RenderSetup&
   setup_stats_.bvh_seconds = tables->build_seconds;
   setup_stats_.geometry_bytes = tables->device_bytes();
   setup_stats_.bvh_bytes = tables->nodes.size() * sizeof(dev::BvhNode);
-  const FrameData frame = make_frame(scene, options_);
+  const FrameData frame = make_frame(scene, *tables, options_);
 
   if (progress) progress->phase("building the kernels");
   const auto start = Clock::now();

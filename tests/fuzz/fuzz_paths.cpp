@@ -17,7 +17,7 @@ Outcome ray_scene(const std::string& path) {
     return Outcome::Rejected;
   }
   const GeometryData geometry = build_geometry(scene);
-  const FrameData frame = make_frame(scene, RenderOptions::from_scene(scene));
+  const FrameData frame = make_frame(scene, geometry, RenderOptions::from_scene(scene));
   require(!geometry.nodes.empty(), "a loaded scene gave no BVH root");
   require(!frame.materials.empty(), "a loaded scene gave no default material");
   return Outcome::Accepted;

@@ -23,8 +23,11 @@ namespace {
   X(offsetof(Hit, instance)) X(offsetof(Hit, material)) X(sizeof(ShadowRay))                 \
   X(offsetof(ShadowRay, contribution)) X(offsetof(ShadowRay, owner)) X(sizeof(Camera))       \
   X(offsetof(Camera, pixel_dy)) X(offsetof(Camera, width)) X(offsetof(Camera, seed))         \
-  X(offsetof(Camera, sampler)) X(offsetof(Camera, lens_u)) X(offsetof(Camera, lens_v)) X(offsetof(Camera, thin_lens)) X(sizeof(Material)) X(offsetof(Material, ka))                 \
-  X(offsetof(Material, ior)) X(sizeof(Light))                                                \
+  X(offsetof(Camera, sampler)) X(offsetof(Camera, lens_u)) X(offsetof(Camera, lens_v))      \
+  X(offsetof(Camera, thin_lens)) X(sizeof(Material)) X(offsetof(Material, ka))               \
+  X(offsetof(Material, ior)) X(offsetof(Material, emission)) X(sizeof(Light))                \
+  X(sizeof(Emitter)) X(offsetof(Emitter, edge2)) X(offsetof(Emitter, radiance))              \
+  X(offsetof(Hit, glow)) X(offsetof(Instance, glow)) X(offsetof(RenderParams, glow_light))   \
   X(offsetof(Light, edge_v)) X(offsetof(Light, kind)) X(offsetof(Light, first_sample))       \
   X(offsetof(Light, spot_exponent)) X(sizeof(Instance)) X(offsetof(Instance, normal_to_world)) \
   X(offsetof(Instance, shape)) X(offsetof(Instance, cone_r0)) X(sizeof(Mesh))                \

@@ -201,13 +201,27 @@ TEST_CASE("a floor under a glowing sphere receives pi L sin^2(alpha) at every de
   // glowing with radiance 4, seen from between them through a narrow field: the sphere fills a
   // cone of half-angle alpha with sin(alpha) = 1/2, so the floor receives pi L sin^2(alpha)
   // and sends back 0.5 L sin^2(alpha) = 0.5. The sphere is black, so no light comes back from
-  // it, and no shadow ray aims at it: every path that bounces into it brings the light.
+  // it; its light comes from the glow light's samples in that cone and from the paths that
+  // bounce into it, weighed by MIS.
   const ScratchDir dir;
   const std::string path = dir.file("glow.ray");
   std::ofstream(path) << "eye 0 0.25 0\nlookat 0 0 0\nup 0 0 -1\nfov 2\nresolution 4 4\n"
                          "background 0 0 0\nmaterial 1 1 1 0 0.5 0 1 0 0\nplane\n"
                          "material 0 0 0 0 0 0 1 0 0\nemission 4 4 4\nsphere 0 2 0 1\n";
-  check_mean_at_depths(path, {0, 1, 5}, 0.5, 0.03);  // 4 standard errors of 65536 paths
+  check_mean_at_depths(path, {0, 1, 5}, 0.5, 0.003);
+}
+
+TEST_CASE("a floor under a glowing square of two triangles matches its form factor at every depth",
+          "[path]") {
+  // The near-area-light case above with the light made of glowing geometry: two triangles of
+  // radiance 1 facing the floor, drawn from the glow light's table by area.
+  const ScratchDir dir;
+  const std::string path = dir.file("panel.ray");
+  std::ofstream(path) << "eye 0 0.25 0\nlookat 0 0 0\nup 0 0 -1\nfov 2\nresolution 4 4\n"
+                         "background 0 0 0\nmaterial 1 1 1 0 0.5 0 1 0 0\nplane\n"
+                         "material 0 0 0 0 0 0 1 0 0\nemission 1 1 1\n"
+                         "triangle -1 0.5 -1  1 0.5 -1  1 0.5 1\ntriangle -1 0.5 -1  1 0.5 1  -1 0.5 1\n";
+  check_mean_at_depths(path, {0, 1, 5}, 0.5 * form_factor_below_centre(1, 1, 0.5), 0.003);
 }
 
 TEST_CASE("light that reaches the last vertex through a mirror counts", "[path]") {

@@ -170,8 +170,9 @@ TEST_CASE("the checked buffer sizes are the ones the renderer allocates", "[limi
     const std::uint64_t reported = nlohmann::json::parse(r.output)["bytes"]["device"];
     RenderOptions o = RenderOptions::from_scene(scene);
     o.samples = 4;
-    const FrameData frame = make_frame(scene, o);
-    std::uint64_t expected = build_geometry(scene).device_bytes() + sizeof(dev::Camera) +
+    const GeometryData geometry = build_geometry(scene);
+    const FrameData frame = make_frame(scene, geometry, o);
+    std::uint64_t expected = geometry.device_bytes() + sizeof(dev::Camera) +
                              sizeof(dev::RenderParams) + sizeof(dev::Material) * frame.materials.size() +
                              sizeof(dev::Light) * frame.lights.size();
     // Every lane has buffers of its own.

@@ -52,7 +52,8 @@ class SceneError(Exception):
 class Material:
     """A `.ray` material as the lobe weights of docs/path-tracing.md."""
 
-    def __init__(self, color, kd, ks, n, kr, kt, ior):
+    def __init__(self, color, kd, ks, n, kr, kt, ior, emission=(0, 0, 0)):
+        self.emission = np.asarray(emission, dtype=float)
         local = max(0.0, 1.0 - kr - kt)
         diffuse = local * kd * np.asarray(color, dtype=float)
         glossy, mirror, glass = local * ks, kr, kt
@@ -106,6 +107,14 @@ def mitsuba_bsdf(material):
     return d
 
 
+def glowing(shape, material):
+    """`shape` with an area emitter of the material's emission: both clrt's glow and Mitsuba's
+    `area` emitter leave the front only."""
+    if material.emission.max() > 0:
+        shape["emitter"] = {"type": "area", "radiance": rgb(material.emission)}
+    return shape
+
+
 def needs_plugins(material):
     return material.glossy > 0 or sum(w > 0 for w in (material.diffuse.max(), material.mirror, material.glass)) > 1
 
@@ -126,8 +135,8 @@ class DumpedScene:
         self.lens_radius, self.focus_distance = camera["lens_radius"], camera["focus_distance"]
         self.resolution, self.samples, self.maxdepth = tuple(dump["resolution"]), dump["samples"], dump["maxdepth"]
         # One object per material, so that triangles group by the material they were given.
-        self.all_materials = [Material(m["color"], m["kd"], m["ks"], m["shininess"], m["kr"], m["kt"], m["ior"])
-                              for m in dump["materials"]]
+        self.all_materials = [Material(m["color"], m["kd"], m["ks"], m["shininess"], m["kr"], m["kt"], m["ior"],
+                                       m["emission"]) for m in dump["materials"]]
         self.spheres, self.triangles, self.lights, self.planes, self.cubes = [], [], [], [], []
         self.cylinders = []
         self.meshes = dump["meshes"]
@@ -210,8 +219,8 @@ class DumpedScene:
 def check_front(material, placement):
     # clrt maps a mirrored object's normals by (M^-1)^T, keeping its front; Mitsuba takes a
     # mesh's front from its winding in world space, which the mirror turns inside out.
-    if material.glass > 0 and np.linalg.det(placement[:3, :3]) < 0:
-        raise SceneError("a glass cube or mesh under a mirroring transform is inside out in Mitsuba")
+    if (material.glass > 0 or material.emission.max() > 0) and np.linalg.det(placement[:3, :3]) < 0:
+        raise SceneError("a glass or glowing cube or mesh under a mirroring transform is inside out in Mitsuba")
 
 
 def dump_scene(clrt, path):
@@ -244,10 +253,11 @@ def cylinder_shapes(material, ends):
     """Mitsuba's `cylinder`, which has no caps, closed by two `disk`s facing outwards."""
     bottom, top, radius = ends
     axis = (top - bottom) / np.linalg.norm(top - bottom)
-    shapes = [{"type": "cylinder", "p0": bottom.tolist(), "p1": top.tolist(), "radius": radius,
-               "bsdf": mitsuba_bsdf(material)}]
+    shapes = [glowing({"type": "cylinder", "p0": bottom.tolist(), "p1": top.tolist(), "radius": radius,
+                       "bsdf": mitsuba_bsdf(material)}, material)]
     for centre, normal in ((bottom, -axis), (top, axis)):
-        shapes.append({"type": "disk", "to_world": facing(normal, centre, radius), "bsdf": mitsuba_bsdf(material)})
+        shapes.append(glowing({"type": "disk", "to_world": facing(normal, centre, radius),
+                               "bsdf": mitsuba_bsdf(material)}, material))
     return shapes
 
 
@@ -274,8 +284,8 @@ def plane_rectangle(material, placement, eye, extent):
     origin = placement[:3, 3]
     # Centred on the point of the plane nearest to the eye.
     foot = eye - ((eye - origin) @ normal) * normal
-    return {"type": "rectangle", "bsdf": mitsuba_bsdf(material),
-            "to_world": facing(normal, foot, extent * PLANE_EXTENT)}
+    return glowing({"type": "rectangle", "bsdf": mitsuba_bsdf(material),
+                    "to_world": facing(normal, foot, extent * PLANE_EXTENT)}, material)
 
 
 def transform(matrix):
@@ -309,7 +319,11 @@ def area_light_faces(color, geometry):
 
 def triangle_mesh(material, corners):
     import mitsuba as mi
-    mesh = mi.Mesh("triangles", 3 * len(corners), len(corners),
+    # A mesh made here takes its emitter from its properties (it has no set_emitter).
+    props = mi.Properties()
+    if material.emission.max() > 0:
+        props["emitter"] = mi.load_dict(glowing({}, material)["emitter"])
+    mesh = mi.Mesh("triangles", 3 * len(corners), len(corners), props=props,
                    has_vertex_normals=False, has_vertex_texcoords=False)
     params = mi.traverse(mesh)
     params["vertex_positions"] = np.concatenate(corners).ravel().tolist()
@@ -353,13 +367,14 @@ def to_mitsuba(scene, spp=None, resolution=None, seed=0):
     if scene.background.max() > 0:
         d["background"] = {"type": "constant", "radiance": rgb(scene.background)}
     for i, (material, centre, radius) in enumerate(scene.spheres):
-        d[f"sphere_{i}"] = {"type": "sphere", "center": centre.tolist(), "radius": radius,
-                            "bsdf": mitsuba_bsdf(material)}
+        d[f"sphere_{i}"] = glowing({"type": "sphere", "center": centre.tolist(), "radius": radius,
+                                    "bsdf": mitsuba_bsdf(material)}, material)
     for i, (material, placement) in enumerate(scene.planes):
         d[f"plane_{i}"] = plane_rectangle(material, placement, scene.eye, scene.extent())
     for i, (material, placement) in enumerate(scene.cubes):
         # Both are the box [-1, 1]^3, its faces flat, with the outside as the front.
-        d[f"cube_{i}"] = {"type": "cube", "to_world": transform(placement), "bsdf": mitsuba_bsdf(material)}
+        d[f"cube_{i}"] = glowing({"type": "cube", "to_world": transform(placement), "bsdf": mitsuba_bsdf(material)},
+                                 material)
     for i, (material, ends) in enumerate(scene.cylinders):
         for j, shape in enumerate(cylinder_shapes(material, ends)):
             d[f"cylinder_{i}_{j}"] = shape
