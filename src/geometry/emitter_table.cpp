@@ -67,15 +67,22 @@ void mesh(TableBuilder& table, const TriangleSource& source, const Mat4& m, bool
   }
 }
 
+// A material's emission; none for an index past the table (scenes built in code may have no
+// materials).
+Vec3 emission_of(const Scene& scene, int material) {
+  const auto m = static_cast<std::size_t>(material);
+  return m < scene.materials.size() ? scene.materials[m].emission : Vec3{};
+}
+
 }  // namespace
 
 double glow_luminance(const Vec3& r) { return 0.2126 * r.x + 0.7152 * r.y + 0.0722 * r.z; }
 
 bool glow_is_sampled(const Scene& scene) {
   for (const TriangleSpec& t : scene.triangles)
-    if (glow_luminance(scene.materials[static_cast<std::size_t>(t.material)].emission) > 0) return true;
+    if (glow_luminance(emission_of(scene, t.material)) > 0) return true;
   for (const InstanceSpec& spec : scene.instances) {
-    if (!(glow_luminance(scene.materials[static_cast<std::size_t>(spec.material)].emission) > 0)) continue;
+    if (!(glow_luminance(emission_of(scene, spec.material)) > 0)) continue;
     if (spec.shape == ShapeKind::Cube || spec.shape == ShapeKind::Mesh ||
         world_sphere(spec))
       return true;
@@ -94,14 +101,14 @@ void build_emitter_table(const Scene& scene, const std::vector<TriangleSource>& 
       const TriangleSource& source = sources[inst.mesh];
       for (std::size_t t = 0; t < source.size(); ++t) {
         const TriangleSpec& spec = scene.triangles[t];
-        const Vec3& radiance = scene.materials[static_cast<std::size_t>(spec.material)].emission;
+        const Vec3 radiance = emission_of(scene, spec.material);
         if (glow_luminance(radiance) > 0) table.triangle(spec.v0, spec.v1, spec.v2, radiance);
       }
       if (table.rows.size() > before) inst.glow = CLRT_GLOW_TRIANGLES;
       continue;
     }
     const InstanceSpec& spec = scene.instances[static_cast<std::size_t>(out.instance_source[i])];
-    const Vec3& radiance = scene.materials[static_cast<std::size_t>(spec.material)].emission;
+    const Vec3 radiance = emission_of(scene, spec.material);
     if (!(glow_luminance(radiance) > 0)) continue;
     const Mat4& m = spec.transform;
     const bool mirrors = m.determinant() < 0;
