@@ -128,6 +128,17 @@ CLRT_INLINE float exact_atan(float t) {
   return t < 0.0f ? -angle : angle;
 }
 
+/* atan2(y, x) in [-pi, pi] from exact_atan: the angle of (|x|, |y|) from the x axis, taken from
+ * whichever ratio is at most 1 and carried into the quadrant of (x, y); 0 for (0, 0). pi/2 and
+ * pi are each a float and its remainder, as in exact_atan. */
+CLRT_INLINE float exact_atan2(float y, float x) {
+  const float ax = fabs(x), ay = fabs(y);
+  if (ax == 0.0f && ay == 0.0f) return 0.0f;
+  float a = ay <= ax ? exact_atan(ay / ax) : 1.57079637f - (exact_atan(ax / ay) + 4.37113883e-08f);
+  if (x < 0.0f) a = 3.14159274f - (a + 8.74227766e-08f);
+  return y < 0.0f ? -a : a;
+}
+
 /* x^y for x >= 0, with 0^0 = 1 as pow() has it. PoCL's pow() made the whole shade kernel 3.5x
  * slower (250 ms against 72 ms on reflect.ray at 1280x720); this costs two short series. */
 CLRT_INLINE float power(float x, float y) {

@@ -59,13 +59,24 @@ CLRT_INLINE float3 crossed_emission(const Ray* ray, __global const Light* lights
  * ray, a delta lobe's ray (pdf 0) or a surface the light does not sample keeps all of it. */
 CLRT_INLINE float glow_hit_weight(const Ray* ray, const Hit* hit, __global const Material* materials,
                                   __global const Light* lights, __global const RenderParams* params) {
-  if (!(ray->pdf > 0.0f) || hit->glow == CLRT_NO_GLOW || params->glow_light == CLRT_NO_GLOW)
+  if (!(ray->pdf > 0.0f) || hit->glow == CLRT_NO_GLOW || params->glow_light == CLRT_NO_LIGHT)
     return 1.0f;
   __global const Light* light = &lights[params->glow_light];
   const float cos_light = fabs(dot3(xyz(hit->geometric_normal), vload3(0, ray->dir)));
   const float density = glow_light_density(light, hit->glow, vload3(0, ray->origin), hit->geometric_normal.w,
                                            cos_light, xyz(materials[hit->material].emission));
   return power_heuristic(1.0f, ray->pdf, (float)light->samples * density);
+}
+
+/* The MIS weight of the environment's radiance that an escaping path brings, against the
+ * environment's samples in its direction; 1 where they do not sample it (the Whitted modes'
+ * background, the camera's rays, a delta lobe's). */
+CLRT_INLINE float environment_weight(const Ray* ray, __global const Light* lights,
+                                     __global const RenderParams* params) {
+  if (!(ray->pdf > 0.0f) || !(params->environment < params->light_count)) return 1.0f;
+  __global const Light* light = &lights[params->environment];
+  return power_heuristic(1.0f, ray->pdf,
+                         (float)light->samples * environment_density(light, vload3(0, ray->dir)));
 }
 
 struct TransportVertex {
@@ -98,7 +109,7 @@ CLRT_INLINE float3 path_step(const Ray* ray, const Hit* hit, __global const Mate
                              uint owner, RaySink* sink) {
   const bool missed = hit->instance == CLRT_NO_HIT;
   float3 c = crossed_emission(ray, lights, params, missed ? INFINITY : hit->geometric_normal.w);
-  if (missed) return c + miss_colour(ray, params);
+  if (missed) return c + miss_colour(ray, lights, params) * environment_weight(ray, lights, params);
   c += emitted(ray, hit, materials) * glow_hit_weight(ray, hit, materials, lights, params);
   /* Past the depth cap a ray only gathers the light it meets: the cap vertex still draws a
    * direction, so that its next-event estimates' MIS weights have their other strategy, and the

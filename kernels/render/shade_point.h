@@ -11,6 +11,7 @@
 
 #include "common.h"
 #include "light_sample.h"
+#include "lights/environment.h"
 #include "optics.h"
 #include "random.h"
 
@@ -40,8 +41,13 @@ CLRT_INLINE ShadePoint shade_point(const Ray* ray, const Hit* hit, __global cons
   return s;
 }
 
-CLRT_INLINE float3 miss_colour(const Ray* ray, __global const RenderParams* params) {
-  return vload3(0, ray->weight) * xyz(params->background);
+/* The radiance a ray that hits nothing brings, times its weight: the environment's along its
+ * direction, else the background. */
+CLRT_INLINE float3 miss_colour(const Ray* ray, __global const Light* lights, __global const RenderParams* params) {
+  const float3 radiance = params->environment == CLRT_NO_LIGHT
+                              ? xyz(params->background)
+                              : environment_radiance(&lights[params->environment], vload3(0, ray->dir));
+  return vload3(0, ray->weight) * radiance;
 }
 
 /* The radiance the hit surface emits towards the ray's origin, times the ray's weight: its

@@ -72,7 +72,7 @@ CLRT_INLINE uint spawn_children(const Ray* ray, const ShadePoint* s, __global co
 CLRT_INLINE float3 whitted_step(const Ray* ray, const Hit* hit, __global const Material* materials,
                                 __global const Light* lights, __global const RenderParams* params,
                                 bool tracing, uint owner, RaySink* sink) {
-  if (hit->instance == CLRT_NO_HIT) return miss_colour(ray, params);
+  if (hit->instance == CLRT_NO_HIT) return miss_colour(ray, lights, params);
   TransportVertex vertex;
   vertex.sp = shade_point(ray, hit, materials);
   vertex.material = &materials[vertex.sp.material];

@@ -47,10 +47,12 @@ CLRT_CHECK_SIZE(Material, 64);
 enum { CLRT_LIGHT_KINDS(CLRT_LIGHT_KIND_VALUE) CLRT_LIGHT_KIND_COUNT };
 #undef CLRT_LIGHT_KIND_VALUE
 
-/* Non-ambient lights only: ambient lights are summed into RenderParams.ambient. In path mode the
- * last record may be the glow light (CLRT_LIGHT_GLOW, kernels/render/lights/glow.h), made from
- * the scene's glowing geometry rather than a `light` command; its grid_u rows of the emitter
- * table (Emitter) follow it in the same buffer. */
+/* Non-ambient lights only: ambient lights are summed into RenderParams.ambient. Two kinds come
+ * from no `light` command: path mode's glow light (CLRT_LIGHT_GLOW, kernels/render/lights/glow.h),
+ * made of the scene's glowing geometry, and the environment (CLRT_LIGHT_ENVIRONMENT,
+ * lights/environment.h), which every mode reads for the rays that escape and path mode samples.
+ * Their tables (the emitter rows, the environment's texels) follow the records in the same
+ * buffer, `data` 16-byte units after their record. */
 typedef struct Light {
   f4 color;     /* rgb intensity of the whole light; glow: w the emitter table's total power */
   f4 position;  /* point and spot: position; area: corner; w unused */
@@ -64,7 +66,7 @@ typedef struct Light {
   u32 first_sample;    /* index of this light's first sample among all samples of a shading point */
   float cos_cutoff;    /* spot: cos(angle) */
   float spot_exponent; /* spot */
-  u32 pad;
+  u32 data;            /* glow, environment: its table's distance from this record, in f4s */
 } Light;
 CLRT_CHECK_SIZE(Light, 112);
 
@@ -80,6 +82,9 @@ typedef struct Emitter {
   f4 radiance; /* rgb emitted from the front; w unused */
 } Emitter;
 CLRT_CHECK_SIZE(Emitter, 64);
+
+/* RenderParams.glow_light and .environment: no such light. */
+#define CLRT_NO_LIGHT 0xffffffffu
 
 /* Instance.glow and Hit.glow: the surface is not in the emitter table; or it is one of the
  * table's triangles (a row the hit does not name). Any other value is a sphere's row. */
@@ -153,8 +158,9 @@ typedef struct RenderParams {
   float max_sample_value; /* a camera sample whose largest channel exceeds it is scaled down to it
                            * before a pixel's samples are summed (--max-sample-value); INFINITY:
                            * never */
-  u32 glow_light;         /* the glow light's index in the light table, or CLRT_NO_GLOW */
-  u32 pad;
+  u32 glow_light;         /* the glow light's index in the light table, or CLRT_NO_LIGHT */
+  u32 environment;        /* the environment's index in the light table (sampled in path mode,
+                           * where it is below light_count), or CLRT_NO_LIGHT: the background */
 } RenderParams;
 CLRT_CHECK_SIZE(RenderParams, 64);
 

@@ -13,7 +13,7 @@ std::optional<std::string> dark_scene_note(const Scene& scene, RenderMode mode) 
   const bool glows = std::any_of(scene.materials.begin(), scene.materials.end(), [](const MaterialSpec& m) {
     return m.emission.x > 0 || m.emission.y > 0 || m.emission.z > 0;
   });
-  if (glows && mode == RenderMode::Path) return std::nullopt;
+  if ((glows || scene.environment) && mode == RenderMode::Path) return std::nullopt;
   if (glows && scene.lights.empty())
     return std::string("the scene has no light, so only its glowing surfaces show; they light the "
                        "other objects in --mode path (docs/scene-format.md#materials)");

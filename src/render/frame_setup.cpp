@@ -120,35 +120,117 @@ dev::RenderParams make_params(const Scene& scene, const RenderOptions& options) 
   p.mode = device_mode(options.mode);
   p.epsilon = kEpsilon;
   p.max_sample_value = options.max_sample_value;
-  p.glow_light = CLRT_NO_GLOW;  // make_frame adds it
+  p.glow_light = p.environment = CLRT_NO_LIGHT;  // make_frame adds them
   return p;
 }
 
+namespace {
+
+// Texels (rgb radiance times the scale; w the row's cumulative share through the texel) and then
+// the rows' cumulative shares, four to an f4. A texel's weight is its luminance times the sine
+// at its row's centre (its solid angle); a row without light shares its weight evenly. Sets the
+// record's size and tells whether anything can be sampled.
+std::vector<dev::f4> environment_table(const EnvironmentSpec& env, dev::Light& record, bool& sampled) {
+  const auto w = static_cast<std::size_t>(env.width), h = static_cast<std::size_t>(env.height);
+  std::vector<dev::f4> table(w * h + (h + 3) / 4);
+  std::vector<double> row_weight(h);
+  for (std::size_t j = 0; j < h; ++j) {
+    const double sine = std::sin(M_PI * (static_cast<double>(j) + 0.5) / static_cast<double>(h));
+    std::vector<double> lum(w);
+    double sum = 0;
+    for (std::size_t i = 0; i < w; ++i) {
+      const float* rgb = &env.rgb[3 * (j * w + i)];
+      dev::f4& t = table[j * w + i];
+      t.x = static_cast<float>(rgb[0] * env.scale);
+      t.y = static_cast<float>(rgb[1] * env.scale);
+      t.z = static_cast<float>(rgb[2] * env.scale);
+      lum[i] = 0.2126 * t.x + 0.7152 * t.y + 0.0722 * t.z;
+      sum += lum[i];
+    }
+    double running = 0;
+    for (std::size_t i = 0; i < w; ++i) {
+      running += sum > 0 ? lum[i] : 1.0;
+      table[j * w + i].w = i + 1 == w ? 1.0f : static_cast<float>(running / (sum > 0 ? sum : w));
+    }
+    row_weight[j] = sum * sine;
+  }
+  double total = 0;
+  for (double r : row_weight) total += r;
+  sampled = total > 0;
+  float* rows = &table[w * h].x;
+  double running = 0;
+  for (std::size_t j = 0; j < h; ++j) {
+    running += row_weight[j];
+    rows[j] = j + 1 == h ? 1.0f : static_cast<float>(sampled ? running / total : 0.0);
+  }
+  record.kind = dev::CLRT_LIGHT_ENVIRONMENT;
+  record.grid_u = static_cast<dev::u32>(w);
+  record.grid_v = static_cast<dev::u32>(h);
+  record.samples = 1;
+  // World to map: the rows of the rotation's inverse, its transpose.
+  record.position = f4_of(env.rotation.column(0));
+  record.direction = f4_of(env.rotation.column(1));
+  record.edge_u = f4_of(env.rotation.column(2));
+  return table;
+}
+
+constexpr dev::u32 kF4sPerLight = sizeof(dev::Light) / sizeof(dev::f4);
+constexpr dev::u32 kF4sPerEmitter = sizeof(dev::Emitter) / sizeof(dev::f4);
+
+}  // namespace
+
 FrameData make_frame(const Scene& scene, const GeometryData& geometry, const RenderOptions& options) {
   FrameData frame{make_camera(scene, options), make_params(scene, options), make_materials(scene),
-                  make_lights(scene)};
-  if (options.mode != RenderMode::Path || geometry.emitters.empty()) return frame;
-  dev::Light glow{};
-  glow.kind = dev::CLRT_LIGHT_GLOW;
-  glow.color.w = static_cast<float>(geometry.emitter_power);
-  glow.samples = 1;
-  glow.grid_u = static_cast<dev::u32>(geometry.emitters.size());
-  glow.grid_v = 1;
-  glow.first_sample = frame.params.shadow_samples;
-  frame.params.glow_light = static_cast<dev::u32>(frame.lights.size());
-  frame.lights.push_back(glow);
-  ++frame.params.light_count;
-  frame.params.shadow_samples += glow.samples;
+                  make_lights(scene), nullptr};
+  const bool path = options.mode == RenderMode::Path;
+  // Appends a record, counted among the sampled lights when `sampled`.
+  const auto add = [&frame](dev::Light record, bool sampled) {
+    record.first_sample = frame.params.shadow_samples;
+    if (sampled) {
+      ++frame.params.light_count;
+      frame.params.shadow_samples += record.samples;
+    }
+    frame.lights.push_back(record);
+    return static_cast<dev::u32>(frame.lights.size() - 1);
+  };
+  if (path && !geometry.emitters.empty()) {
+    dev::Light glow{};
+    glow.kind = dev::CLRT_LIGHT_GLOW;
+    glow.color.w = static_cast<float>(geometry.emitter_power);
+    glow.samples = 1;
+    glow.grid_u = static_cast<dev::u32>(geometry.emitters.size());
+    glow.grid_v = 1;
+    frame.params.glow_light = add(glow, true);
+  }
+  if (scene.environment) {
+    dev::Light record{};
+    bool sampled = false;
+    frame.environment_table =
+        std::make_shared<const std::vector<dev::f4>>(environment_table(*scene.environment, record, sampled));
+    frame.params.environment = add(record, path && sampled);
+  }
+  // The tables follow the records: the emitter rows, then the environment's.
+  const auto records = static_cast<dev::u32>(frame.lights.size());
+  const dev::u32 rows = frame.params.glow_light == CLRT_NO_LIGHT ? 0 : static_cast<dev::u32>(geometry.emitters.size());
+  if (frame.params.glow_light != CLRT_NO_LIGHT)
+    frame.lights[frame.params.glow_light].data = (records - frame.params.glow_light) * kF4sPerLight;
+  if (frame.params.environment != CLRT_NO_LIGHT)
+    frame.lights[frame.params.environment].data =
+        (records - frame.params.environment) * kF4sPerLight + rows * kF4sPerEmitter;
   return frame;
 }
 
 std::vector<unsigned char> light_table_bytes(const FrameData& frame, const GeometryData& geometry) {
   const std::size_t light_bytes = sizeof(dev::Light) * frame.lights.size();
   const std::size_t row_bytes =
-      frame.params.glow_light == CLRT_NO_GLOW ? 0 : sizeof(dev::Emitter) * geometry.emitters.size();
-  std::vector<unsigned char> bytes(light_bytes + row_bytes);
+      frame.params.glow_light == CLRT_NO_LIGHT ? 0 : sizeof(dev::Emitter) * geometry.emitters.size();
+  const std::size_t environment_bytes =
+      frame.environment_table ? sizeof(dev::f4) * frame.environment_table->size() : 0;
+  std::vector<unsigned char> bytes(light_bytes + row_bytes + environment_bytes);
   if (light_bytes) std::memcpy(bytes.data(), frame.lights.data(), light_bytes);
   if (row_bytes) std::memcpy(bytes.data() + light_bytes, geometry.emitters.data(), row_bytes);
+  if (environment_bytes)
+    std::memcpy(bytes.data() + light_bytes + row_bytes, frame.environment_table->data(), environment_bytes);
   return bytes;
 }
 

@@ -1,6 +1,7 @@
 // The scene's camera, materials, lights and constants in the layouts the kernels read.
 #pragma once
 
+#include <memory>
 #include <vector>
 
 #include "math/stratification_grid.hpp"
@@ -35,10 +36,14 @@ struct FrameData {
   dev::RenderParams params{};
   std::vector<dev::Material> materials;
   std::vector<dev::Light> lights;
+  // The environment's texels and rows (kernels/render/lights/environment.h), after the emitter
+  // rows in the device's light table; shared by every device's copy of the frame.
+  std::shared_ptr<const std::vector<dev::f4>> environment_table;
 };
 
-// In path mode with glowing surfaces in `geometry`'s emitter table, the light table ends with
-// the glow light's record (its rows follow it on the device: DeviceFrame).
+// The light records: the scene's lights; in path mode, with glowing surfaces in `geometry`'s
+// emitter table, the glow light's; with an environment, its record (which the Whitted modes read
+// for escaping rays and do not sample).
 FrameData make_frame(const Scene& scene, const GeometryData& geometry, const RenderOptions& options);
 
 // The light table as the device reads it: the frame's light records, then `geometry`'s emitter

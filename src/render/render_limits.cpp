@@ -52,11 +52,12 @@ void check_request(const Scene& scene, const RenderOptions& o) {
                   std::to_string(limits::kMaxShadowSamples));
 }
 
-// As make_frame counts them: path mode's glow light takes one.
+// As make_frame counts them: path mode's glow light and environment take one each (at most:
+// an environment that is black everywhere takes none).
 std::uint64_t shadow_samples_per_point(const Scene& scene, const RenderOptions& o) {
   std::uint64_t sum = 0;
   for (const LightSpec& light : scene.lights) sum += static_cast<std::uint64_t>(shadow_samples(light));
-  if (o.mode == RenderMode::Path && glow_is_sampled(scene)) ++sum;
+  if (o.mode == RenderMode::Path) sum += (glow_is_sampled(scene) ? 1 : 0) + (scene.environment ? 1 : 0);
   return sum;
 }
 

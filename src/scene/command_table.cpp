@@ -6,6 +6,7 @@ const CommandTable& command_table() {
   static const CommandTable table = [] {
     CommandTable t;
     add_camera_commands(t);
+    add_environment_command(t);
     add_material_commands(t);
     add_transform_commands(t);
     add_object_commands(t);

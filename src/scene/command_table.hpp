@@ -14,6 +14,7 @@ using CommandTable = std::map<std::string, CommandHandler>;
 
 // Each command family adds its own names.
 void add_camera_commands(CommandTable& table);
+void add_environment_command(CommandTable& table);
 void add_material_commands(CommandTable& table);
 void add_transform_commands(CommandTable& table);
 void add_object_commands(CommandTable& table);

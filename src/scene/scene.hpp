@@ -3,6 +3,7 @@
 
 #include <cstdint>
 #include <deque>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -30,6 +31,17 @@ struct MaterialSpec {
   double kr = 0, kt = 0;
   double ior = 1;  // a value <= 0 in the file is stored as 1
   Vec3 emission{0, 0, 0};  // radiance leaving the front side (`emission`)
+};
+
+// `environment FILE [SCALE]`: the radiance arriving from every direction, an equirectangular
+// image in Mitsuba 3's `envmap` orientation, turned by the rotation in force at the command
+// (docs/scene-format.md#environment).
+struct EnvironmentSpec {
+  std::string path;  // as resolved against the scene's folder
+  double scale = 1;
+  Mat4 rotation;     // map to world: the current transform's linear part, a rotation
+  int width = 0, height = 0;
+  std::vector<float> rgb;  // linear radiance before the scale, rows from the top (+y) down
 };
 
 // A light as its command gives it. Its kind is the name of its row of light_kind_table()
@@ -94,6 +106,7 @@ struct Scene {
   int samples = 1;
   std::vector<MaterialSpec> materials;  // [0] is the default material
   std::vector<LightSpec> lights;
+  std::optional<EnvironmentSpec> environment;  // none: escaping rays see `background`
   // A deque grows without copying what it holds: a vector's doubling held up to three times
   // the table at its last growth, the peak of loading a scene of spheres.
   std::deque<InstanceSpec> instances;

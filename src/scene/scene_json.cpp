@@ -100,6 +100,13 @@ void write_mesh(const Writer& write, const MeshData& mesh) {
   write("}");
 }
 
+Json environment(const Scene& scene) {
+  if (!scene.environment) return nullptr;
+  const EnvironmentSpec& env = *scene.environment;
+  return {{"file", env.path}, {"scale", env.scale}, {"rotation", matrix(env.rotation)},
+          {"width", env.width}, {"height", env.height}};
+}
+
 }  // namespace
 
 Json json_of(const Vec3& v) { return Json::array({v.x, v.y, v.z}); }
@@ -113,7 +120,8 @@ void write_scene_json(const Scene& scene, const Writer& write) {
                      {"resolution", Json::array({scene.width, scene.height})},
                      {"samples", scene.samples},
                      {"maxdepth", scene.max_depth},
-                     {"background", json_of(scene.background)}};
+                     {"background", json_of(scene.background)},
+                     {"environment", environment(scene)}};
   write("{\n");
   for (const auto& [key, value] : head.items()) write(Json(key).dump() + ": " + value.dump() + ",\n");
   const std::string next = ",\n";

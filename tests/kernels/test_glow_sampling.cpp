@@ -171,7 +171,7 @@ GlowTable glow_table(const Scene& scene) {
   RenderOptions options = RenderOptions::from_scene(scene);
   options.mode = RenderMode::Path;
   const FrameData frame = make_frame(scene, geometry, options);
-  REQUIRE(frame.params.glow_light != CLRT_NO_GLOW);
+  REQUIRE(frame.params.glow_light != CLRT_NO_LIGHT);
   const std::vector<unsigned char> bytes = light_table_bytes(frame, geometry);
   return {Global<const dev::Light>(device().allocate_copy(bytes.data(), bytes.size(), "light table")),
           frame.params.glow_light};

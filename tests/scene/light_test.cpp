@@ -153,8 +153,10 @@ TEST_CASE("every light kind's row: the device kind of its file and its syntax in
     CHECK(record.kind == device->second);
     device_kinds.erase(device);
   }
-  // Every kind the device knows is some row's, but the glow light, which path mode makes of the
-  // scene's glowing geometry (src/render/frame_setup.cpp).
+  // Every kind the device knows is some row's, but the two that no `light` command makes
+  // (src/render/frame_setup.cpp): path mode's glow light, made of the scene's glowing geometry,
+  // and the environment, made by `environment`.
   CHECK(device_kinds.erase("glow") == 1);
+  CHECK(device_kinds.erase("environment") == 1);
   CHECK(device_kinds.empty());
 }

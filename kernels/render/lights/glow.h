@@ -1,7 +1,7 @@
 /* The glow light, path mode's light made of the scene's glowing geometry rather than of a `light`
  * command: the glowing triangles (of meshes, cubes and `triangle`s) and spheres that the host put
- * in its emitter table (src/geometry/emitter_table.cpp), whose rows follow this record in the
- * light table. One sample per shading point picks a row in proportion to its power, then a point
+ * in its emitter table (src/geometry/emitter_table.cpp), whose rows lie in the light table
+ * after the records. One sample per shading point picks a row in proportion to its power, then a point
  * of it: uniformly by area on a triangle, uniformly in the cone of directions a sphere subtends
  * (as pbrt-v4 and Mitsuba 3 sample spheres). Paths that hit the same surfaces meet them as
  * geometry, never as a light crossing: path_step weighs what they find with glow_light_density,
@@ -14,7 +14,7 @@
 #include "math/around_axis.h"
 
 CLRT_INLINE __global const Emitter* glow_rows(__global const Light* light) {
-  return (__global const Emitter*)(light + 1);
+  return (__global const Emitter*)((__global const f4*)light + light->data);
 }
 
 /* The weights of luminance (Rec. 709) by which the host shares the samples among the rows. */

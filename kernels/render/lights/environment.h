@@ -1,0 +1,119 @@
+/* `environment FILE [SCALE]`: an equirectangular image of the radiance arriving from every
+ * direction, in the orientation of Mitsuba 3's `envmap` emitter: the map's direction
+ * d = (x, y, z) falls on u = atan2(x, -z) / (2 pi) (wrapped into [0, 1)) across the image and
+ * v = theta / pi = acos(y) / pi down it, +y up at the top row; the current transform's rotation
+ * at the command turns the map (world_to_map's rows are position, direction and edge_u). A
+ * direction takes the texel it falls in, whose radiance is constant over it.
+ *
+ * Every mode's escaping rays see it (shade_point.h's miss_colour). Path mode also samples it:
+ * a texel in proportion to its luminance times sin(theta) at its row's centre (its solid angle),
+ * by the rows' cumulative shares, then the texel's row's, both binary searches; then a point
+ * uniform in the texel's (u, v). The density in solid angle is p(u, v) / (2 pi^2 sin(theta)),
+ * p(u, v) the texel's share times the texel count; an escaping path claims the same for its
+ * direction, from the same tables. The texels follow the record (`data`), as rgb radiance
+ * times the scale with, in w, the row's cumulative share through the texel; then the rows'
+ * cumulative shares, one float each. */
+#ifndef CLRT_RENDER_LIGHTS_ENVIRONMENT_H
+#define CLRT_RENDER_LIGHTS_ENVIRONMENT_H
+
+#include "../light_sample.h"
+#include "math/exact.h"
+
+CLRT_INLINE __global const f4* environment_texels(__global const Light* light) {
+  return (__global const f4*)light + light->data;
+}
+
+/* The rows' cumulative shares of the sampling weight. */
+CLRT_INLINE __global const float* environment_rows(__global const Light* light) {
+  return (__global const float*)(environment_texels(light) + light->grid_u * light->grid_v);
+}
+
+/* The direction in the map's frame. */
+CLRT_INLINE float3 environment_to_map(__global const Light* light, float3 d) {
+  return (float3)(dot3(xyz(light->position), d), dot3(xyz(light->direction), d), dot3(xyz(light->edge_u), d));
+}
+
+/* The texel (column, row) a unit map direction falls in. */
+CLRT_INLINE uint2 environment_texel(__global const Light* light, float3 m) {
+  const float turns = exact_atan2(m.x, -m.z) * 0.159154937f;
+  const float u = turns < 0.0f ? turns + 1.0f : turns;
+  const float v = exact_atan2(sqrt(m.x * m.x + m.z * m.z), m.y) * 0.318309873f;
+  const uint w = light->grid_u, h = light->grid_v;
+  return (uint2)(min(w - 1u, (uint)(u * (float)w)), min(h - 1u, (uint)(v * (float)h)));
+}
+
+/* The radiance arriving along -d (d the direction a ray travels in, unit). */
+CLRT_INLINE float3 environment_radiance(__global const Light* light, float3 d) {
+  const uint2 t = environment_texel(light, environment_to_map(light, d));
+  return xyz(environment_texels(light)[t.y * light->grid_u + t.x]);
+}
+
+/* The share between cumulative values at i - 1 and i of a table `c`. */
+CLRT_INLINE float share_at(__global const float* c, uint i) {
+  return c[i] - (i == 0u ? 0.0f : c[i - 1u]);
+}
+
+CLRT_INLINE float environment_texel_share(__global const Light* light, uint2 t) {
+  __global const f4* row = environment_texels(light) + t.y * light->grid_u;
+  const float within = row[t.x].w - (t.x == 0u ? 0.0f : row[t.x - 1u].w);
+  return share_at(environment_rows(light), t.y) * within;
+}
+
+/* The solid-angle density of the samples in unit world direction d. */
+CLRT_INLINE float environment_density(__global const Light* light, float3 d) {
+  const float3 m = environment_to_map(light, d);
+  const float sin_theta = sqrt(m.x * m.x + m.z * m.z);
+  if (!(sin_theta > 0.0f)) return 0.0f;
+  const float texels = (float)(light->grid_u * light->grid_v);
+  return environment_texel_share(light, environment_texel(light, m)) * texels /
+         (19.7392088f * sin_theta); /* 2 pi^2 */
+}
+
+/* The first index whose cumulative value exceeds *u, among `count` strided by `stride` floats,
+ * with *u rescaled to its place within that index's share. */
+CLRT_INLINE uint environment_pick(__global const float* cumulative, uint count, uint stride, float* u) {
+  uint lo = 0u, hi = count - 1u;
+  while (lo < hi) {
+    const uint mid = (lo + hi) / 2u;
+    if (cumulative[mid * stride] > *u) hi = mid;
+    else lo = mid + 1u;
+  }
+  const float before = lo == 0u ? 0.0f : cumulative[(lo - 1u) * stride];
+  *u = fmin((*u - before) / (cumulative[lo * stride] - before), 0x1.fffffep-1f);
+  return lo;
+}
+
+CLRT_INLINE LightSample environment_light_sample(__global const Light* light, uint j, float3 p, float2 u) {
+  const uint w = light->grid_u, h = light->grid_v;
+  float ux = u.x, uy = u.y;
+  const uint row = environment_pick(environment_rows(light), h, 1u, &ux);
+  __global const f4* texels = environment_texels(light) + row * w;
+  const uint column = environment_pick((__global const float*)texels + 3, w, 4u, &uy);
+  /* theta = pi v is half a turn of v; phi = 2 pi u is u turns. */
+  float sin_theta, cos_theta, sin_phi, cos_phi;
+  sincos_turns(0.5f * (((float)row + uy) / (float)h), &sin_theta, &cos_theta);
+  sincos_turns(((float)column + ux) / (float)w, &sin_phi, &cos_phi);
+  const float3 m = (float3)(sin_phi * sin_theta, cos_theta, -cos_phi * sin_theta);
+  const float3 d = m.x * xyz(light->position) + m.y * xyz(light->direction) + m.z * xyz(light->edge_u);
+  LightSample s;
+  s.to_light = d;
+  s.position = p + d;
+  s.distance = INFINITY;
+  /* Radiance and density both from the texel d falls in, so that the pair stays consistent
+   * where rounding puts d across a texel's edge. */
+  s.intensity = environment_radiance(light, d);
+  s.density = environment_density(light, d);
+  s.geometry = s.density > 0.0f ? 1.0f / s.density : 0.0f;
+  if (!(s.density > 0.0f)) s.intensity = (float3)(0.0f);
+  return s;
+}
+
+CLRT_INLINE bool environment_light_reads_pair(void) { return true; }
+
+/* Paths meet it by escaping (miss_colour), never by crossing it. */
+CLRT_INLINE LightCrossing environment_light_crossing(__global const Light* light, float3 o, float3 d,
+                                                     float tmin, float tmax) {
+  return no_crossing();
+}
+
+#endif
