@@ -12,6 +12,7 @@ counts are too low for the check to mean anything. Exit 0 when every scene match
 import argparse
 import glob
 import hashlib
+import json
 import os
 import subprocess
 import sys
@@ -35,6 +36,11 @@ def reference(python, scene, args, mitsuba_version):
     if dump.returncode != 0:
         raise RuntimeError(f"clrt cannot read {scene}: {dump.stdout.strip()}")
     key.update(dump.stdout.encode())
+    # The environment's image is named by the dump, not held in it.
+    environment = json.loads(dump.stdout).get("environment")
+    if environment:
+        with open(environment["file"], "rb") as f:
+            key.update(f.read())
     code = [os.path.join(HERE, f"{name}.py") for name in ("ray_to_mitsuba", "lobes", "render_reference", "estimates")]
     for path in code:
         with open(path, "rb") as f:

@@ -134,6 +134,7 @@ class DumpedScene:
         self.fov, self.background = camera["fov_degrees"], np.array(dump["background"], dtype=float)
         self.lens_radius, self.focus_distance = camera["lens_radius"], camera["focus_distance"]
         self.resolution, self.samples, self.maxdepth = tuple(dump["resolution"]), dump["samples"], dump["maxdepth"]
+        self.environment = dump.get("environment")
         # One object per material, so that triangles group by the material they were given.
         self.all_materials = [Material(m["color"], m["kd"], m["ks"], m["shininess"], m["kr"], m["kt"], m["ior"],
                                        m["emission"]) for m in dump["materials"]]
@@ -317,6 +318,46 @@ def area_light_faces(color, geometry):
     return faces
 
 
+# Mitsuba's envmap interpolates between pixels; clrt's pixels are constant over their part of the
+# sphere. The converter hands Mitsuba the clrt image this many times finer along each axis, which
+# confines the difference to bands a 32nd of a pixel wide.
+ENVIRONMENT_REFINEMENT = 32
+
+
+def environment_emitter(env):
+    """Mitsuba's `envmap` for clrt's `environment`: the same orientation (both map (x, y, z) to
+    u = atan2(x, -z) / 2 pi, v = acos(y) / pi), the rotation as `to_world`, the scale, and the
+    image refined so that Mitsuba's interpolation reproduces clrt's constant pixels."""
+    import mitsuba as mi
+    bitmap = mi.Bitmap(env["file"])
+    srgb = env["file"].lower().endswith((".png", ".ppm"))
+    bitmap = bitmap.convert(mi.Bitmap.PixelFormat.RGB, mi.Struct.Type.Float32, srgb_gamma=False) if srgb \
+        else bitmap.convert(mi.Bitmap.PixelFormat.RGB, mi.Struct.Type.Float32)
+    pixels = np.array(bitmap, dtype=np.float32)
+    f = ENVIRONMENT_REFINEMENT
+    # Across, Mitsuba puts fine column i at the centre of its cell, u = (i + 1/2) / width, as
+    # clrt's pixels are laid out: each pixel becomes f columns. Down, it puts fine row k at
+    # v = k / (height - 1) (measured: its rows are vertices, the first at the top, the last at the
+    # bottom), so each holds clrt's mean over the span of v about it, mixing two rows where a clrt
+    # pixel's edge crosses that span.
+    fine_columns = pixels.repeat(f, axis=1)
+    height = pixels.shape[0]
+    rows = height * f
+    half = 0.5 / (rows - 1)
+    fine = np.zeros((rows, fine_columns.shape[1], 3), dtype=np.float64)
+    for k in range(rows):
+        lo, hi = max(0.0, k / (rows - 1) - half), min(1.0, k / (rows - 1) + half)
+        for j in range(int(lo * height), min(height - 1, int(hi * height)) + 1):
+            overlap = min(hi, (j + 1) / height) - max(lo, j / height)
+            if overlap > 0:
+                fine[k] += overlap / (hi - lo) * fine_columns[j]
+    fine = fine.astype(np.float32)
+    rotation = np.array(env["rotation"], dtype=float)
+    rotation[:3, 3] = 0
+    return {"type": "envmap", "bitmap": mi.Bitmap(np.ascontiguousarray(fine)), "scale": float(env["scale"]),
+            "to_world": transform(rotation)}
+
+
 def triangle_mesh(material, corners):
     import mitsuba as mi
     # A mesh made here takes its emitter from its properties (it has no set_emitter).
@@ -364,7 +405,9 @@ def to_mitsuba(scene, spp=None, resolution=None, seed=0):
                      "pixel_format": "rgb", "component_format": "float32"},
         },
     }
-    if scene.background.max() > 0:
+    if scene.environment:
+        d["environment"] = environment_emitter(scene.environment)
+    elif scene.background.max() > 0:
         d["background"] = {"type": "constant", "radiance": rgb(scene.background)}
     for i, (material, centre, radius) in enumerate(scene.spheres):
         d[f"sphere_{i}"] = glowing({"type": "sphere", "center": centre.tolist(), "radius": radius,
