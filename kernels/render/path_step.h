@@ -68,15 +68,18 @@ CLRT_INLINE float glow_hit_weight(const Ray* ray, const Hit* hit, __global const
   return power_heuristic(1.0f, ray->pdf, (float)light->samples * density);
 }
 
-/* The MIS weight of the environment's radiance that an escaping path brings, against the
- * environment's samples in its direction; 1 where they do not sample it (the Whitted modes'
- * background, the camera's rays, a delta lobe's). */
-CLRT_INLINE float environment_weight(const Ray* ray, __global const Light* lights,
-                                     __global const RenderParams* params) {
-  if (!(ray->pdf > 0.0f) || !(params->environment < params->light_count)) return 1.0f;
+/* What a path that escapes brings: the background, or the environment's radiance along it,
+ * weighed by MIS against the environment's samples in its direction where they sample it (not
+ * for the camera's rays or a delta lobe's, pdf 0), times its throughput. */
+CLRT_INLINE float3 escaped(const Ray* ray, __global const Light* lights, __global const RenderParams* params) {
+  if (params->environment == CLRT_NO_LIGHT) return miss_colour(ray, lights, params);
   __global const Light* light = &lights[params->environment];
-  return power_heuristic(1.0f, ray->pdf,
-                         (float)light->samples * environment_density(light, vload3(0, ray->dir)));
+  const EnvironmentPlace place = environment_place(light, vload3(0, ray->dir));
+  const float w = ray->pdf > 0.0f && params->environment < params->light_count
+                      ? power_heuristic(1.0f, ray->pdf,
+                                        (float)light->samples * environment_place_density(light, place))
+                      : 1.0f;
+  return vload3(0, ray->weight) * environment_place_radiance(light, place) * w;
 }
 
 struct TransportVertex {
@@ -109,7 +112,7 @@ CLRT_INLINE float3 path_step(const Ray* ray, const Hit* hit, __global const Mate
                              uint owner, RaySink* sink) {
   const bool missed = hit->instance == CLRT_NO_HIT;
   float3 c = crossed_emission(ray, lights, params, missed ? INFINITY : hit->geometric_normal.w);
-  if (missed) return c + miss_colour(ray, lights, params) * environment_weight(ray, lights, params);
+  if (missed) return c + escaped(ray, lights, params);
   c += emitted(ray, hit, materials) * glow_hit_weight(ray, hit, materials, lights, params);
   /* Past the depth cap a ray only gathers the light it meets: the cap vertex still draws a
    * direction, so that its next-event estimates' MIS weights have their other strategy, and the

@@ -33,19 +33,27 @@ CLRT_INLINE float3 environment_to_map(__global const Light* light, float3 d) {
   return (float3)(dot3(xyz(light->position), d), dot3(xyz(light->direction), d), dot3(xyz(light->edge_u), d));
 }
 
-/* The texel (column, row) a unit map direction falls in. */
-CLRT_INLINE uint2 environment_texel(__global const Light* light, float3 m) {
+/* Where a unit world direction falls: its texel (column, row) and sin(theta) in the map. */
+typedef struct EnvironmentPlace {
+  uint2 texel;
+  float sin_theta;
+} EnvironmentPlace;
+
+CLRT_INLINE EnvironmentPlace environment_place(__global const Light* light, float3 d) {
+  const float3 m = environment_to_map(light, d);
+  const float sin_theta = sqrt(m.x * m.x + m.z * m.z);
   const float turns = exact_atan2(m.x, -m.z) * 0.159154937f;
   const float u = turns < 0.0f ? turns + 1.0f : turns;
-  const float v = exact_atan2(sqrt(m.x * m.x + m.z * m.z), m.y) * 0.318309873f;
+  const float v = exact_atan2(sin_theta, m.y) * 0.318309873f;
   const uint w = light->grid_u, h = light->grid_v;
-  return (uint2)(min(w - 1u, (uint)(u * (float)w)), min(h - 1u, (uint)(v * (float)h)));
+  EnvironmentPlace p;
+  p.texel = (uint2)(min(w - 1u, (uint)(u * (float)w)), min(h - 1u, (uint)(v * (float)h)));
+  p.sin_theta = sin_theta;
+  return p;
 }
 
-/* The radiance arriving along -d (d the direction a ray travels in, unit). */
-CLRT_INLINE float3 environment_radiance(__global const Light* light, float3 d) {
-  const uint2 t = environment_texel(light, environment_to_map(light, d));
-  return xyz(environment_texels(light)[t.y * light->grid_u + t.x]);
+CLRT_INLINE float3 environment_place_radiance(__global const Light* light, EnvironmentPlace p) {
+  return xyz(environment_texels(light)[p.texel.y * light->grid_u + p.texel.x]);
 }
 
 /* The share between cumulative values at i - 1 and i of a table `c`. */
@@ -53,20 +61,24 @@ CLRT_INLINE float share_at(__global const float* c, uint i) {
   return c[i] - (i == 0u ? 0.0f : c[i - 1u]);
 }
 
-CLRT_INLINE float environment_texel_share(__global const Light* light, uint2 t) {
-  __global const f4* row = environment_texels(light) + t.y * light->grid_u;
-  const float within = row[t.x].w - (t.x == 0u ? 0.0f : row[t.x - 1u].w);
-  return share_at(environment_rows(light), t.y) * within;
+/* The solid-angle density of the samples there: the texel's probability times the texel count
+ * over 2 pi^2 sin(theta). */
+CLRT_INLINE float environment_place_density(__global const Light* light, EnvironmentPlace p) {
+  if (!(p.sin_theta > 0.0f)) return 0.0f;
+  __global const f4* row = environment_texels(light) + p.texel.y * light->grid_u;
+  const float within = row[p.texel.x].w - (p.texel.x == 0u ? 0.0f : row[p.texel.x - 1u].w);
+  const float texels = (float)(light->grid_u * light->grid_v);
+  return share_at(environment_rows(light), p.texel.y) * within * texels /
+         (19.7392088f * p.sin_theta); /* 2 pi^2 */
 }
 
-/* The solid-angle density of the samples in unit world direction d. */
+/* The radiance arriving along -d (d the unit direction a ray travels in). */
+CLRT_INLINE float3 environment_radiance(__global const Light* light, float3 d) {
+  return environment_place_radiance(light, environment_place(light, d));
+}
+
 CLRT_INLINE float environment_density(__global const Light* light, float3 d) {
-  const float3 m = environment_to_map(light, d);
-  const float sin_theta = sqrt(m.x * m.x + m.z * m.z);
-  if (!(sin_theta > 0.0f)) return 0.0f;
-  const float texels = (float)(light->grid_u * light->grid_v);
-  return environment_texel_share(light, environment_texel(light, m)) * texels /
-         (19.7392088f * sin_theta); /* 2 pi^2 */
+  return environment_place_density(light, environment_place(light, d));
 }
 
 /* The first index whose cumulative value exceeds *u, among `count` strided by `stride` floats,
@@ -99,10 +111,11 @@ CLRT_INLINE LightSample environment_light_sample(__global const Light* light, ui
   s.to_light = d;
   s.position = p + d;
   s.distance = INFINITY;
-  /* Radiance and density both from the texel d falls in, so that the pair stays consistent
-   * where rounding puts d across a texel's edge. */
-  s.intensity = environment_radiance(light, d);
-  s.density = environment_density(light, d);
+  /* Radiance and density both from the texel d falls in, as an escaping path takes them, so
+   * that the pair stays consistent where rounding puts d across a texel's edge. */
+  const EnvironmentPlace place = environment_place(light, d);
+  s.intensity = environment_place_radiance(light, place);
+  s.density = environment_place_density(light, place);
   s.geometry = s.density > 0.0f ? 1.0f / s.density : 0.0f;
   if (!(s.density > 0.0f)) s.intensity = (float3)(0.0f);
   return s;
