@@ -15,7 +15,10 @@ std::uint64_t table_bytes(const Table& table) {
 std::uint64_t estimated_geometry_bytes(const Scene& scene) {
   std::uint64_t primitives = scene.instances.size() + scene.triangles.size() + 1;
   for (const MeshData& mesh : scene.meshes) primitives += mesh.corners.size() / 3;
-  return primitives * kGeometryBytesPerPrimitive;
+  // The environment's table: 16 bytes a pixel (its radiance and a cumulative share).
+  const std::uint64_t environment =
+      scene.environment ? 16 * std::uint64_t(scene.environment->rgb.size() / 3 + scene.environment->height) : 0;
+  return primitives * kGeometryBytesPerPrimitive + environment;
 }
 
 std::uint64_t estimated_scene_bytes(const Scene& scene) {
@@ -23,7 +26,8 @@ std::uint64_t estimated_scene_bytes(const Scene& scene) {
   for (const MeshData& mesh : scene.meshes)
     growing += table_bytes(mesh.positions) + table_bytes(mesh.normals) + table_bytes(mesh.corners) +
                table_bytes(mesh.corner_normals);
-  return 2 * growing + table_bytes(scene.instances) + estimated_geometry_bytes(scene);
+  const std::uint64_t environment = scene.environment ? table_bytes(scene.environment->rgb) : 0;
+  return 2 * growing + table_bytes(scene.instances) + environment + estimated_geometry_bytes(scene);
 }
 
 void check_scene_memory(std::uint64_t needed, const MemoryLimit& limit, const SourceLocation& where) {

@@ -13,7 +13,7 @@ namespace clrt {
 
 // Estimated bytes the scene's geometry tables take on a device (BVH nodes and leaf packets,
 // instances, normals), built on the host first: measured 165 to 220 bytes per triangle or
-// instance (docs/performance.md, BVH scaling); 256 are assumed.
+// instance (docs/performance.md, BVH scaling); 256 are assumed. With the environment's table.
 std::uint64_t estimated_geometry_bytes(const Scene& scene);
 
 // Estimated bytes the scene needs from its load to its render: its tables (the vectors counted

@@ -54,6 +54,8 @@ class CyclesScene(rtm.DumpedScene):
         if self.lens_radius > 0:
             raise SceneError("the thin lens (`lens`) is not mapped to Cycles (its aperture is set "
                              "by an f-number of the focal length in millimetres)")
+        if self.environment:
+            raise SceneError("an `environment` image is not mapped to Cycles yet")
 
     def add_object(self, placed, material, placement):
         if placed["shape"] == "cylinder":
@@ -76,6 +78,8 @@ class CyclesScene(rtm.DumpedScene):
 
 
 def check_material(material):
+    if material.emission.max() > 0:
+        raise SceneError("glowing materials (`emission`) are not mapped to Cycles yet")
     lobes = [("a Phong lobe (ks)", material.glossy), ("a mirror lobe (kr)", material.mirror),
              ("a glass lobe (kt)", material.glass)]
     found = [what for what, weight in lobes if weight > 0]

@@ -129,6 +129,13 @@ std::string unsupported_lights(const Scene& scene) {
   for (const auto& [name, count] : refused)
     out += (out.empty() ? "" : ", ") + std::to_string(count) + " " + name +
            (count == 1 ? " light" : " lights");
+  // The light that comes from no `light` command: glowing surfaces, and an environment image.
+  for (const MaterialSpec& m : scene.materials)
+    if (m.emission.x > 0 || m.emission.y > 0 || m.emission.z > 0) {
+      out += std::string(out.empty() ? "" : ", ") + "glowing surfaces";
+      break;
+    }
+  if (scene.environment) out += std::string(out.empty() ? "" : ", ") + "an environment image";
   return out;
 }
 

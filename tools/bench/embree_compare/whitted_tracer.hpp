@@ -15,7 +15,8 @@
 namespace clrt::compare {
 
 // The lights of kinds this tracer does not trace (it knows ambient, point, directional and spot
-// lights), e.g. "1 area light"; empty when it can render the scene's lights.
+// lights), e.g. "1 area light", and "glowing surfaces" and "an environment image", which it does
+// not show either; empty when it can render the scene's lights.
 std::string unsupported_lights(const Scene& scene);
 
 // The scene at the options' size and depth (one sample per pixel, trace mode) on `threads`
