@@ -43,7 +43,9 @@ TEST_CASE("N ranks write the bytes clrt writes", "[mpi]") {
   for (const Case& c : {Case{"area.ray", "--spp 4 --seed 2", "16x8", "png"},
                         Case{"area.ray", "--spp 3", "7x5", "pfm"},
                         Case{"reflect.ray", "--pixel-bounds 5,61,3,40", "20x20", "png"},
-                        Case{"glass.ray", "", "64x4", "pfm"}}) {
+                        Case{"glass.ray", "", "64x4", "pfm"},
+                        // The environment image reaches the ranks from rank 0, as meshes do.
+                        Case{"path/environment.ray", "--mode path --spp 2", "16x16", "pfm"}}) {
     const std::string args = quoted(test_scene(c.scene)) + " -q --resolution 64x48 " + c.options;
     const std::string single = dir.file("single." + c.extension);
     REQUIRE(run_clrt(args + " -o " + single).exit_code == 0);
