@@ -10,8 +10,10 @@
 #endif
 
 /* What both models include, outside the choice below: the kernel source is assembled with each
- * file expanded once, where it is first included (src/device/kernel_source.cpp). */
+ * file expanded once, where it is first included (src/device/kernel_source.cpp). The Phong lobe
+ * draws path mode's glossy directions and the trace mode's reflections under --glossy. */
 #include "light_loop.h"
+#include "lobes/phong.h"
 
 #if CLRT_TRANSPORT == CLRT_MODE_PATH
 #include "path_step.h"

@@ -9,6 +9,10 @@
 #define CLRT_RENDER_WHITTED_STEP_H
 
 #include "light_loop.h"
+#include "lobes/phong.h"
+
+/* The hashed pair of a reflection ray's direction under --glossy (light samples use 0, 1, ...). */
+#define CLRT_GLOSSY_DIRECTION 0xfffffffeu
 
 /* kd * Ld * C * (N.L) + ks * Ld * max(0, R.V)^n, where R is L mirrored about N; zero when
  * N.L <= 0. 0^0 is 1 as the contract asks. R.V is held to at most 1, where rounding can leave
@@ -42,11 +46,14 @@ CLRT_INLINE float3 transport_light_term(const TransportVertex* v, __global const
 
 
 /* The reflection and refraction rays of a hit; returns which of them exist (CLRT_SPAWN_*).
- * Total internal reflection sends the kt share along the reflection ray. */
+ * Total internal reflection sends the kt share along the reflection ray. With `glossy` the
+ * reflection ray's direction is drawn from the normalised Phong lobe of the material's exponent
+ * about the mirror direction (Cook et al. 1984), and a direction below the surface spawns none. */
 CLRT_INLINE uint spawn_children(const Ray* ray, const ShadePoint* s, __global const Material* m,
-                                float epsilon, Ray* reflected, Ray* refracted) {
+                                float epsilon, bool glossy, Ray* reflected, Ray* refracted) {
   const float3 d = vload3(0, ray->dir);
-  const float3 r = reflect_dir(d, s->n);
+  const float3 r = glossy ? sample_phong(s->n, s->v, m->shininess, jitter2(ray->path, CLRT_GLOSSY_DIRECTION))
+                          : reflect_dir(d, s->n);
   float reflect_share = m->kr;
   const float eta = s->front ? 1.0f / m->ior : m->ior;
   const float cos_i = -dot3(d, s->n);
@@ -54,7 +61,7 @@ CLRT_INLINE uint spawn_children(const Ray* ray, const ShadePoint* s, __global co
   const bool refracts = m->kt > 0.0f && k >= 0.0f;
   if (m->kt > 0.0f && !refracts) reflect_share += m->kt;
   uint spawned = 0u;
-  if (reflect_share > 0.0f) {
+  if (reflect_share > 0.0f && (!glossy || dot3(r, s->ng) > 0.0f)) {
     *reflected = child_ray(ray, offset_origin(s->p, s->ng, r, epsilon), r, reflect_share,
                            CLRT_BRANCH_REFLECT, CLRT_RAY_REFLECTION);
     spawned |= CLRT_SPAWN_REFLECTION;
@@ -81,8 +88,8 @@ CLRT_INLINE float3 whitted_step(const Ray* ray, const Hit* hit, __global const M
   gather_light_samples(&vertex, &vertex.sp, lights, params, tracing, owner, sink, &c);
   if (!tracing || ray->depth >= params->max_depth) return c;
   Ray reflected, refracted;
-  const uint spawned = spawn_children(ray, &vertex.sp, vertex.material, params->epsilon, &reflected,
-                                      &refracted);
+  const uint spawned = spawn_children(ray, &vertex.sp, vertex.material, params->epsilon,
+                                      params->glossy != 0u, &reflected, &refracted);
   if (spawned & CLRT_SPAWN_REFRACTION) sink_child(sink, CLRT_SPAWN_REFRACTION, &refracted);
   if (spawned & CLRT_SPAWN_REFLECTION) sink_child(sink, CLRT_SPAWN_REFLECTION, &reflected);
   return c;

@@ -161,8 +161,11 @@ typedef struct RenderParams {
   u32 glow_light;         /* the glow light's index in the light table, or CLRT_NO_LIGHT */
   u32 environment;        /* the environment's index in the light table (sampled in path mode,
                            * where it is below light_count), or CLRT_NO_LIGHT: the background */
+  u32 glossy;             /* trace mode, --glossy: reflection rays are drawn from the material's
+                           * Phong lobe about the mirror direction */
+  u32 pad[3];
 } RenderParams;
-CLRT_CHECK_SIZE(RenderParams, 64);
+CLRT_CHECK_SIZE(RenderParams, 80);
 
 CLRT_SHARED_END
 

@@ -93,6 +93,9 @@ void add_shading_options(CLI::App& app, CliOptions& o) {
                  "scale every camera sample whose largest channel exceeds this down to it before "
                  "samples are averaged: fewer fireflies, a biased image (default: no clamp)")
       ->check(positive_decimal_number());
+  app.add_flag("--glossy", o.glossy,
+               "trace mode: blur every reflection by the material's Phong exponent (distribution "
+               "ray tracing's glossy reflection; it converges with --spp)");
   app.add_option("--seed", o.seed, "seed of the random numbers (jitter, area lights)")
       ->transform(seed_number())
       ->capture_default_str();
@@ -222,6 +225,7 @@ RenderOptions resolve_render_options(const CliOptions& cli, const Scene& scene) 
   if (cli.max_depth) r.max_depth = *cli.max_depth;
   if (cli.mode) r.mode = *cli.mode;
   if (cli.max_sample_value) r.max_sample_value = static_cast<float>(*cli.max_sample_value);
+  r.glossy = cli.glossy;
   r.seed = cli.seed;
   r.wavefront = cli.wavefront;
   r.local_size = cli.local_size;

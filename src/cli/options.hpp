@@ -29,6 +29,7 @@ struct CliOptions {
   double exposure = 0;                  // --exposure: stops, for 8-bit outputs
   ToneCurve tonemap = ToneCurve::Clamp;  // --tonemap: the curve of 8-bit outputs
   std::optional<double> max_sample_value;  // --max-sample-value: the firefly clamp
+  bool glossy = false;                     // --glossy: blurred reflections in trace mode
   std::optional<int> width, height, samples, max_depth;
   std::optional<RenderMode> mode;
   std::uint32_t seed = 0;

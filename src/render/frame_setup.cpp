@@ -121,6 +121,7 @@ dev::RenderParams make_params(const Scene& scene, const RenderOptions& options) 
   p.epsilon = kEpsilon;
   p.max_sample_value = options.max_sample_value;
   p.glow_light = p.environment = CLRT_NO_LIGHT;  // make_frame adds them
+  p.glossy = options.glossy && options.mode == RenderMode::Trace ? 1u : 0u;
   return p;
 }
 

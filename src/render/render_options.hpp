@@ -27,6 +27,10 @@ struct RenderOptions {
   // exceeds this is scaled down to it before the samples of a pixel are averaged, which removes
   // fireflies at the price of bias. Infinity: no clamp, the unbiased estimate.
   float max_sample_value = std::numeric_limits<float>::infinity();
+  // --glossy: the trace mode's reflection rays are drawn from the material's normalised Phong
+  // lobe about the mirror direction (distribution ray tracing's blurred reflection); the other
+  // modes ignore it.
+  bool glossy = false;
   // Rays in flight per queue: device memory grows with it, never with the image size.
   // 0 picks the device class's (src/device/device_profile.cpp).
   std::uint32_t wavefront = 0;

@@ -34,7 +34,8 @@ namespace {
   X(offsetof(Mesh, has_normals)) X(sizeof(Triangle)) X(offsetof(Triangle, v2))               \
   X(sizeof(TriangleNormals)) X(sizeof(RenderParams)) X(offsetof(RenderParams, ambient))      \
   X(offsetof(RenderParams, light_count)) X(offsetof(RenderParams, epsilon))                  \
-  X(offsetof(RenderParams, environment)) X(offsetof(Light, data)) X(sizeof(BvhNode))          \
+  X(offsetof(RenderParams, environment)) X(offsetof(RenderParams, glossy))                     \
+  X(offsetof(Light, data)) X(sizeof(BvhNode))                                                \
   X(offsetof(BvhNode, max_z))                                                                \
   X(offsetof(BvhNode, child)) X(offsetof(BvhNode, count))
 

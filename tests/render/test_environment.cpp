@@ -5,6 +5,7 @@
 // command's errors.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <string>
@@ -165,5 +166,33 @@ TEST_CASE("environment: a bad file, scale or transform is an error at its place"
     } catch (const SceneError& e) {
       CHECK_THAT(e.what(), Catch::Matchers::Contains(c.message));
     }
+  }
+}
+
+TEST_CASE("glossy reflection (--glossy) blurs a mirror by the Phong lobe of its exponent", "[render][glossy]") {
+  // A mirror floor (kr 1) seen straight down through a narrow field reflects a map that is white
+  // in its top row only (theta below 22.5 degrees) and black elsewhere. A mirror shows the white;
+  // with --glossy, a reflection ray drawn from the normalised lobe cos^n about the vertical is
+  // white with probability P(cos theta > cos 22.5) = 1 - cos(22.5)^(n + 1).
+  const ScratchDir dir;
+  std::vector<float> rgb(8 * 8 * 3, 0.0f);
+  std::fill(rgb.begin(), rgb.begin() + 8 * 3, 1.0f);
+  write_image(dir.file("cap.pfm"), FloatImage(8, 8, rgb));
+  const std::string path = dir.file("floor.ray");
+  std::ofstream(path) << "eye 0 1 0\nlookat 0 0 0\nup 0 0 -1\nfov 1\nresolution 4 4\n"
+                         "environment cap.pfm\nmaterial 1 1 1 0 0 0 10 1 0\nplane\n";
+  const double expected = 1 - std::pow(std::cos(kPi / 8), 11);
+  for (const std::string& integrator : integrator_names()) {
+    INFO(integrator);
+    const auto with = [&](bool glossy) {
+      return [&, glossy](RenderOptions& o) {
+        o.samples = 4096;
+        o.glossy = glossy;
+        o.integrator = integrator;
+      };
+    };
+    CHECK(mean(render_file(path, with(false))) == 1.0);
+    // 65536 draws of a Bernoulli of p = 0.58: a standard error of 0.002.
+    CHECK(mean(render_file(path, with(true))) == Approx(expected).margin(0.01));
   }
 }
