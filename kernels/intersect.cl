@@ -8,7 +8,7 @@ __kernel void intersect(SCENE_PARAMS, __global const RenderParams* params,
   const uint i = get_global_id(0);
   if (i >= count) return;
   Hit hit;
-  scene_closest_hit(SCENE_ARGS, vload3(0, rays[i].origin), vload3(0, rays[i].dir), params->epsilon, INFINITY,
-                    &hit);
+  scene_closest_hit(SCENE_ARGS, vload3(0, rays[i].origin), vload3(0, rays[i].dir), rays[i].time,
+                    params->epsilon, INFINITY, &hit);
   hits[i] = hit;
 }

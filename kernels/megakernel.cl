@@ -43,12 +43,14 @@ __kernel void megakernel(SCENE_PARAMS, __global const RenderParams* params,
                                  first_sample, pixel_samples, i);
   while (top > 0) {
     const Ray ray = stack[--top];
-    ++counts[ray.kind];
+    ++counts[CLRT_RAY_KIND(ray)];
     Hit hit;
-    scene_closest_hit(SCENE_ARGS, vload3(0, ray.origin), vload3(0, ray.dir), params->epsilon, INFINITY, &hit);
+    scene_closest_hit(SCENE_ARGS, vload3(0, ray.origin), vload3(0, ray.dir), ray.time, params->epsilon,
+                      INFINITY, &hit);
     const float3 c = transport_step(&ray, &hit, materials, lights, params, i, &sink);
-    const ulong bit = 1ul << ray.depth;
-    level[ray.depth] = (levels_seen & bit) ? level[ray.depth] + c : c;
+    const uint depth = CLRT_RAY_DEPTH(ray);
+    const ulong bit = 1ul << depth;
+    level[depth] = (levels_seen & bit) ? level[depth] + c : c;
     levels_seen |= bit;
   }
   float3 total = (float3)(0.0f);

@@ -15,7 +15,7 @@ __kernel void count_ray_kinds(__global const Ray* rays, uint count, uint chunk,
   if (begin >= count) return;
   const uint end = min(begin + chunk, count);
   uint per_kind[CLRT_RAY_KINDS] = {0u};
-  for (uint i = begin; i < end; ++i) ++per_kind[rays[i].kind];
+  for (uint i = begin; i < end; ++i) ++per_kind[CLRT_RAY_KIND(rays[i])];
   for (uint k = 0; k < CLRT_RAY_KINDS; ++k) partial[c * CLRT_RAY_KINDS + k] = per_kind[k];
 }
 

@@ -28,10 +28,10 @@ CLRT_INLINE HitRecord hit_record_none(float tmax) {
   return r;
 }
 
-/* Object-space normal n of instance `inst` in world space; `fallback` when n cannot be
- * normalised (degenerate triangle or interpolated normals that cancel out). */
-CLRT_INLINE float3 bvh_world_normal(__global const Instance* inst, float3 n, float3 fallback) {
-  return dot3(n, n) > 0.0f ? instance_normal_to_world(inst, n) : fallback;
+/* Object-space normal n of an instance in world space, by its frame f; `fallback` when n cannot
+ * be normalised (degenerate triangle or interpolated normals that cancel out). */
+CLRT_INLINE float3 bvh_world_normal(const InstanceFrame* f, float3 n, float3 fallback) {
+  return dot3(n, n) > 0.0f ? frame_normal_to_world(f, n) : fallback;
 }
 
 /* Vertex j of lane `lane` of a triangle packet. */
@@ -40,11 +40,13 @@ CLRT_INLINE float3 bvh_packet_vertex(__global const BvhTrianglePacket* p, int j,
   return (float3)(v[lane], v[4 + lane], v[8 + lane]);
 }
 
-/* The hit of the world ray o + t d that *r records, as the renderer's Hit. A sphere's object-space
+/* The hit of the world ray o + t d at `time` that *r records, as the renderer's Hit. A sphere's object-space
  * normal is its hit point in object space (the sphere tests in world space leave none); a
  * triangle's vertices come from its packet, which the search has just read, rather than from
  * the triangle table. */
-CLRT_INLINE void hit_record_resolve(const HitRecord* r, float3 o, float3 d, __global const Instance* instances,
+CLRT_INLINE void hit_record_resolve(const HitRecord* r, float3 o, float3 d, float time,
+                               __global const Instance* instances,
+                               __global const InstanceMotion* motions,
                                __global const Mesh* meshes, __global const BvhBlock* bvh,
                                __global const TriangleNormals* triangle_normals,
                                __global const u32* triangle_materials, Hit* hit) {
@@ -59,11 +61,12 @@ CLRT_INLINE void hit_record_resolve(const HitRecord* r, float3 o, float3 d, __gl
   }
   __global const Instance* inst = instances + r->instance;
   hit->glow = inst->glow;
+  const InstanceFrame frame = instance_frame(inst, motions, time);
   float3 geometric, shading;
   if (inst->shape != CLRT_SHAPE_MESH) {
     const float3 object_normal = inst->shape == CLRT_SHAPE_SPHERE
-                                     ? instance_point_to_object(inst, o + r->t * d) : r->object_normal;
-    geometric = shading = bvh_world_normal(inst, object_normal, (float3)(0.0f, 1.0f, 0.0f));
+                                     ? frame_point_to_object(&frame, o + r->t * d) : r->object_normal;
+    geometric = shading = bvh_world_normal(&frame, object_normal, (float3)(0.0f, 1.0f, 0.0f));
     hit->primitive = 0u;
     hit->material = inst->material;
   } else {
@@ -72,13 +75,13 @@ CLRT_INLINE void hit_record_resolve(const HitRecord* r, float3 o, float3 d, __gl
     const u32 triangle = packet->triangle[r->lane];
     const float3 v0 = bvh_packet_vertex(packet, 0, r->lane), v1 = bvh_packet_vertex(packet, 1, r->lane),
                  v2 = bvh_packet_vertex(packet, 2, r->lane);
-    geometric = bvh_world_normal(inst, triangle_normal(v0, v1, v2), (float3)(0.0f, 1.0f, 0.0f));
+    geometric = bvh_world_normal(&frame, triangle_normal(v0, v1, v2), (float3)(0.0f, 1.0f, 0.0f));
     shading = geometric;
     if (mesh->has_normals) {
       __global const float* n = triangle_normals[triangle].n;
       const float3 interpolated = (1.0f - r->u - r->v) * (float3)(n[0], n[1], n[2]) +
                                   r->u * (float3)(n[3], n[4], n[5]) + r->v * (float3)(n[6], n[7], n[8]);
-      shading = bvh_world_normal(inst, interpolated, geometric);
+      shading = bvh_world_normal(&frame, interpolated, geometric);
     }
     hit->primitive = triangle - mesh->first_triangle;
     hit->material = inst->material == CLRT_MATERIAL_PER_TRIANGLE

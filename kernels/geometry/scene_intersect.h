@@ -27,27 +27,30 @@
 #include "geometry/bvh_ray.h"
 #include "geometry/bvh_stack.h"
 
-#define SCENE_PARAMS uint instance_count, uint plane_count, __global const Instance* instances, __global const Mesh* meshes, __global const TriangleNormals* triangle_normals, __global const uint* triangle_materials, __global const BvhBlock* bvh
-#define SCENE_ARGS instance_count, plane_count, instances, meshes, triangle_normals, triangle_materials, bvh
+#define SCENE_PARAMS uint instance_count, uint plane_count, __global const Instance* instances, __global const InstanceMotion* motions, __global const Mesh* meshes, __global const TriangleNormals* triangle_normals, __global const uint* triangle_materials, __global const BvhBlock* bvh
+#define SCENE_ARGS instance_count, plane_count, instances, motions, meshes, triangle_normals, triangle_materials, bvh
 /* The same tables kept in one value by a function that needs them later (a sink), and passed on
  * from it: SceneTables t = {SCENE_ARGS}; scene_any_hit(SCENE_ARGS_OF(t), ...). */
 typedef struct SceneTables {
   uint instance_count, plane_count;
   __global const Instance* instances;
+  __global const InstanceMotion* motions;
   __global const Mesh* meshes;
   __global const TriangleNormals* triangle_normals;
   __global const uint* triangle_materials;
   __global const BvhBlock* bvh;
 } SceneTables;
-#define SCENE_ARGS_OF(t) (t).instance_count, (t).plane_count, (t).instances, (t).meshes, (t).triangle_normals, (t).triangle_materials, (t).bvh
+#define SCENE_ARGS_OF(t) (t).instance_count, (t).plane_count, (t).instances, (t).motions, (t).meshes, (t).triangle_normals, (t).triangle_materials, (t).bvh
 
-/* Canonical shape instance `index` against the world ray; updates *best on a hit in
+/* Canonical shape instance `index` against the world ray at `time`; updates *best on a hit in
  * (tmin, best->t). */
-CLRT_INLINE bool bvh_test_shape(__global const Instance* instances, u32 index, float3 o, float3 d,
-                           float tmin, HitRecord* best) {
+CLRT_INLINE bool bvh_test_shape(__global const Instance* instances,
+                                __global const InstanceMotion* motions, u32 index, float3 o,
+                                float3 d, float time, float tmin, HitRecord* best) {
   __global const Instance* inst = instances + index;
+  const InstanceFrame frame = instance_frame(inst, motions, time);
   float3 oo, od, n;
-  instance_ray_to_object(inst, o, d, &oo, &od);
+  ray_to_object(frame.to_object, o, d, &oo, &od);
   if (!intersect_canonical(inst->shape, inst->cone_r0, inst->cone_r1, oo, od, tmin, &best->t, &n))
     return false;
   best->instance = index;
@@ -55,15 +58,16 @@ CLRT_INLINE bool bvh_test_shape(__global const Instance* instances, u32 index, f
   return true;
 }
 
-/* The search behind both queries: hits in (tmin, best->t) go into *best; `any` stops at the
+/* The search behind both queries, for the ray at `time` (which places moving instances): hits
+ * in (tmin, best->t) go into *best; `any` stops at the
  * first one. Returns whether anything was hit. The one function a compiler may keep out of
  * line (inlined into every kernel it doubles PoCL's cold build), so the ray crosses the call as
  * float4s, never float3s. */
-CLRT_CALLABLE bool scene_search(SCENE_PARAMS, float4 origin, float4 direction, float tmin, bool any,
-                                HitRecord* best) {
+CLRT_CALLABLE bool scene_search(SCENE_PARAMS, float4 origin, float4 direction, float time,
+                                float tmin, bool any, HitRecord* best) {
   const float3 o = origin.xyz, d = direction.xyz;
   for (u32 p = 0; p < plane_count; ++p)
-    if (bvh_test_shape(instances, p, o, d, tmin, best) && any) return true;
+    if (bvh_test_shape(instances, motions, p, o, d, time, tmin, best) && any) return true;
   if (instance_count == plane_count) return best->instance != CLRT_NO_HIT;
   const BvhRay world = bvh_ray(o, d);
   BvhRay object;                /* the ray in the object space of mesh_instance */
@@ -82,12 +86,19 @@ CLRT_CALLABLE bool scene_search(SCENE_PARAMS, float4 origin, float4 direction, f
     } else if (e.count & CLRT_BVH_SPHERE_LEAF) {
       hit = bvh_test_spheres(bvh, ~e.ref, e.count & ~CLRT_BVH_SPHERE_LEAF, o, d, tmin, any, best);
     } else if (e.count & CLRT_BVH_INSTANCE_LEAF) {
-      hit = bvh_test_shape(instances, ~e.ref, o, d, tmin, best);
+      hit = bvh_test_shape(instances, motions, ~e.ref, o, d, time, tmin, best);
     } else if (e.count & CLRT_BVH_MESH_LEAF) {
       __global const BvhMeshInstancePacket* entry =
           (__global const BvhMeshInstancePacket*)(bvh + ~e.ref);
+      float4 rows[3];
+      if (entry->motion == CLRT_NO_MOTION) {
+        for (int r = 0; r < 3; ++r) rows[r] = entry->world_to_object[r];
+      } else {
+        const InstanceFrame frame = motion_frame(motions + entry->motion, time);
+        for (int r = 0; r < 3; ++r) rows[r] = frame.to_object[r];
+      }
       float3 oo, od;
-      ray_to_object(entry->world_to_object, o, d, &oo, &od);
+      ray_to_object(rows, o, d, &oo, &od);
       object = bvh_ray(oo, od);
       ray = &object;
       mesh_instance = entry->instance;
@@ -103,25 +114,28 @@ CLRT_CALLABLE bool scene_search(SCENE_PARAMS, float4 origin, float4 direction, f
   return best->instance != CLRT_NO_HIT;
 }
 
-/* Closest hit with tmin < t < tmax. Fills *hit completely: geometric_normal (world, unit,
+/* Closest hit with tmin < t < tmax of the ray at `time`. Fills *hit completely: geometric_normal (world, unit,
  * outward/CCW front as the surface defines it, NOT flipped towards the ray) with .w = t,
  * shading_normal (world, unit: interpolated vertex normal for meshes with normals, else the
  * geometric normal), instance, primitive (triangle index within its mesh, else 0), material
  * (resolved: per-triangle for the loose-triangle mesh). On a miss sets hit->instance =
  * CLRT_NO_HIT and returns false. */
-CLRT_INLINE bool scene_closest_hit(SCENE_PARAMS, float3 o, float3 d, float tmin, float tmax, Hit* hit) {
+CLRT_INLINE bool scene_closest_hit(SCENE_PARAMS, float3 o, float3 d, float time, float tmin,
+                                   float tmax, Hit* hit) {
   HitRecord best = hit_record_none(tmax);
-  const bool found = scene_search(SCENE_ARGS, (float4)(o, 0.0f), (float4)(d, 0.0f), tmin, false, &best);
-  hit_record_resolve(&best, o, d, instances, meshes, bvh, triangle_normals, triangle_materials, hit);
+  const bool found =
+      scene_search(SCENE_ARGS, (float4)(o, 0.0f), (float4)(d, 0.0f), time, tmin, false, &best);
+  hit_record_resolve(&best, o, d, time, instances, motions, meshes, bvh, triangle_normals, triangle_materials, hit);
   return found;
 }
 
-/* Any hit with tmin <= t < tmax (early exit). */
-CLRT_INLINE bool scene_any_hit(SCENE_PARAMS, float3 o, float3 d, float tmin, float tmax) {
+/* Any hit with tmin <= t < tmax of the ray at `time` (early exit). */
+CLRT_INLINE bool scene_any_hit(SCENE_PARAMS, float3 o, float3 d, float time, float tmin,
+                               float tmax) {
   HitRecord best = hit_record_none(tmax);
   /* The shape routines accept t > tmin; the next float below tmin makes that t >= tmin. */
-  return scene_search(SCENE_ARGS, (float4)(o, 0.0f), (float4)(d, 0.0f), nextafter(tmin, -INFINITY), true,
-                      &best);
+  return scene_search(SCENE_ARGS, (float4)(o, 0.0f), (float4)(d, 0.0f), time,
+                      nextafter(tmin, -INFINITY), true, &best);
 }
 
 #endif

@@ -44,6 +44,22 @@ CLRT_INLINE float2 lens_sample(const Camera* cam, bool sobol, uint pixel, uint p
   return stratified(cell, cam->grid_u, cam->grid_v, jitter2(path, CLRT_LENS_JITTER));
 }
 
+/* Camera sample k's time within the shutter: the Sobol sampler's own number, or a jittered
+ * stratum of the shutter, the strata dealt to the pixel's samples in a shuffled order of their
+ * own (as the lens's cells are); the middle of the shutter for a single sample. Drawn from a
+ * stream of its own, so a scene without motion renders the bits it rendered without it. */
+CLRT_INLINE float shutter_time(const Camera* cam, bool sobol, uint pixel, uint path, uint k) {
+  float u = 0.5f;
+  if (sobol) {
+    u = sobol_sample(sample_key(path, 0u, CLRT_TIME_JITTER), k).x;
+  } else if (cam->samples > 1u) {
+    const uint stratum =
+        shuffled_index(k, cam->samples, hash_combine(pixel_stream(cam->seed, pixel), CLRT_TIME_JITTER));
+    u = ((float)stratum + jitter2(path, CLRT_TIME_JITTER).x) / (float)cam->samples;
+  }
+  return (1.0f - u) * cam->shutter_open + u * cam->shutter_close;
+}
+
 CLRT_INLINE Ray wave_camera_ray(const Camera* cam, uint region_x, uint region_y, uint region_width,
                                 uint first_pixel, uint first_sample, uint pixel_samples,
                                 uint index) {
@@ -77,9 +93,9 @@ CLRT_INLINE Ray wave_camera_ray(const Camera* cam, uint region_x, uint region_y,
   vstore3((float3)(1.0f), 0, ray.weight);
   ray.pdf = 0.0f;
   ray.sample = index;
-  ray.depth = 0u;
+  ray.depth_kind = CLRT_DEPTH_KIND(0u, CLRT_RAY_CAMERA);
   ray.path = path;
-  ray.kind = CLRT_RAY_CAMERA;
+  ray.time = shutter_time(cam, sobol, pixel, path, k);
   return ray;
 }
 

@@ -20,11 +20,11 @@ CLRT_INLINE float3 transport_light_term(const TransportVertex* vertex, __global 
                                         const LightSample* ls);
 
 /* Adds each light sample's term to *colour at once when shadows_tested is false (cast mode), and
- * otherwise hands its shadow ray to the sink. */
+ * otherwise hands its shadow ray, at the owner ray's time, to the sink. */
 CLRT_INLINE void gather_light_samples(const TransportVertex* vertex, const ShadePoint* sp,
                                       __global const Light* lights,
                                       __global const RenderParams* params, bool shadows_tested,
-                                      uint owner, RaySink* sink, float3* colour) {
+                                      uint owner, float time, RaySink* sink, float3* colour) {
   for (uint l = 0; l < params->light_count; ++l) {
     __global const Light* light = &lights[l];
     for (uint j = 0; j < light->samples; ++j) {
@@ -37,7 +37,7 @@ CLRT_INLINE void gather_light_samples(const TransportVertex* vertex, const Shade
         *colour += term;
         continue;
       }
-      const ShadowRay sr = shadow_ray_to(sp, &ls, term, owner, params->epsilon);
+      const ShadowRay sr = shadow_ray_to(sp, &ls, term, owner, time, params->epsilon);
       sink_shadow(sink, use, &sr, colour);
     }
   }

@@ -24,7 +24,7 @@
 
 /* The ray's pair of random numbers for `use` at its depth. */
 CLRT_INLINE float2 path_sample(const Ray* ray, uint use) {
-  return sobol_sample(sample_key(ray->path, ray->depth, use), ray->sample_index);
+  return sobol_sample(sample_key(ray->path, CLRT_RAY_DEPTH(*ray), use), ray->sample_index);
 }
 
 /* The power heuristic for `count` draws from density `pdf` against one from `other`, as a ratio
@@ -117,14 +117,14 @@ CLRT_INLINE float3 path_step(const Ray* ray, const Hit* hit, __global const Mate
   /* Past the depth cap a ray only gathers the light it meets: the cap vertex still draws a
    * direction, so that its next-event estimates' MIS weights have their other strategy, and the
    * light its mirror and glass lobes bring (which no shadow ray samples) is not lost. */
-  if (ray->depth > params->max_depth) return c;
+  if (CLRT_RAY_DEPTH(*ray) > params->max_depth) return c;
   TransportVertex vertex;
   vertex.sp = shade_point(ray, hit, materials);
   vertex.material = &materials[vertex.sp.material];
   vertex.lobes = path_lobes(vertex.material);
   vertex.ray = ray;
   if (has_smooth_lobes(&vertex.lobes))
-    gather_light_samples(&vertex, &vertex.sp, lights, params, true, owner, sink, &c);
+    gather_light_samples(&vertex, &vertex.sp, lights, params, true, owner, ray->time, sink, &c);
   const float2 choice = path_sample(ray, CLRT_PATH_CHOICE);
   LobeSample s;
   float pdf;
@@ -141,7 +141,7 @@ CLRT_INLINE float3 path_step(const Ray* ray, const Hit* hit, __global const Mate
    * cuts added noise at equal samples. Sparing the first two keeps one-bounce light (and a
    * furnace test) free of roulette noise. */
   const float keep =
-      ray->depth < CLRT_PATH_ROULETTE_DEPTH ? 1.0f : fmin(1.0f, sqrt(max3(throughput) / scale));
+      CLRT_RAY_DEPTH(*ray) < CLRT_PATH_ROULETTE_DEPTH ? 1.0f : fmin(1.0f, sqrt(max3(throughput) / scale));
   if (keep < 1.0f) {
     if (!(choice.y < keep)) return c;
     throughput /= keep;

@@ -32,11 +32,12 @@ CLRT_INLINE uint camera_path(uint seed, uint pixel, uint sample) {
 /* A secondary ray's stream: its parent's and the branch taken. */
 CLRT_INLINE uint child_path(uint parent, uint branch) { return hash_combine(parent, branch); }
 
-/* The stream indices of the camera's jitter and of its lens sample; light samples use indices
+/* The stream indices of the camera's jitter, of its lens sample and of its time; light samples use indices
  * from 0 up and path mode's own uses the two below CLRT_CAMERA_JITTER (render/path_step.h), so
  * none share numbers. */
 #define CLRT_CAMERA_JITTER 0xffffffffu
 #define CLRT_LENS_JITTER 0xfffffffcu
+#define CLRT_TIME_JITTER 0xfffffffbu
 
 /* Two jitters for stratum `index` of a stream, e.g. one camera sample or one light sample. */
 CLRT_INLINE float2 jitter2(uint path, uint index) {

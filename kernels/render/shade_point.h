@@ -65,9 +65,10 @@ CLRT_INLINE float3 offset_origin(float3 p, float3 ng, float3 dir, float epsilon)
   return p + (dot3(ng, dir) >= 0.0f ? epsilon : -epsilon) * ng;
 }
 
-/* The shadow ray that carries `term` of light sample `ls` to the ray `owner`. */
+/* The shadow ray that carries `term` of light sample `ls` to the ray `owner`, whose time it
+ * keeps. */
 CLRT_INLINE ShadowRay shadow_ray_to(const ShadePoint* s, const LightSample* ls, float3 term, uint owner,
-                                    float epsilon) {
+                                    float time, float epsilon) {
   const float3 origin = offset_origin(s->p, s->ng, ls->to_light, epsilon);
   const bool directional = ls->distance == INFINITY;
   ShadowRay sr;
@@ -75,13 +76,14 @@ CLRT_INLINE ShadowRay shadow_ray_to(const ShadePoint* s, const LightSample* ls, 
   sr.dir = as_f4(directional ? ls->to_light : normalize3(ls->position - origin));
   sr.contribution = as_f4(term);
   sr.owner = owner;
-  sr.pad[0] = sr.pad[1] = sr.pad[2] = 0u;
+  sr.time = time;
+  sr.pad[0] = sr.pad[1] = 0u;
   return sr;
 }
 
-/* A ray leaving the parent's hit with `share` of its weight. It keeps its camera sample (and that
- * sample's index, which path mode's Sobol samples need) and the refractions' radiance scale so
- * far, and takes a stream of its own from its parent's and the branch. */
+/* A ray leaving the parent's hit with `share` of its weight. It keeps its camera sample (that
+ * sample's index, which path mode's Sobol samples need, and its time) and the refractions'
+ * radiance scale so far, and takes a stream of its own from its parent's and the branch. */
 CLRT_INLINE Ray child_ray(const Ray* parent, float3 origin, float3 dir, float share, uint branch,
                           uint kind) {
   Ray r;
@@ -92,9 +94,9 @@ CLRT_INLINE Ray child_ray(const Ray* parent, float3 origin, float3 dir, float sh
   vstore3(vload3(0, parent->weight) * share, 0, r.weight);
   r.pdf = 0.0f;
   r.sample = parent->sample;
-  r.depth = parent->depth + 1u;
+  r.depth_kind = CLRT_DEPTH_KIND(CLRT_RAY_DEPTH(*parent) + 1u, kind);
   r.path = child_path(parent->path, branch);
-  r.kind = kind;
+  r.time = parent->time;
   return r;
 }
 

@@ -85,8 +85,8 @@ CLRT_INLINE float3 whitted_step(const Ray* ray, const Hit* hit, __global const M
   vertex.material = &materials[vertex.sp.material];
   vertex.path = ray->path;
   float3 c = ambient_colour(&vertex.sp, vertex.material, params) + emitted(ray, hit, materials);
-  gather_light_samples(&vertex, &vertex.sp, lights, params, tracing, owner, sink, &c);
-  if (!tracing || ray->depth >= params->max_depth) return c;
+  gather_light_samples(&vertex, &vertex.sp, lights, params, tracing, owner, ray->time, sink, &c);
+  if (!tracing || CLRT_RAY_DEPTH(*ray) >= params->max_depth) return c;
   Ray reflected, refracted;
   const uint spawned = spawn_children(ray, &vertex.sp, vertex.material, params->epsilon,
                                       params->glossy != 0u, &reflected, &refracted);

@@ -100,7 +100,8 @@ typedef struct BvhMeshInstancePacket {
   f4 world_to_object[3]; /* as Instance.world_to_object */
   u32 root;              /* block of the mesh's bottom-level root */
   u32 instance;          /* index into the instance table */
-  u32 pad[2];
+  u32 motion;            /* as Instance.motion: when moving, M^-1 comes from the motion table */
+  u32 pad;
 } BvhMeshInstancePacket;
 CLRT_CHECK_SIZE(BvhMeshInstancePacket, 64);
 

@@ -15,6 +15,12 @@ CLRT_SHARED_BEGIN
 #define CLRT_RAY_SHADOW 3u
 #define CLRT_RAY_KINDS 4u
 
+/* Ray.depth_kind packs a queue ray's depth and kind in one word, so that the record has room
+ * for its time. */
+#define CLRT_DEPTH_KIND(depth, kind) (((depth) << 2) | (kind))
+#define CLRT_RAY_DEPTH(ray) ((ray).depth_kind >> 2)
+#define CLRT_RAY_KIND(ray) ((ray).depth_kind & 3u)
+
 /* Child-ray slots per ray of a queue: its reflection (slot 0) and its refraction (slot 1). */
 #define CLRT_CHILD_SLOTS 2u
 
@@ -39,11 +45,13 @@ typedef struct Ray {
                          * multiple importance sampling where it crosses a light; 0 from the
                          * camera and after a mirror or glass bounce */
   u32 sample;           /* camera sample index within the current wave */
-  u32 depth;            /* 0 for camera rays */
+  u32 depth_kind;       /* depth << 2 | kind: depth 0 for camera rays, kind CLRT_RAY_* (one of
+                         * the first three); CLRT_RAY_DEPTH, CLRT_RAY_KIND and CLRT_DEPTH_KIND */
   u32 path;             /* seeds this ray's random numbers: the hash of the branch choices since
                          * the camera ray, which starts from the camera sample's stream (in path
                          * mode the pixel's) */
-  u32 kind;             /* CLRT_RAY_* */
+  float time;           /* the camera sample's time within the shutter, which every ray of the
+                         * sample keeps: moving instances are where they are at that time */
 } Ray;
 CLRT_CHECK_SIZE(Ray, 64);
 
@@ -65,7 +73,8 @@ typedef struct ShadowRay {
   f4 dir;          /* xyz unit direction towards the light; w unused */
   f4 contribution; /* rgb added to the owner ray's colour when unblocked; w unused */
   u32 owner;       /* index of the shaded ray in the current queue */
-  u32 pad[3];
+  float time;      /* its owner's Ray.time */
+  u32 pad[2];
 } ShadowRay;
 CLRT_CHECK_SIZE(ShadowRay, 64);
 

@@ -25,8 +25,11 @@ typedef struct Camera {
   u32 seed;
   u32 sampler;          /* CLRT_SAMPLER_* */
   u32 thin_lens;        /* 1: rays leave the lens (lens_u, lens_v); 0: all leave the eye */
+  float shutter_open;   /* each camera sample's time is drawn in [shutter_open, shutter_close] */
+  float shutter_close;
+  u32 pad[2];
 } Camera;
-CLRT_CHECK_SIZE(Camera, 128);
+CLRT_CHECK_SIZE(Camera, 144);
 
 typedef struct Material {
   f4 color;    /* rgb surface colour; w unused */
@@ -114,9 +117,29 @@ typedef struct Instance {
   u32 glow;              /* its place in the emitter table (CLRT_NO_GLOW, CLRT_GLOW_TRIANGLES
                             or its sphere's row) */
   float cone_r0, cone_r1; /* CLRT_SHAPE_CONE: radius at y = -1 and at y = +1 */
-  float pad1, pad2;
+  u32 motion;             /* CLRT_NO_MOTION, or its row in the motion table; the rows above are
+                             then M^-1 at time 0, which only the host reads */
+  u32 pad;
 } Instance;
 CLRT_CHECK_SIZE(Instance, 128);
+
+#define CLRT_NO_MOTION 0xffffffffu
+
+/* A moving instance's two poses, M = T R S at time 0 and at time 1 (a translation, a rotation
+ * and a symmetric stretch, the polar decomposition of M's linear part). At time t the device
+ * interpolates T and S linearly and R by spherical linear interpolation of its quaternions
+ * (geometry/motion.h); times outside [0, 1] hold the nearer pose. */
+typedef struct InstanceMotion {
+  f4 translation[2];    /* xyz; w unused */
+  f4 rotation[2];       /* unit quaternions (x, y, z, w), the second taken on the first's side
+                         * (their dot product >= 0), so that the slerp takes the short way */
+  f4 stretch_diagonal[2]; /* S00, S11, S22; w unused */
+  f4 stretch_off[2];    /* S01, S02, S12; w unused */
+  float angle_turns;    /* the angle between the quaternions, in turns; 0 when they are equal */
+  float inverse_sine;   /* 1 / sin of that angle */
+  u32 pad[2];
+} InstanceMotion;
+CLRT_CHECK_SIZE(InstanceMotion, 144);
 
 /* A bottom-level model in its own object space; shared by all the instances that use it. */
 typedef struct Mesh {

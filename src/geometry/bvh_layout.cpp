@@ -152,6 +152,7 @@ dev::BvhMeshInstancePacket mesh_instance_packet(const TopLevelItems& top, std::u
   for (int r = 0; r < 3; ++r) p.world_to_object[r] = it.world_to_object[r];
   p.root = static_cast<std::uint32_t>(it.mesh_root);
   p.instance = top.first_instance + item;
+  p.motion = it.motion;
   return p;
 }
 

@@ -24,6 +24,7 @@ struct TopLevelItem {
   // the top level then leads straight into the mesh's nodes.
   bool merged = false;
   dev::f4 world_to_object[3] = {};  // a mesh instance's rows of M^-1
+  dev::u32 motion = CLRT_NO_MOTION;  // a moving mesh instance's Instance.motion
 };
 
 // The top level's leaf items: item i is instance first_instance + i.

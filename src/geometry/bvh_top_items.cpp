@@ -39,7 +39,13 @@ TopItems top_items(const Scene& scene, const GeometryData& geometry, const std::
     const std::size_t i = geometry.plane_count + item;
     const int source = geometry.instance_source[i];
     const dev::Instance& inst = geometry.instances[i];
-    if (inst.shape == CLRT_SHAPE_MESH) {
+    if (source >= 0 && scene.instances[source].motion >= 0) {
+      const InstanceSpec& spec = scene.instances[source];
+      const Mat4& end = scene.end_transforms[static_cast<std::size_t>(spec.motion)];
+      items.boxes[item] = inst.shape == CLRT_SHAPE_MESH
+                              ? moving_box(mesh_boxes[inst.mesh], spec.transform, end)
+                              : moving_shape_box(spec, end);
+    } else if (inst.shape == CLRT_SHAPE_MESH) {
       const Mat4 m = source < 0 ? Mat4::identity() : scene.instances[source].transform;
       items.boxes[item] = transformed_box(mesh_boxes[inst.mesh], m);
     } else {
@@ -59,7 +65,8 @@ std::vector<dev::u32> identity_only_instances(const Scene& scene, const Geometry
     if (inst.shape != CLRT_SHAPE_MESH) continue;
     const int source = geometry.instance_source[i];
     ++uses[inst.mesh];
-    if (source < 0 || is_identity(scene.instances[source].transform)) only[inst.mesh] = static_cast<dev::u32>(i);
+    if (source < 0 || (scene.instances[source].motion < 0 && is_identity(scene.instances[source].transform)))
+      only[inst.mesh] = static_cast<dev::u32>(i);
   }
   for (std::size_t m = 0; m < only.size(); ++m)
     if (uses[m] != 1) only[m] = CLRT_NO_HIT;
@@ -79,6 +86,7 @@ TopLevelItems top_level_items(const GeometryData& geometry, const std::vector<de
       item.mesh_root = 0;
       item.merged = only[inst.mesh] == index;
       for (int r = 0; r < 3; ++r) item.world_to_object[r] = inst.world_to_object[r];
+      item.motion = inst.motion;
     }
     top.items.push_back(item);
   }

@@ -10,6 +10,7 @@ DeviceGeometry::DeviceGeometry(DeviceContext& device, std::shared_ptr<const Geom
   args_.instance_count = static_cast<cl_uint>(g.instances.size());
   args_.plane_count = g.plane_count;
   args_.instances = share(device, g.instances, "instance table", tables_);
+  args_.motions = share(device, g.motions, "motion table", tables_);
   args_.meshes = share(device, g.meshes, "mesh table", tables_);
   args_.triangle_normals = share(device, g.triangle_normals, "triangle normal table", tables_);
   args_.triangle_materials = share(device, g.triangle_materials, "triangle material table", tables_);

@@ -14,6 +14,7 @@
 namespace clrt {
 
 CLRT_DEVICE_TYPE_NAME(dev::Instance, "Instance");
+CLRT_DEVICE_TYPE_NAME(dev::InstanceMotion, "InstanceMotion");
 CLRT_DEVICE_TYPE_NAME(dev::Mesh, "Mesh");
 CLRT_DEVICE_TYPE_NAME(dev::Triangle, "Triangle");
 CLRT_DEVICE_TYPE_NAME(dev::TriangleNormals, "TriangleNormals");
@@ -25,12 +26,13 @@ struct SceneArgs {
   cl_uint instance_count = 0;
   cl_uint plane_count = 0;
   Global<const dev::Instance> instances;
+  Global<const dev::InstanceMotion> motions;
   Global<const dev::Mesh> meshes;
   Global<const dev::TriangleNormals> triangle_normals;
   Global<const cl_uint> triangle_materials;
   Global<const dev::BvhBlock> bvh;
 
-  CLRT_KERNEL_ARGS(instance_count, plane_count, instances, meshes, triangle_normals,
+  CLRT_KERNEL_ARGS(instance_count, plane_count, instances, motions, meshes, triangle_normals,
                    triangle_materials, bvh)
 };
 

@@ -82,7 +82,7 @@ bool glow_is_sampled(const Scene& scene) {
   for (const TriangleSpec& t : scene.triangles)
     if (glow_luminance(emission_of(scene, t.material)) > 0) return true;
   for (const InstanceSpec& spec : scene.instances) {
-    if (!(glow_luminance(emission_of(scene, spec.material)) > 0)) continue;
+    if (!(glow_luminance(emission_of(scene, spec.material)) > 0) || spec.motion >= 0) continue;
     if (spec.shape == ShapeKind::Cube || spec.shape == ShapeKind::Mesh ||
         world_sphere(spec))
       return true;
@@ -109,7 +109,8 @@ void build_emitter_table(const Scene& scene, const std::vector<TriangleSource>& 
     }
     const InstanceSpec& spec = scene.instances[static_cast<std::size_t>(out.instance_source[i])];
     const Vec3 radiance = emission_of(scene, spec.material);
-    if (!(glow_luminance(radiance) > 0)) continue;
+    // A moving surface has no one place to sample: paths that hit it take its light in full.
+    if (!(glow_luminance(radiance) > 0) || spec.motion >= 0) continue;
     const Mat4& m = spec.transform;
     const bool mirrors = m.determinant() < 0;
     switch (spec.shape) {

@@ -6,6 +6,7 @@
 
 #include "geometry/bvh_scene.hpp"
 #include "geometry/emitter_table.hpp"
+#include "geometry/instance_motion.hpp"
 #include "geometry/instance_table.hpp"
 #include "geometry/mesh_table.hpp"
 
@@ -21,7 +22,13 @@ void append_instances(const Scene& scene, bool planes, GeometryData& out) {
   for (std::size_t i = 0; i < scene.instances.size(); ++i) {
     const InstanceSpec& spec = scene.instances[i];
     if ((spec.shape == ShapeKind::Plane) != planes) continue;
-    out.instances.push_back(device_instance(spec, static_cast<dev::u32>(spec.mesh)));
+    dev::Instance inst = device_instance(spec, static_cast<dev::u32>(spec.mesh));
+    if (spec.motion >= 0) {
+      inst.motion = static_cast<dev::u32>(out.motions.size());
+      out.motions.push_back(
+          device_motion(spec.transform, scene.end_transforms[static_cast<std::size_t>(spec.motion)]));
+    }
+    out.instances.push_back(inst);
     out.instance_source.push_back(static_cast<int>(i));
   }
 }
@@ -51,7 +58,7 @@ GeometryData build_tables(const Scene& scene, const std::function<void(std::size
 }  // namespace
 
 std::size_t GeometryData::device_bytes() const {
-  return bytes(instances) + bytes(meshes) + bytes(triangle_normals) + bytes(triangle_materials) +
+  return bytes(instances) + bytes(motions) + bytes(meshes) + bytes(triangle_normals) + bytes(triangle_materials) +
          bytes(nodes);
 }
 

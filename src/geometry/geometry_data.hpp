@@ -16,6 +16,7 @@ namespace clrt {
 struct GeometryData {
   DeviceTable<dev::Instance> instances;  // planes are [0, plane_count): they stay outside the BVH
   dev::u32 plane_count = 0;
+  DeviceTable<dev::InstanceMotion> motions;  // one per moving instance (Instance.motion)
   DeviceTable<dev::Mesh> meshes;  // the scene's mesh files, then one mesh of the loose triangles
   // Per triangle, each mesh's triangles in the order of its BVH leaves, which is the order
   // Hit.primitive counts in (triangle_source maps them back to the file's order):

@@ -1,8 +1,11 @@
 #include "geometry/instance_bounds.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+
+#include "geometry/instance_motion.hpp"
 
 namespace clrt {
 namespace {
@@ -49,7 +52,59 @@ Extent frustum(const Mat4& m, double r0, double r1) {
   return e;
 }
 
+// The object-space box [lo, hi] of a shape that moves from `start` to `end` while turning, in
+// world space. At time t a point p of the object is at T(t) + R(t) S(t) p (instance_motion.hpp),
+// within |S(t) p| of T(t); S(t) is linear in t and a norm is convex, so |S(t) p| is at most the
+// larger of |S0 p| and |S1 p|, and over the box the largest is at a corner. The object stays
+// within that reach of the segment from T0 to T1.
+Box swept_box(const Vec3& lo, const Vec3& hi, const Mat4& start, const Mat4& end) {
+  const Pose poses[2] = {decompose(start), decompose(end)};
+  double reach = 0;
+  for (int corner = 0; corner < 8; ++corner) {
+    const Vec3 p{corner & 1 ? hi.x : lo.x, corner & 2 ? hi.y : lo.y, corner & 4 ? hi.z : lo.z};
+    for (const Pose& pose : poses) {
+      const auto& s = pose.stretch;
+      const Vec3 sp{s[0] * p.x + s[1] * p.y + s[2] * p.z, s[3] * p.x + s[4] * p.y + s[5] * p.z,
+                    s[6] * p.x + s[7] * p.y + s[8] * p.z};
+      reach = std::max(reach, length(sp));
+    }
+  }
+  const Vec3 r{reach, reach, reach};
+  return padded_world_box(min(poses[0].translation, poses[1].translation) - r,
+                          max(poses[0].translation, poses[1].translation) + r);
+}
+
+Box joined(Box a, const Box& b) {
+  a.grow(b);
+  return a;
+}
+
 }  // namespace
+
+Box moving_shape_box(const InstanceSpec& spec, const Mat4& end) {
+  if (!motion_rotates(spec.transform, end)) {
+    // Without turning, each point moves along a line (T and S are linear in t), so the shape's
+    // extent along each axis is largest at one of the two poses.
+    InstanceSpec at_end = spec;
+    at_end.transform = end;
+    return joined(shape_world_box(spec), shape_world_box(at_end));
+  }
+  const double r = spec.shape == ShapeKind::Cone ? std::max(spec.cone_r0, spec.cone_r1) : 1.0;
+  return swept_box({-r, -1, -r}, {r, 1, r}, spec.transform, end);
+}
+
+Box moving_box(const BoxSet& boxes, const Mat4& start, const Mat4& end) {
+  if (!motion_rotates(start, end)) return joined(transformed_box(boxes, start), transformed_box(boxes, end));
+  const double inf = std::numeric_limits<double>::infinity();
+  double lo[3] = {inf, inf, inf}, hi[3] = {-inf, -inf, -inf};
+  for (std::size_t i = 0; i < boxes.centre[0].size(); ++i)
+    for (int a = 0; a < 3; ++a) {
+      lo[a] = std::min(lo[a], boxes.centre[a][i] - boxes.half[a][i]);
+      hi[a] = std::max(hi[a], boxes.centre[a][i] + boxes.half[a][i]);
+    }
+  if (lo[0] > hi[0]) return Box{};
+  return swept_box({lo[0], lo[1], lo[2]}, {hi[0], hi[1], hi[2]}, start, end);
+}
 
 Box shape_world_box(const InstanceSpec& spec) {
   const Mat4& m = spec.transform;

@@ -12,6 +12,13 @@ namespace clrt {
 // than its object box carried by M when M rotates, so fewer rays test the shape in vain.
 Box shape_world_box(const InstanceSpec& spec);
 
+// The padded world box of a sphere, cube, cylinder or cone instance that moves from its
+// transform to `end` (geometry/instance_motion.hpp), over the whole motion.
+Box moving_shape_box(const InstanceSpec& spec, const Mat4& end);
+
+// The same for a mesh instance whose leaf boxes are `boxes`, moving from `start` to `end`.
+Box moving_box(const BoxSet& boxes, const Mat4& start, const Mat4& end);
+
 // A sphere in world space.
 struct WorldSphere {
   Vec3 center;

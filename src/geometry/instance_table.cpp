@@ -27,6 +27,7 @@ dev::Instance placed(const Mat4& inverse) {
   const Mat4 normal_matrix = inverse.transposed();
   dev::Instance inst{};
   inst.glow = CLRT_NO_GLOW;  // until the emitter table says otherwise
+  inst.motion = CLRT_NO_MOTION;  // until the geometry's motion table says otherwise
   for (int r = 0; r < 3; ++r) {
     inst.world_to_object[r] = row(inverse, r, true);
     inst.normal_to_world[r] = row(normal_matrix, r, false);

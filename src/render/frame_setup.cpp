@@ -43,6 +43,8 @@ dev::Camera make_camera(const CameraSpec& c, const RenderOptions& options) {
     // focus.
     cam.lens_u.w = static_cast<float>(c.focus_distance / focal);
   }
+  cam.shutter_open = static_cast<float>(c.shutter_open);
+  cam.shutter_close = static_cast<float>(c.shutter_close);
   cam.width = static_cast<dev::u32>(options.width);
   cam.height = static_cast<dev::u32>(options.height);
   cam.samples = static_cast<dev::u32>(options.samples);

@@ -1,4 +1,4 @@
-// eye, lookat, up, fov, lens, background, resolution, maxdepth, samples.
+// eye, lookat, up, fov, lens, shutter, background, resolution, maxdepth, samples.
 #include "scene/command_table.hpp"
 #include "scene/limits.hpp"
 
@@ -47,6 +47,17 @@ void lens(LoaderState& s, const CommandArgs& a) {
   s.scene.camera.focus_distance = focus;
 }
 
+// shutter OPEN CLOSE: the times the camera's samples are spread over.
+void shutter(LoaderState& s, const CommandArgs& a) {
+  a.require_count({2});
+  const double open = a.number(0), close = a.number(1);
+  if (close < open)
+    throw a.error_at(1, "the shutter must close at or after it opens (" + excerpt(a.word(0).text) +
+                            "), found " + excerpt(a.word(1).text));
+  s.scene.camera.shutter_open = open;
+  s.scene.camera.shutter_close = close;
+}
+
 void background(LoaderState& s, const CommandArgs& a) {
   a.require_count({3});
   s.scene.background = a.vec3(0);
@@ -84,6 +95,7 @@ void add_camera_commands(CommandTable& table) {
   table["up"] = up;
   table["fov"] = fov;
   table["lens"] = lens;
+  table["shutter"] = shutter;
   table["background"] = background;
   table["resolution"] = resolution;
   table["maxdepth"] = maxdepth;

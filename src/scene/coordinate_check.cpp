@@ -70,27 +70,35 @@ void check_coordinates(const LoaderState& state) {
   }
   for (const LightSpec& light : scene.lights)
     if (light_kind(light.kind).placed) world.add(light.position);
-  for (const InstanceSpec& instance : scene.instances) {
-    const Box box = mapped(object_box(instance, mesh_boxes), instance.transform);
-    if (!(box.reach() <= limits::kMaxCoordinate))
-      throw SceneError(instance_location(scene, instance), "this object reaches " + short_number(box.reach()) +
-                                           " in world space, beyond the limit of " +
-                                           short_number(limits::kMaxCoordinate) +
-                                           " (the device computes in single precision)");
-    if (instance.shape != ShapeKind::Plane) {
-      world.add(box.lo);
-      world.add(box.hi);
-    }
-  }
-  for (const InstanceSpec& instance : scene.instances) {
-    const double reach = mapped(world, instance.transform.inverse()).reach();
-    if (!(reach <= limits::kMaxCoordinate))
-      throw SceneError(instance_location(scene, instance),
-                       "this object is so small for the scene around it that, in its own "
-                       "coordinates (where the device intersects it), the scene reaches " +
-                           short_number(reach) + ", beyond the limit of " +
-                           short_number(limits::kMaxCoordinate));
-  }
+  // A moving object is checked at both its poses (between them it turns about, and stretches
+  // between, the two).
+  const auto for_each_pose = [&](const InstanceSpec& instance, const auto& check) {
+    check(instance.transform);
+    if (instance.motion >= 0) check(scene.end_transforms[static_cast<std::size_t>(instance.motion)]);
+  };
+  for (const InstanceSpec& instance : scene.instances)
+    for_each_pose(instance, [&](const Mat4& pose) {
+      const Box box = mapped(object_box(instance, mesh_boxes), pose);
+      if (!(box.reach() <= limits::kMaxCoordinate))
+        throw SceneError(instance_location(scene, instance), "this object reaches " + short_number(box.reach()) +
+                                             " in world space, beyond the limit of " +
+                                             short_number(limits::kMaxCoordinate) +
+                                             " (the device computes in single precision)");
+      if (instance.shape != ShapeKind::Plane) {
+        world.add(box.lo);
+        world.add(box.hi);
+      }
+    });
+  for (const InstanceSpec& instance : scene.instances)
+    for_each_pose(instance, [&](const Mat4& pose) {
+      const double reach = mapped(world, pose.inverse()).reach();
+      if (!(reach <= limits::kMaxCoordinate))
+        throw SceneError(instance_location(scene, instance),
+                         "this object is so small for the scene around it that, in its own "
+                         "coordinates (where the device intersects it), the scene reaches " +
+                             short_number(reach) + ", beyond the limit of " +
+                             short_number(limits::kMaxCoordinate));
+    });
 }
 
 }  // namespace clrt

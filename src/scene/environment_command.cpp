@@ -78,6 +78,10 @@ void environment(LoaderState& s, const CommandArgs& a) {
   EnvironmentSpec env;
   env.path = (std::filesystem::path(s.scene_folder) / a.word(0).text).lexically_normal().generic_string();
   if (a.count() > 1) env.scale = a.number_in(1, 0, limits::kMaxNumber, "the environment's scale");
+  if (in_motion(s))
+    throw a.error_at(0, "the environment cannot move: it turns with the current transform, which "
+                        "differs from the one `endpose` recorded; put `environment` before "
+                        "`endpose` or after `reset`");
   if (!is_rotation(s.transform))
     throw a.error_at(0, "the environment turns with the current transform, whose linear part must "
                         "be a rotation (no scale or shear); put `environment` before them or after "

@@ -19,6 +19,9 @@ struct LoaderState {
   const FileSource* files = nullptr;        // where the scene's files are read from
   std::string scene_folder;                 // mesh paths are relative to it
   Mat4 transform;                           // the current transform M
+  // The transform in force at `endpose`: objects are placed by it at time 0 and by `transform`
+  // at time 1 (both the same: they do not move). `reset` clears it.
+  std::optional<Mat4> start_pose;
   int material = 0;                         // the current material: index into scene.materials
   std::map<std::string, int> mesh_by_path;  // resolved path -> index into scene.meshes
   std::int64_t shadow_samples = 0;          // shadow_samples() of the lights so far
@@ -39,5 +42,15 @@ constexpr std::size_t kMemoryCheckCommands = 1024;
 // `where` when the transform or its inverse is not finite.
 InstanceSpec& add_instance(LoaderState& s, const SourceLocation& where, ShapeKind shape,
                            const Mat4& to_world);
+
+// Whether an `endpose` is in force with transforms after it: objects placed now move.
+bool in_motion(const LoaderState& s);
+
+// Appends a `.ray` object placed by the current transform times `local` (its own placement, such
+// as a sphere's centre and radius). After `endpose` it moves, from the pose `endpose` recorded
+// (times `local`) at time 0 to the current one at time 1, unless the two are the same. A
+// SceneError at `where` when a pose cannot be inverted or the two differ in handedness.
+InstanceSpec& add_object(LoaderState& s, const SourceLocation& where, ShapeKind shape,
+                         const std::optional<Mat4>& local = std::nullopt);
 
 }  // namespace clrt

@@ -11,19 +11,19 @@ namespace {
 
 void add_simple_shape(LoaderState& s, const CommandArgs& a, ShapeKind shape) {
   a.require_count({0});
-  add_instance(s, a.command_location(), shape, s.transform);
+  add_object(s, a.command_location(), shape);
 }
 
 void sphere(LoaderState& s, const CommandArgs& a) {
   a.require_count({0, 4});
-  Mat4 to_world = s.transform;
+  std::optional<Mat4> local;
   if (a.count() == 4) {
     const Vec3 centre = a.vec3(0);
     const double radius = a.number(3);
     if (radius <= 0) throw a.error_at(3, "the sphere radius must be > 0, found " + excerpt(a.word(3).text));
-    to_world = to_world * Mat4::translate(centre) * Mat4::scale({radius, radius, radius});
+    local = Mat4::translate(centre) * Mat4::scale({radius, radius, radius});
   }
-  add_instance(s, a.command_location(), ShapeKind::Sphere, to_world);
+  add_object(s, a.command_location(), ShapeKind::Sphere, local);
 }
 
 void plane(LoaderState& s, const CommandArgs& a) { add_simple_shape(s, a, ShapeKind::Plane); }
@@ -40,13 +40,17 @@ void cone(LoaderState& s, const CommandArgs& a) {
     }
     if (radii[0] == 0 && radii[1] == 0) throw a.error_at(0, "the cone radii must not both be 0");
   }
-  InstanceSpec& instance = add_instance(s, a.command_location(), ShapeKind::Cone, s.transform);
+  InstanceSpec& instance = add_object(s, a.command_location(), ShapeKind::Cone);
   instance.cone_r0 = radii[0];
   instance.cone_r1 = radii[1];
 }
 
 void triangle(LoaderState& s, const CommandArgs& a) {
   a.require_count({9});
+  if (in_motion(s))
+    throw SceneError(a.command_location(),
+                     "a triangle cannot move: its corners are fixed in world space as it is read "
+                     "(put moving triangles in an OBJ mesh, or `reset` before this one)");
   TriangleSpec t;
   t.v0 = s.transform.transform_point(a.vec3(0));
   t.v1 = s.transform.transform_point(a.vec3(3));
@@ -85,7 +89,7 @@ void mesh(LoaderState& s, const CommandArgs& a) {
                             " (put a path with spaces in double quotes)");
   a.require_count({1});
   const int index = mesh_index(s, a);
-  add_instance(s, a.command_location(), ShapeKind::Mesh, s.transform).mesh = index;
+  add_object(s, a.command_location(), ShapeKind::Mesh).mesh = index;
 }
 
 }  // namespace

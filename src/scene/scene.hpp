@@ -23,6 +23,9 @@ struct CameraSpec {
   // distance from the eye along the view direction.
   double lens_radius = 0;
   double focus_distance = 1;
+  // `shutter OPEN CLOSE`: camera samples' times are spread over [OPEN, CLOSE]; moving objects
+  // have their first pose at time 0 and their second at time 1.
+  double shutter_open = 0, shutter_close = 1;
 };
 
 struct MaterialSpec {
@@ -75,8 +78,9 @@ struct InstanceSpec {
   int material = 0;  // index into Scene::materials
   int mesh = -1;     // ShapeKind::Mesh: index into Scene::meshes
   TextPlace place;
+  int motion = -1;  // -1, or a moving object's index into Scene::end_transforms
   double cone_r0 = 1, cone_r1 = 0;
-  Mat4 transform;  // M: object to world
+  Mat4 transform;  // M: object to world (a moving object's pose at time 0)
 };
 
 // An instance of `shape` placed by `to_world`.
@@ -110,6 +114,7 @@ struct Scene {
   // A deque grows without copying what it holds: a vector's doubling held up to three times
   // the table at its last growth, the peak of loading a scene of spheres.
   std::deque<InstanceSpec> instances;
+  std::vector<Mat4> end_transforms;  // moving objects' poses at time 1 (`endpose`)
   std::vector<MeshData> meshes;
   std::vector<TriangleSpec> triangles;
 };

@@ -36,7 +36,8 @@ Json camera(const Scene& scene) {
           {"fov_degrees", scene.camera.fov_degrees},
           {"aspect", static_cast<double>(scene.width) / scene.height},
           {"lens_radius", scene.camera.lens_radius},
-          {"focus_distance", scene.camera.focus_distance}};
+          {"focus_distance", scene.camera.focus_distance},
+          {"shutter", Json::array({scene.camera.shutter_open, scene.camera.shutter_close})}};
 }
 
 Json material(const MaterialSpec& m) {
@@ -51,11 +52,12 @@ Json light(const LightSpec& l) {
   return j;
 }
 
-Json object(const InstanceSpec& o) {
+Json object(const Scene& scene, const InstanceSpec& o) {
   Json j = {{"shape", shape_name(o.shape)}, {"material", o.material}};
   if (o.shape == ShapeKind::Cone) j["radii"] = Json::array({o.cone_r0, o.cone_r1});
   if (o.shape == ShapeKind::Mesh) j["mesh"] = o.mesh;
   j["transform"] = matrix(o.transform);
+  if (o.motion >= 0) j["end_transform"] = matrix(scene.end_transforms[static_cast<std::size_t>(o.motion)]);
   j["line"] = o.place.line;
   j["column"] = o.place.column;
   return j;
@@ -130,7 +132,7 @@ void write_scene_json(const Scene& scene, const Writer& write) {
   write(",\n\"lights\": ");
   write_array(write, scene.lights.size(), [&](std::size_t i) { return light(scene.lights[i]); }, next);
   write(",\n\"objects\": ");
-  write_array(write, scene.instances.size(), [&](std::size_t i) { return object(scene.instances[i]); }, next);
+  write_array(write, scene.instances.size(), [&](std::size_t i) { return object(scene, scene.instances[i]); }, next);
   write(",\n\"meshes\": [");
   for (std::size_t i = 0; i < scene.meshes.size(); ++i) {
     if (i) write(next);

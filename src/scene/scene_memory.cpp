@@ -27,7 +27,8 @@ std::uint64_t estimated_scene_bytes(const Scene& scene) {
     growing += table_bytes(mesh.positions) + table_bytes(mesh.normals) + table_bytes(mesh.corners) +
                table_bytes(mesh.corner_normals);
   const std::uint64_t environment = scene.environment ? table_bytes(scene.environment->rgb) : 0;
-  return 2 * growing + table_bytes(scene.instances) + environment + estimated_geometry_bytes(scene);
+  return 2 * growing + table_bytes(scene.instances) + table_bytes(scene.end_transforms) + environment +
+         estimated_geometry_bytes(scene);
 }
 
 void check_scene_memory(std::uint64_t needed, const MemoryLimit& limit, const SourceLocation& where) {

@@ -1,4 +1,6 @@
 // reset, translate, scale, rotate, rotatex/y/z: each new transform X makes current = X * current.
+// endpose: the current transform becomes the pose at time 0 of the objects that follow, and the
+// transforms after it give their pose at time 1.
 #include <string>
 
 #include "scene/command_table.hpp"
@@ -9,6 +11,12 @@ namespace {
 void reset(LoaderState& s, const CommandArgs& a) {
   a.require_count({0});
   s.transform = Mat4::identity();
+  s.start_pose.reset();
+}
+
+void endpose(LoaderState& s, const CommandArgs& a) {
+  a.require_count({0});
+  s.start_pose = s.transform;
 }
 
 void translate(LoaderState& s, const CommandArgs& a) {
@@ -42,6 +50,7 @@ void rotate_about_principal_axis(LoaderState& s, const CommandArgs& a) {
 
 void add_transform_commands(CommandTable& table) {
   table["reset"] = reset;
+  table["endpose"] = endpose;
   table["translate"] = translate;
   table["scale"] = scale;
   table["rotate"] = rotate;

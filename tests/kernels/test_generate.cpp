@@ -132,8 +132,8 @@ TEST_CASE("generate: one sample per pixel goes through the pixel centre", "[gene
     CHECK_NEAR_VEC(vec_of(r.origin), kEye, 0);
     CHECK_NEAR_VEC(vec_of(r.weight), Vec3(1, 1, 1), 0);
     CHECK(r.sample == i);
-    CHECK(r.depth == 0);
-    CHECK(r.kind == CLRT_RAY_CAMERA);
+    CHECK(CLRT_RAY_DEPTH(r) == 0);
+    CHECK(CLRT_RAY_KIND(r) == CLRT_RAY_CAMERA);
   }
   SECTION("the seed does not move a single sample off the centre") {
     dev::Camera seeded = cam;

@@ -19,9 +19,13 @@ namespace {
   X(sizeof(Ray)) X(offsetof(Ray, radiance_scale)) X(offsetof(Ray, dir))                     \
   X(offsetof(Ray, sample_index)) X(offsetof(Ray, weight)) X(offsetof(Ray, pdf))              \
   X(offsetof(Ray, sample))                                                                   \
-  X(offsetof(Ray, kind)) X(sizeof(Hit)) X(offsetof(Hit, shading_normal))                     \
+  X(offsetof(Ray, depth_kind)) X(offsetof(Ray, time)) X(sizeof(Hit)) X(offsetof(Hit, shading_normal))                     \
   X(offsetof(Hit, instance)) X(offsetof(Hit, material)) X(sizeof(ShadowRay))                 \
-  X(offsetof(ShadowRay, contribution)) X(offsetof(ShadowRay, owner)) X(sizeof(Camera))       \
+  X(offsetof(ShadowRay, contribution)) X(offsetof(ShadowRay, owner))                        \
+  X(offsetof(ShadowRay, time)) X(sizeof(Camera)) X(offsetof(Camera, shutter_close))         \
+  X(offsetof(Instance, motion)) X(sizeof(InstanceMotion)) X(offsetof(InstanceMotion, rotation)) \
+  X(offsetof(InstanceMotion, stretch_off)) X(offsetof(InstanceMotion, inverse_sine))        \
+  X(offsetof(BvhMeshInstancePacket, motion))                                                 \
   X(offsetof(Camera, pixel_dy)) X(offsetof(Camera, width)) X(offsetof(Camera, seed))         \
   X(offsetof(Camera, sampler)) X(offsetof(Camera, lens_u)) X(offsetof(Camera, lens_v))      \
   X(offsetof(Camera, thin_lens)) X(sizeof(Material)) X(offsetof(Material, ka))               \

@@ -36,9 +36,9 @@ __kernel void draw_continuations(__global const Material* material, float4 norma
   vstore3((float3)(1.0f), 0, ray.weight);
   ray.pdf = 0.0f;
   ray.sample = i;
-  ray.depth = 1u;
+  ray.depth_kind = CLRT_DEPTH_KIND(1u, CLRT_RAY_REFLECTION);
   ray.path = hash_u32(i * 2654435761u + 12345u);
-  ray.kind = CLRT_RAY_REFLECTION;
+  ray.time = 0.0f;
   const PathLobes lobes = path_lobes(material);
   LobeSample s = smooth_sample((float3)(0.0f)); /* what a path that ends before a draw shows */
   float pdf;

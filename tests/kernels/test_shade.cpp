@@ -107,9 +107,9 @@ dev::Ray make_ray(const Vec3& origin, const Vec3& dir, const Vec3& weight = {1, 
   set_triple(r.dir, dir);
   set_triple(r.weight, weight);
   r.sample = sample;
-  r.depth = depth;
+  r.depth_kind = CLRT_DEPTH_KIND(depth, depth == 0 ? CLRT_RAY_CAMERA : CLRT_RAY_REFLECTION);
+  r.time = 0.375f;  // which children and shadow rays keep
   r.path = path;
-  r.kind = depth == 0 ? CLRT_RAY_CAMERA : CLRT_RAY_REFLECTION;
   return r;
 }
 
@@ -346,6 +346,7 @@ TEST_CASE("shade: trace mode writes one shadow ray per contributing light sample
     CHECK_NEAR_VEC(vec_of(sr.origin), origin, 1e-6);
     CHECK_NEAR_VEC(vec_of(sr.contribution), mul(weight, terms[s]), kTolerance);
     CHECK(sr.owner == 0);
+    CHECK(sr.time == 0.375f);
     CHECK(length(vec_of(sr.dir)) == Approx(1).margin(1e-6));
     if (s == 1) {
       CHECK(std::isinf(sr.origin.w));
@@ -476,9 +477,10 @@ void check_child(const dev::Ray& child, const dev::Ray& parent, const Vec3& side
   CHECK_NEAR_VEC(vec_of(child.dir), dir, 1e-6);
   CHECK(length(vec_of(child.dir)) == Approx(1).margin(1e-6));
   CHECK_NEAR_VEC(vec_of(child.weight), weight, kTolerance);
-  CHECK(child.depth == parent.depth + 1);
+  CHECK(CLRT_RAY_DEPTH(child) == CLRT_RAY_DEPTH(parent) + 1);
   CHECK(child.sample == parent.sample);
-  CHECK(child.kind == kind);
+  CHECK(CLRT_RAY_KIND(child) == kind);
+  CHECK(child.time == parent.time);
   CHECK(child.path != parent.path);
 }
 

@@ -84,3 +84,25 @@ TEST_CASE("the test device renders PoCL's bits in path mode", "[same-bytes][path
     }
   }
 }
+
+TEST_CASE("the test device renders PoCL's bits of the distribution effects in every mode",
+          "[same-bytes][motion]") {
+  // scenes/motion.ray: a thin lens, a rolling ball and a spinning cube, a glowing mesh and an
+  // environment image.
+  const bool interpreter = device().device().platform().name() == "Oclgrind";
+  const int side = interpreter ? 8 : 32;
+  const std::string path = std::string(CLRT_SOURCE_DIR) + "/scenes/motion.ray";
+  for (const RenderMode mode : {RenderMode::Cast, RenderMode::Trace, RenderMode::Path}) {
+    for (const std::string& integrator : integrator_names()) {
+      const auto with = [&](RenderOptions& o) {
+        o.width = o.height = side;
+        o.mode = mode;
+        o.samples = 4;
+        o.integrator = integrator;
+      };
+      const FloatImage pocl = render_file(path, with, "portable computing language");
+      INFO(static_cast<int>(mode) << ", " << integrator << ", on " << device().name());
+      CHECK(same_bits(render_file(path, with), pocl));
+    }
+  }
+}

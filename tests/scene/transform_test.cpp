@@ -118,3 +118,50 @@ TEST_CASE("a transform too extreme to invert is an error at the object",
   for (int i = 0; i < 26; ++i) growing += "scale 1e12 1 1\n";  // 1e312: the product overflows
   require_error(growing + "cube\n", 27, 1, "cannot be inverted");
 }
+
+TEST_CASE("endpose: the transform at endpose is an object's first pose, the current one its "
+          "second",
+          "[scene][transform][motion]") {
+  const clrt::Scene s = load_text(
+      "translate -1 0 0\nendpose\ntranslate 2 0 0\nsphere\nsphere 0 1 0 0.5\nreset\nsphere\n"
+      "endpose\ncube\nscale 2 2 2\nendpose\ncylinder\n");
+  REQUIRE(s.instances.size() == 5);
+  REQUIRE(s.end_transforms.size() == 2);
+  // The sphere moves from x = -1 to x = +1; so does the next one, which places itself on top.
+  check_affine(s.instances[0].transform, {{1, 0, 0, -1}, {0, 1, 0, 0}, {0, 0, 1, 0}});
+  REQUIRE(s.instances[0].motion == 0);
+  check_affine(s.end_transforms[0], {{1, 0, 0, 1}, {0, 1, 0, 0}, {0, 0, 1, 0}});
+  REQUIRE(s.instances[1].motion == 1);
+  check_affine(s.instances[1].transform, {{0.5, 0, 0, -1}, {0, 0.5, 0, 1}, {0, 0, 0.5, 0}});
+  check_affine(s.end_transforms[1], {{0.5, 0, 0, 1}, {0, 0.5, 0, 1}, {0, 0, 0.5, 0}});
+  // reset clears the motion; endpose with nothing after it, or again after a change, leaves
+  // the objects still.
+  CHECK(s.instances[2].motion == -1);
+  CHECK(s.instances[3].motion == -1);
+  CHECK(s.instances[4].motion == -1);
+  check_affine(s.instances[4].transform, {{2, 0, 0, 0}, {0, 2, 0, 0}, {0, 0, 2, 0}});
+}
+
+TEST_CASE("shutter: when the camera's samples are taken, 0 to 1 unless set", "[scene][camera][motion]") {
+  CHECK(load_text("").camera.shutter_open == 0);
+  CHECK(load_text("").camera.shutter_close == 1);
+  const clrt::Scene s = load_text("SHUTTER 0.25 0.75\n");
+  CHECK(s.camera.shutter_open == 0.25);
+  CHECK(s.camera.shutter_close == 0.75);
+  CHECK(load_text("shutter 2 2\n").camera.shutter_open == 2);
+}
+
+TEST_CASE("motion errors: a shutter closing before it opens, mirrored poses, moving triangles "
+          "and environments",
+          "[scene][transform][motion][errors]") {
+  require_error("shutter 1 0.5\n", 1, 11, "the shutter must close at or after it opens");
+  require_error("shutter 1\n", 1, 10, "wrong number of arguments");
+  require_error("endpose 1\n", 1, 9, "wrong number of arguments");
+  require_error("endpose\nscale -1 1 1\nsphere\n", 3, 1, "differ in handedness");
+  require_error("translate 1 0 0\nendpose\ntranslate 0 1 0\ntriangle 0 0 0 1 0 0 0 1 0\n", 4, 1,
+                "a triangle cannot move");
+  require_error("endpose\nrotatey 30\nenvironment sky.pfm\n", 3, 13, "the environment cannot move");
+  // Still after reset, or before any change.
+  CHECK(load_text("endpose\ntriangle 0 0 0 1 0 0 0 1 0\n").triangles.size() == 1);
+  CHECK(load_text("endpose\ntranslate 1 0 0\nreset\ntriangle 0 0 0 1 0 0 0 1 0\n").triangles.size() == 1);
+}
