@@ -62,16 +62,21 @@ CLRT_INLINE InstanceFrame motion_frame(__global const InstanceMotion* m, float t
   return f;
 }
 
-/* Instance `inst`'s maps at `time`: its own rows when it does not move. */
-CLRT_INLINE InstanceFrame instance_frame(__global const Instance* inst,
-                                         __global const InstanceMotion* motions, float time) {
-  if (inst->motion != CLRT_NO_MOTION) return motion_frame(motions + inst->motion, time);
+/* The maps an instance that does not move holds itself. */
+CLRT_INLINE InstanceFrame still_frame(__global const Instance* inst) {
   InstanceFrame f;
   for (int r = 0; r < 3; ++r) {
     f.to_object[r] = inst->world_to_object[r];
     f.normal_to_world[r] = inst->normal_to_world[r];
   }
   return f;
+}
+
+/* Instance `inst`'s maps at `time`. */
+CLRT_INLINE InstanceFrame instance_frame(__global const Instance* inst,
+                                         __global const InstanceMotion* motions, float time) {
+  if (inst->motion != CLRT_NO_MOTION) return motion_frame(motions + inst->motion, time);
+  return still_frame(inst);
 }
 
 #endif

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "geometry/instance_bounds.hpp"
+#include "math/cumulative_shares.hpp"
 #include "math/device_vector.hpp"
 
 namespace clrt {
@@ -146,12 +147,8 @@ void build_emitter_table(const Scene& scene, const std::vector<TriangleSource>& 
   double total = 0;
   for (double p : table.power) total += p;
   out.emitter_power = total;
-  // Cumulative shares, the last exactly 1 so that every number below 1 finds a row.
-  double sum = 0;
-  for (std::size_t r = 0; r < table.rows.size(); ++r) {
-    sum += table.power[r];
-    table.rows[r].origin.w = r + 1 == table.rows.size() ? 1.0f : static_cast<float>(sum / total);
-  }
+  const std::vector<float> shares = cumulative_shares(table.power);
+  for (std::size_t r = 0; r < table.rows.size(); ++r) table.rows[r].origin.w = shares[r];
 }
 
 }  // namespace clrt

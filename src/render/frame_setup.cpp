@@ -1,8 +1,10 @@
 #include "render/frame_setup.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 
+#include "math/cumulative_shares.hpp"
 #include "math/device_vector.hpp"
 #include "scene/light_kinds.hpp"
 #include "scene/limits.hpp"
@@ -150,22 +152,15 @@ std::vector<dev::f4> environment_table(const EnvironmentSpec& env, dev::Light& r
       lum[i] = 0.2126 * t.x + 0.7152 * t.y + 0.0722 * t.z;
       sum += lum[i];
     }
-    double running = 0;
-    for (std::size_t i = 0; i < w; ++i) {
-      running += sum > 0 ? lum[i] : 1.0;
-      table[j * w + i].w = i + 1 == w ? 1.0f : static_cast<float>(running / (sum > 0 ? sum : w));
-    }
+    const std::vector<float> shares = cumulative_shares(lum);
+    for (std::size_t i = 0; i < w; ++i) table[j * w + i].w = shares[i];
     row_weight[j] = sum * sine;
   }
   double total = 0;
   for (double r : row_weight) total += r;
   sampled = total > 0;
-  float* rows = &table[w * h].x;
-  double running = 0;
-  for (std::size_t j = 0; j < h; ++j) {
-    running += row_weight[j];
-    rows[j] = j + 1 == h ? 1.0f : static_cast<float>(sampled ? running / total : 0.0);
-  }
+  const std::vector<float> row_shares = cumulative_shares(row_weight);
+  std::copy(row_shares.begin(), row_shares.end(), &table[w * h].x);
   record.kind = dev::CLRT_LIGHT_ENVIRONMENT;
   record.grid_u = static_cast<dev::u32>(w);
   record.grid_v = static_cast<dev::u32>(h);

@@ -22,13 +22,14 @@ __kernel void cast_canonical(__global const Instance* instances, __global const 
   const uint i = get_global_id(0);
   if (i >= count) return;
   __global const Instance* inst = instances + i;
+  const InstanceFrame frame = still_frame(inst);
   float3 o, d;
-  instance_ray_to_object(inst, rays[2 * i].xyz, rays[2 * i + 1].xyz, &o, &d);
+  ray_to_object(frame.to_object, rays[2 * i].xyz, rays[2 * i + 1].xyz, &o, &d);
   float t = rays[2 * i + 1].w;
   float3 n = (float3)(7.0f, 8.0f, 9.0f);
   const bool hit = intersect_canonical(inst->shape, inst->cone_r0, inst->cone_r1, o, d,
                                        rays[2 * i].w, &t, &n);
-  results[2 * i] = (float4)(hit ? instance_normal_to_world(inst, n) : n, t);
+  results[2 * i] = (float4)(hit ? frame_normal_to_world(&frame, n) : n, t);
   results[2 * i + 1] = (float4)(hit ? 1.0f : 0.0f, 0.0f, 0.0f, 0.0f);
 }
 
@@ -38,8 +39,9 @@ __kernel void cast_triangles(__global const Instance* instances, __global const 
   const uint i = get_global_id(0);
   if (i >= count) return;
   __global const Instance* inst = instances + i;
+  const InstanceFrame frame = still_frame(inst);
   float3 o, d;
-  instance_ray_to_object(inst, rays[2 * i].xyz, rays[2 * i + 1].xyz, &o, &d);
+  ray_to_object(frame.to_object, rays[2 * i].xyz, rays[2 * i + 1].xyz, &o, &d);
   float t = rays[2 * i + 1].w, u = -7.0f, v = -7.0f;
   float3 n = (float3)(7.0f, 8.0f, 9.0f);
   bool hit = false;
@@ -47,7 +49,7 @@ __kernel void cast_triangles(__global const Instance* instances, __global const 
     __global const Triangle* tri = tris + i * stride + k;
     if (intersect_triangle(tri->v0.xyz, tri->v1.xyz, tri->v2.xyz, o, d, rays[2 * i].w, &t, &u, &v)) {
       hit = true;
-      n = instance_normal_to_world(inst, triangle_normal(tri->v0.xyz, tri->v1.xyz, tri->v2.xyz));
+      n = frame_normal_to_world(&frame, triangle_normal(tri->v0.xyz, tri->v1.xyz, tri->v2.xyz));
     }
   }
   results[2 * i] = (float4)(n, t);

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""ray_to_mitsuba.py SCENE [--clrt CLRT] [--spp N] [--resolution WxH] [--seed S]
+"""ray_to_mitsuba.py SCENE [--clrt CLRT] [--spp N] [--resolution WxH] [--seed S] [--time T]
 
 Builds the Mitsuba 3 scene that renders the same image as `clrt --mode path` from the scene as
 clrt itself reads it (`clrt --dump-scene`, docs/scene-json.md), following docs/path-tracing.md
@@ -8,6 +8,11 @@ transforms). What Mitsuba cannot render as clrt does is refused with FILE:LINE:C
 so that a scene is never compared against a Mitsuba scene that quietly differs from it. Run
 with the Mitsuba venv's python (tools/mitsuba/install.sh); it prints the scene dictionary it
 built, for a look at the mapping.
+
+Mitsuba's scene is static: a scene with moving objects (`endpose`) is built for one time of the
+shutter, each moving object at its pose then (pose_at). clrt's motion blur is the average of
+such static images over the shutter, which render_reference.py estimates by rendering each
+sub-render at its own time.
 """
 import argparse
 import json
@@ -123,9 +128,10 @@ class DumpedScene:
     """The scene as clrt read it (`clrt --dump-scene`, docs/scene-json.md), in the form the
     Mitsuba scene is built from: spheres, planes, cubes and cylinders with their placements,
     triangles in world space, lights. What the comparison cannot match is refused with the
-    object's FILE:LINE:COLUMN."""
+    object's FILE:LINE:COLUMN. Moving objects stand at their poses at `time` (by default the
+    middle of the shutter: one instant, not the blurred image)."""
 
-    def __init__(self, dump):
+    def __init__(self, dump, time=None):
         if dump.get("format") != "clrt-scene" or dump.get("version") != SCENE_JSON_VERSION:
             raise SceneError(f"not a clrt scene dump of version {SCENE_JSON_VERSION}")
         self.path = dump["scene"]
@@ -133,6 +139,9 @@ class DumpedScene:
         self.eye, self.lookat, self.up = (np.array(camera[k], dtype=float) for k in ("eye", "lookat", "up"))
         self.fov, self.background = camera["fov_degrees"], np.array(dump["background"], dtype=float)
         self.lens_radius, self.focus_distance = camera["lens_radius"], camera["focus_distance"]
+        self.shutter = tuple(float(v) for v in camera.get("shutter", (0.0, 1.0)))
+        self.moving = any("end_transform" in placed for placed in dump["objects"])
+        self.time = sum(self.shutter) / 2 if time is None else float(time)
         self.resolution, self.samples, self.maxdepth = tuple(dump["resolution"]), dump["samples"], dump["maxdepth"]
         self.environment = dump.get("environment")
         # One object per material, so that triangles group by the material they were given.
@@ -143,7 +152,10 @@ class DumpedScene:
         self.meshes = dump["meshes"]
         for placed in dump["objects"]:
             try:
-                self.add_object(placed, self.all_materials[placed["material"]], np.array(placed["transform"]))
+                placement = np.array(placed["transform"], dtype=float)
+                if "end_transform" in placed:
+                    placement = pose_at(placement, np.array(placed["end_transform"], dtype=float), self.time)
+                self.add_object(placed, self.all_materials[placed["material"]], placement)
             except SceneError as e:
                 raise SceneError(f"{self.path}:{placed['line']}:{placed['column']}: error: {e}") from None
         # Loose triangles and lights have no place in the dump: their errors name the file.
@@ -217,6 +229,80 @@ class DumpedScene:
             raise SceneError(f"`{kind}` lights are not supported by the Mitsuba comparison")
 
 
+def polar(linear):
+    """(R, S) with linear = R S, R a rotation and S symmetric: the polar decomposition, from
+    the SVD U diag(sigma) V^T as U V^T and V diag(sigma) V^T. A mirroring matrix gives U V^T of
+    determinant -1; its negative is a rotation, and the stretch takes the sign, as clrt splits
+    it, so that two mirrored poses interpolate through mirrored poses."""
+    u, sigma, vt = np.linalg.svd(linear)
+    rotation, stretch = u @ vt, vt.T @ np.diag(sigma) @ vt
+    if np.linalg.det(rotation) < 0:
+        rotation, stretch = -rotation, -stretch
+    return rotation, stretch
+
+
+def quaternion(rotation):
+    """The unit quaternion (w, x, y, z) of a rotation matrix. The component of largest
+    magnitude is found first from the diagonal and the others divided by it, so that none is
+    taken from the square root of a difference near zero."""
+    r = rotation
+    diagonal = [np.trace(r), r[0, 0], r[1, 1], r[2, 2]]
+    i = int(np.argmax(diagonal))
+    if i == 0:
+        w = np.sqrt(max(0.0, 1.0 + diagonal[0])) / 2
+        q = [w, (r[2, 1] - r[1, 2]) / (4 * w), (r[0, 2] - r[2, 0]) / (4 * w), (r[1, 0] - r[0, 1]) / (4 * w)]
+    elif i == 1:
+        x = np.sqrt(max(0.0, 1.0 + r[0, 0] - r[1, 1] - r[2, 2])) / 2
+        q = [(r[2, 1] - r[1, 2]) / (4 * x), x, (r[0, 1] + r[1, 0]) / (4 * x), (r[0, 2] + r[2, 0]) / (4 * x)]
+    elif i == 2:
+        y = np.sqrt(max(0.0, 1.0 - r[0, 0] + r[1, 1] - r[2, 2])) / 2
+        q = [(r[0, 2] - r[2, 0]) / (4 * y), (r[0, 1] + r[1, 0]) / (4 * y), y, (r[1, 2] + r[2, 1]) / (4 * y)]
+    else:
+        z = np.sqrt(max(0.0, 1.0 - r[0, 0] - r[1, 1] + r[2, 2])) / 2
+        q = [(r[1, 0] - r[0, 1]) / (4 * z), (r[0, 2] + r[2, 0]) / (4 * z), (r[1, 2] + r[2, 1]) / (4 * z), z]
+    q = np.array(q)
+    return q / np.linalg.norm(q)
+
+
+def rotation_matrix(q):
+    w, x, y, z = q / np.linalg.norm(q)
+    return np.array([[1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)],
+                     [2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)],
+                     [2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)]])
+
+
+def slerp(q0, q1, t):
+    """The rotation a fraction t of the way from q0 to q1 at constant angular speed, the
+    shorter way round: q and -q are one rotation, and the pair at an obtuse angle would go
+    the long way."""
+    cos = float(q0 @ q1)
+    if cos < 0:
+        q1, cos = -q1, -cos
+    angle = np.arccos(min(1.0, cos))
+    if angle < 1e-9:
+        # sin(angle) vanishes; the arc is a straight segment to within rounding.
+        q = (1 - t) * q0 + t * q1
+    else:
+        q = (np.sin((1 - t) * angle) * q0 + np.sin(t * angle) * q1) / np.sin(angle)
+    return q / np.linalg.norm(q)
+
+
+def pose_at(start, end, time):
+    """A moving object's 4x4 placement at `time`, between its pose `start` at time 0 and `end`
+    at time 1 (held outside [0, 1]), as docs/scene-format.md's Motion section moves it: each
+    pose split into M = T R S, T and S interpolated linearly, R by slerp."""
+    t = min(max(time, 0.0), 1.0)
+    if t == 0.0:
+        return start
+    if t == 1.0:
+        return end
+    (r0, s0), (r1, s1) = polar(start[:3, :3]), polar(end[:3, :3])
+    m = np.eye(4)
+    m[:3, :3] = rotation_matrix(slerp(quaternion(r0), quaternion(r1), t)) @ ((1 - t) * s0 + t * s1)
+    m[:3, 3] = (1 - t) * start[:3, 3] + t * end[:3, 3]
+    return m
+
+
 def check_front(material, placement):
     # clrt maps a mirrored object's normals by (M^-1)^T, keeping its front; Mitsuba takes a
     # mesh's front from its winding in world space, which the mirror turns inside out.
@@ -233,8 +319,8 @@ def dump_scene(clrt, path):
     return json.loads(done.stdout)
 
 
-def read_scene(clrt, path, kind=DumpedScene):
-    return kind(dump_scene(clrt, path))
+def read_scene(clrt, path, kind=DumpedScene, **options):
+    return kind(dump_scene(clrt, path), **options)
 
 
 def cylinder_placement(placement):
@@ -444,11 +530,12 @@ def main():
     parser.add_argument("--spp", type=int)
     parser.add_argument("--resolution", help="WxH")
     parser.add_argument("--seed", type=int, default=0)
+    parser.add_argument("--time", type=float, help="the time to pose moving objects at (default: mid-shutter)")
     args = parser.parse_args()
     import mitsuba as mi
     mi.set_variant("scalar_rgb")
     try:
-        scene = read_scene(args.clrt, args.scene)
+        scene = read_scene(args.clrt, args.scene, time=args.time)
         d = to_mitsuba(scene, args.spp, parse_resolution(args.resolution), args.seed)
     except SceneError as e:
         sys.exit(str(e))

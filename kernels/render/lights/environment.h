@@ -17,6 +17,7 @@
 #define CLRT_RENDER_LIGHTS_ENVIRONMENT_H
 
 #include "../light_sample.h"
+#include "math/cumulative_pick.h"
 #include "math/exact.h"
 
 CLRT_INLINE __global const f4* environment_texels(__global const Light* light) {
@@ -81,26 +82,12 @@ CLRT_INLINE float environment_density(__global const Light* light, float3 d) {
   return environment_place_density(light, environment_place(light, d));
 }
 
-/* The first index whose cumulative value exceeds *u, among `count` strided by `stride` floats,
- * with *u rescaled to its place within that index's share. */
-CLRT_INLINE uint environment_pick(__global const float* cumulative, uint count, uint stride, float* u) {
-  uint lo = 0u, hi = count - 1u;
-  while (lo < hi) {
-    const uint mid = (lo + hi) / 2u;
-    if (cumulative[mid * stride] > *u) hi = mid;
-    else lo = mid + 1u;
-  }
-  const float before = lo == 0u ? 0.0f : cumulative[(lo - 1u) * stride];
-  *u = fmin((*u - before) / (cumulative[lo * stride] - before), 0x1.fffffep-1f);
-  return lo;
-}
-
 CLRT_INLINE LightSample environment_light_sample(__global const Light* light, uint j, float3 p, float2 u) {
   const uint w = light->grid_u, h = light->grid_v;
   float ux = u.x, uy = u.y;
-  const uint row = environment_pick(environment_rows(light), h, 1u, &ux);
+  const uint row = pick_cumulative(environment_rows(light), h, 1u, &ux);
   __global const f4* texels = environment_texels(light) + row * w;
-  const uint column = environment_pick((__global const float*)texels + 3, w, 4u, &uy);
+  const uint column = pick_cumulative((__global const float*)texels + 3, w, 4u, &uy);
   /* theta = pi v is half a turn of v; phi = 2 pi u is u turns. */
   float sin_theta, cos_theta, sin_phi, cos_phi;
   sincos_turns(0.5f * (((float)row + uy) / (float)h), &sin_theta, &cos_theta);

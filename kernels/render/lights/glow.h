@@ -12,6 +12,7 @@
 
 #include "../light_sample.h"
 #include "math/around_axis.h"
+#include "math/cumulative_pick.h"
 
 CLRT_INLINE __global const Emitter* glow_rows(__global const Light* light) {
   return (__global const Emitter*)((__global const f4*)light + light->data);
@@ -38,21 +39,6 @@ CLRT_INLINE float cone_one_minus_cos(float r, float dist) {
  * over the cone's solid angle 2 pi (1 - cos). */
 CLRT_INLINE float glow_sphere_density(float area_share, float r, float dist) {
   return area_share * (2.0f * r * r) / cone_one_minus_cos(r, dist);
-}
-
-/* The row that the first number u picks (rows in proportion to their power, whose cumulative
- * shares are the rows' origin.w), with u rescaled to its place within that row's share, so that
- * it can draw the point. */
-CLRT_INLINE uint glow_pick(__global const Emitter* rows, uint count, float* u) {
-  uint lo = 0u, hi = count - 1u;
-  while (lo < hi) {
-    const uint mid = (lo + hi) / 2u;
-    if (rows[mid].origin.w > *u) hi = mid;
-    else lo = mid + 1u;
-  }
-  const float before = lo == 0u ? 0.0f : rows[lo - 1u].origin.w;
-  *u = fmin((*u - before) / (rows[lo].origin.w - before), 0x1.fffffep-1f);
-  return lo;
 }
 
 /* The shadow ray aims a little in front of the sampled point, or the emitter itself, met at the
@@ -112,7 +98,10 @@ CLRT_INLINE LightSample glow_triangle_sample(__global const Light* light, __glob
 CLRT_INLINE LightSample glow_light_sample(__global const Light* light, uint j, float3 p, float2 u) {
   __global const Emitter* rows = glow_rows(light);
   float within = u.x;
-  __global const Emitter* e = rows + glow_pick(rows, light->grid_u, &within);
+  /* Rows in proportion to their power: the cumulative shares are the rows' origin.w, 16 floats
+   * apart. */
+  __global const Emitter* e =
+      rows + pick_cumulative((__global const float*)rows + 3, light->grid_u, 16u, &within);
   const float2 v = (float2)(within, u.y);
   return e->edge1.w > 0.0f ? glow_sphere_sample(light, e, p, v) : glow_triangle_sample(light, e, p, v);
 }

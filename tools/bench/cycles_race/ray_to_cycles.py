@@ -58,6 +58,8 @@ class CyclesScene(rtm.DumpedScene):
             raise SceneError("an `environment` image is not mapped to Cycles yet")
 
     def add_object(self, placed, material, placement):
+        if "end_transform" in placed:
+            raise SceneError("moving objects (`endpose`) are not mapped to Cycles yet")
         if placed["shape"] == "cylinder":
             raise SceneError("`cylinder` is not mapped to Cycles (no capped-cylinder primitive; "
                              "a tessellation would differ at the silhouette)")

@@ -74,6 +74,7 @@ RTCRay embree_ray(const HostRay& r, float tfar) {
 std::string unsupported_shapes(const Scene& scene) {
   std::map<std::string, int> counts;
   for (const InstanceSpec& i : scene.instances) {
+    if (i.motion >= 0) ++counts["moving objects"];  // Embree would trace one pose of them
     switch (i.shape) {
       case ShapeKind::Cube:
         ++counts["cubes"];

@@ -14,7 +14,8 @@
 namespace clrt::compare {
 
 // What this comparison cannot give Embree (cubes, cylinders, cones, spheres under a
-// transform that is not rotation + uniform scale + translation), e.g. "4200 cylinders";
+// transform that is not rotation + uniform scale + translation, objects that move), e.g. "4200
+// cylinders";
 // empty when everything can be compared.
 std::string unsupported_shapes(const Scene& scene);
 
