@@ -48,9 +48,10 @@ CLRT_INLINE bool bvh_test_shape(__global const Instance* instances,
                                 __global const InstanceMotion* motions, u32 index, float3 o,
                                 float3 d, float time, float tmin, HitRecord* best) {
   __global const Instance* inst = instances + index;
-  const InstanceFrame frame = instance_frame(inst, motions, time);
+  float4 rows[3];
+  to_object_rows(inst->motion, inst->world_to_object, motions, time, rows);
   float3 oo, od, n;
-  ray_to_object(frame.to_object, o, d, &oo, &od);
+  ray_to_object(rows, o, d, &oo, &od);
   if (!intersect_canonical(inst->shape, inst->cone_r0, inst->cone_r1, oo, od, tmin, &best->t, &n))
     return false;
   best->instance = index;
@@ -58,14 +59,15 @@ CLRT_INLINE bool bvh_test_shape(__global const Instance* instances,
   return true;
 }
 
-/* The search behind both queries, for the ray at `time` (which places moving instances): hits
- * in (tmin, best->t) go into *best; `any` stops at the
- * first one. Returns whether anything was hit. The one function a compiler may keep out of
+/* The search behind both queries, for the ray from origin.xyz along direction.xyz at time
+ * origin.w (which places moving instances): hits in (tmin, best->t) go into *best; `any` stops at
+ * the first one. Returns whether anything was hit. The one function a compiler may keep out of
  * line (inlined into every kernel it doubles PoCL's cold build), so the ray crosses the call as
- * float4s, never float3s. */
-CLRT_CALLABLE bool scene_search(SCENE_PARAMS, float4 origin, float4 direction, float time,
-                                float tmin, bool any, HitRecord* best) {
+ * float4s, never float3s, and its time rides in the origin's spare lane. */
+CLRT_CALLABLE bool scene_search(SCENE_PARAMS, float4 origin, float4 direction, float tmin, bool any,
+                                HitRecord* best) {
   const float3 o = origin.xyz, d = direction.xyz;
+  const float time = origin.w;
   for (u32 p = 0; p < plane_count; ++p)
     if (bvh_test_shape(instances, motions, p, o, d, time, tmin, best) && any) return true;
   if (instance_count == plane_count) return best->instance != CLRT_NO_HIT;
@@ -91,12 +93,7 @@ CLRT_CALLABLE bool scene_search(SCENE_PARAMS, float4 origin, float4 direction, f
       __global const BvhMeshInstancePacket* entry =
           (__global const BvhMeshInstancePacket*)(bvh + ~e.ref);
       float4 rows[3];
-      if (entry->motion == CLRT_NO_MOTION) {
-        for (int r = 0; r < 3; ++r) rows[r] = entry->world_to_object[r];
-      } else {
-        const InstanceFrame frame = motion_frame(motions + entry->motion, time);
-        for (int r = 0; r < 3; ++r) rows[r] = frame.to_object[r];
-      }
+      to_object_rows(entry->motion, entry->world_to_object, motions, time, rows);
       float3 oo, od;
       ray_to_object(rows, o, d, &oo, &od);
       object = bvh_ray(oo, od);
@@ -124,7 +121,7 @@ CLRT_INLINE bool scene_closest_hit(SCENE_PARAMS, float3 o, float3 d, float time,
                                    float tmax, Hit* hit) {
   HitRecord best = hit_record_none(tmax);
   const bool found =
-      scene_search(SCENE_ARGS, (float4)(o, 0.0f), (float4)(d, 0.0f), time, tmin, false, &best);
+      scene_search(SCENE_ARGS, (float4)(o, time), (float4)(d, 0.0f), tmin, false, &best);
   hit_record_resolve(&best, o, d, time, instances, motions, meshes, bvh, triangle_normals, triangle_materials, hit);
   return found;
 }
@@ -134,7 +131,7 @@ CLRT_INLINE bool scene_any_hit(SCENE_PARAMS, float3 o, float3 d, float time, flo
                                float tmax) {
   HitRecord best = hit_record_none(tmax);
   /* The shape routines accept t > tmin; the next float below tmin makes that t >= tmin. */
-  return scene_search(SCENE_ARGS, (float4)(o, 0.0f), (float4)(d, 0.0f), time,
+  return scene_search(SCENE_ARGS, (float4)(o, time), (float4)(d, 0.0f),
                       nextafter(tmin, -INFINITY), true, &best);
 }
 

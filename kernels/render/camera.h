@@ -47,8 +47,10 @@ CLRT_INLINE float2 lens_sample(const Camera* cam, bool sobol, uint pixel, uint p
 /* Camera sample k's time within the shutter: the Sobol sampler's own number, or a jittered
  * stratum of the shutter, the strata dealt to the pixel's samples in a shuffled order of their
  * own (as the lens's cells are); the middle of the shutter for a single sample. Drawn from a
- * stream of its own, so a scene without motion renders the bits it rendered without it. */
+ * stream of its own, so a scene without motion renders the bits it rendered without it; a
+ * program built for a still scene, where no one reads the time, does not draw it. */
 CLRT_INLINE float shutter_time(const Camera* cam, bool sobol, uint pixel, uint path, uint k) {
+  if (!CLRT_SCENE_MOVES) return cam->shutter_open;
   float u = 0.5f;
   if (sobol) {
     u = sobol_sample(sample_key(path, 0u, CLRT_TIME_JITTER), k).x;

@@ -125,6 +125,15 @@ CLRT_CHECK_SIZE(Instance, 128);
 
 #define CLRT_NO_MOTION 0xffffffffu
 
+/* A program built for a scene where nothing moves (-DCLRT_STILL_SCENE, which the host adds when
+ * the scene has no motion table) treats every instance as still and draws no shutter times, so
+ * the compiler drops the motion code and still scenes run what they ran before motion existed. */
+#ifdef CLRT_STILL_SCENE
+#define CLRT_SCENE_MOVES 0
+#else
+#define CLRT_SCENE_MOVES 1
+#endif
+
 /* A moving instance's two poses, M = T R S at time 0 and at time 1 (a translation, a rotation
  * and a symmetric stretch, the polar decomposition of M's linear part). At time t the device
  * interpolates T and S linearly and R by spherical linear interpolation of its quaternions

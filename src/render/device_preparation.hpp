@@ -1,6 +1,8 @@
-// A device with its context and the renderer's program, made before the scene is known: the
-// program never depends on the scene, so OpenCL's start (the ICD loader opening PoCL: about
-// 25 ms) and the build (about 30 ms from a warm kernel cache) can run while the scene loads.
+// A device with its context and the renderer's program, made before the scene is known, so
+// OpenCL's start (the ICD loader opening PoCL: about 25 ms) and the build (about 30 ms from a
+// warm kernel cache) can run while the scene loads. The program depends on the scene only
+// through whether anything in it moves; it is prepared for a still scene, the common case, and a
+// scene with motion has its own built once it is known (Renderer).
 #pragma once
 
 #include <memory>
@@ -9,13 +11,15 @@
 #include "device/device_context.hpp"
 #include "device/device_select.hpp"
 #include "render/render_options.hpp"
+#include "render/renderer_program.hpp"
 
 namespace clrt {
 
 struct PreparedDevice {
   std::unique_ptr<DeviceContext> context;
   compute::program program;
-  RenderMode mode = RenderMode::Trace;  // the transport model the program holds
+  RenderMode mode = RenderMode::Trace;        // the transport model the program holds
+  SceneMotion motion = SceneMotion::Still;    // and whether it places moving objects
 };
 
 // The program for the render's mode (a command-line choice, known before the scene). Throws

@@ -9,8 +9,12 @@
 
 namespace clrt {
 
+// Whether any of the scene's objects moves. A still scene's program is built without the motion
+// code (-DCLRT_STILL_SCENE, kernels/shared/scene.h), which would cost it 4-6% of its render.
+enum class SceneMotion { Still, Moving };
+
 // `compiling` as DeviceContext::build() calls it: before a build from source.
 compute::program build_renderer_program(const DeviceContext& device, RenderMode mode,
-                                        const CompileNotice& compiling = {});
+                                        SceneMotion motion, const CompileNotice& compiling = {});
 
 }  // namespace clrt

@@ -59,3 +59,31 @@ TEST_CASE("renders that share one context and program keep their bits, render af
     }
   }
 }
+
+// Devices are prepared before the scene is read, with the program for still scenes; a scene with
+// moving objects must get the program that places them (a still program leaves every object at
+// its first pose, which this scene's spinning cube and rolling ball are not for most of the
+// shutter).
+TEST_CASE("a program prepared for still scenes is replaced for a scene with motion",
+          "[render][repeated][motion]") {
+  const Scene scene = load_scene(std::string(CLRT_SOURCE_DIR) + "/scenes/motion.ray");
+  RenderSetup setup;
+  setup.options = RenderOptions::from_scene(scene);
+  setup.options.width = 40;
+  setup.options.height = 30;
+  setup.options.samples = 4;
+  setup.options.mode = RenderMode::Trace;  // the mode render_on's programs are for
+  setup.devices = select_devices(test_device_spec());
+  const std::vector<PreparedDevice> prepared = prepare_devices(setup.devices, setup.options.mode);
+  REQUIRE(prepared.size() == 1);
+  REQUIRE(prepared.front().motion == SceneMotion::Still);
+  Renderer own_program(scene, build_geometry(scene), setup);
+  const FloatImage expected = std::get<FloatImage>(own_program.render(render_region(setup.options), false));
+  CHECK(same_bits(render_on(scene, setup, prepared.front()), expected));
+
+  // What the still program renders of this scene is not that image.
+  Scene first_pose = scene;
+  first_pose.end_transforms.clear();
+  for (InstanceSpec& instance : first_pose.instances) instance.motion = -1;
+  CHECK_FALSE(same_bits(render_on(first_pose, setup, prepared.front()), expected));
+}
