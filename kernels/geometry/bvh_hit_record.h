@@ -84,8 +84,9 @@ CLRT_INLINE void hit_record_resolve(const HitRecord* r, float3 o, float3 d, floa
       shading = bvh_world_normal(&frame, interpolated, geometric);
     }
     hit->primitive = triangle - mesh->first_triangle;
-    hit->material = inst->material == CLRT_MATERIAL_PER_TRIANGLE
-                        ? triangle_materials[hit->primitive] : inst->material;
+    const u32 own = inst->material_rows == CLRT_NO_MATERIAL_ROWS
+                        ? CLRT_INSTANCE_MATERIAL : triangle_materials[inst->material_rows + hit->primitive];
+    hit->material = own == CLRT_INSTANCE_MATERIAL ? inst->material : own;
   }
   hit->geometric_normal = (float4)(geometric, r->t);
   hit->shading_normal = (float4)(shading, 0.0f);

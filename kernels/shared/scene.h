@@ -101,10 +101,13 @@ CLRT_CHECK_SIZE(Emitter, 64);
 #define CLRT_SHAPE_CONE 4u
 #define CLRT_SHAPE_MESH 5u
 
-/* Instance.material of the mesh that holds the scene's loose `triangle`s: each triangle then
- * takes its material from triangle_materials, which holds only theirs, counted from the mesh's
- * first triangle (a table for every mesh's triangles was 4 MB per million of them, unread). */
-#define CLRT_MATERIAL_PER_TRIANGLE 0xffffffffu
+/* Instance.material_rows of an instance whose material is its every triangle's. A mesh whose
+ * triangles have materials of their own (the scene's loose `triangle`s, an OBJ's `usemtl`
+ * faces) has rows in triangle_materials, one per triangle in the order Hit.primitive counts;
+ * only such meshes have rows (a table for every mesh's triangles was 4 MB per million of them,
+ * unread). A row of CLRT_INSTANCE_MATERIAL (a face no library defines) takes the instance's. */
+#define CLRT_NO_MATERIAL_ROWS 0xffffffffu
+#define CLRT_INSTANCE_MATERIAL 0xffffffffu
 
 /* A canonical shape or a mesh placed by a transform M. The renderer intersects the canonical
  * object with the ray mapped by M^-1 and maps normals by (M^-1)^T. */
@@ -112,14 +115,15 @@ typedef struct Instance {
   f4 world_to_object[3]; /* rows 0..2 of M^-1 (row 3 is 0 0 0 1) */
   f4 normal_to_world[3]; /* rows 0..2 of the upper 3x3 of (M^-1)^T; w = 0 */
   u32 shape;             /* CLRT_SHAPE_* */
-  u32 material;          /* material index, or CLRT_MATERIAL_PER_TRIANGLE */
+  u32 material;          /* material index (of the faces without one of their own) */
   u32 mesh;              /* CLRT_SHAPE_MESH: index into the mesh table */
   u32 glow;              /* its place in the emitter table (CLRT_NO_GLOW, CLRT_GLOW_TRIANGLES
                             or its sphere's row) */
   float cone_r0, cone_r1; /* CLRT_SHAPE_CONE: radius at y = -1 and at y = +1 */
   u32 motion;             /* CLRT_NO_MOTION, or its row in the motion table; the rows above are
                              then M^-1 at time 0, which only the host reads */
-  u32 pad;
+  u32 material_rows;      /* CLRT_SHAPE_MESH: CLRT_NO_MATERIAL_ROWS, or where its mesh's
+                             triangle_materials rows start */
 } Instance;
 CLRT_CHECK_SIZE(Instance, 128);
 
@@ -152,7 +156,7 @@ CLRT_CHECK_SIZE(InstanceMotion, 144);
 
 /* A bottom-level model in its own object space; shared by all the instances that use it. */
 typedef struct Mesh {
-  u32 first_triangle; /* into the triangle normal table (triangle_materials counts from 0) */
+  u32 first_triangle; /* into the triangle normal table */
   u32 triangle_count;
   u32 root_node;      /* root of its bottom-level BVH in the node table */
   u32 has_normals;    /* nonzero: triangle_normals holds interpolable vertex normals */

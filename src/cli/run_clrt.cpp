@@ -301,6 +301,8 @@ int run_clrt(const CliOptions& cli) {
   }
   if (device_error) std::rethrow_exception(device_error);
   check_outputs_are_not_inputs(output, frames, scene);
+  if (!cli.quiet)
+    for (const std::string& warning : scene.warnings) progress.message(warning);
   // An empty scene is a valid one (a background, a test of the camera), but more often a scene
   // whose objects went missing: rendered, with a word.
   if (!cli.quiet && scene.instances.empty() && scene.triangles.empty())

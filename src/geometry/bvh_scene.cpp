@@ -20,16 +20,17 @@ std::vector<BvhTree> build_mesh_bvhs(const std::vector<TriangleSource>& sources,
   parallel_for(trees.size(), 1, [&](std::size_t m) {
     trees[m] = build_bvh(triangle_boxes(sources[m]), BvhBuildSettings{});
   });
-  std::size_t triangles = 0, loose = 0;
+  std::size_t triangles = 0, material_rows = 0;
   for (const TriangleSource& source : sources) {
     triangles += source.size();
-    if (source.loose()) loose = source.size();
+    if (source.has_materials()) material_rows += source.size();
   }
   geometry.triangle_normals.resize(triangles);
-  geometry.triangle_materials.resize(loose);
+  geometry.triangle_materials.resize(material_rows);
   geometry.triangle_source.resize(triangles);
   parallel_for(trees.size(), 1, [&](std::size_t m) {
-    write_triangle_rows(sources[m], trees[m].order, geometry.meshes[m].first_triangle, geometry);
+    write_triangle_rows(sources[m], trees[m].order, geometry.meshes[m].first_triangle,
+                        geometry.mesh_material_rows.at(m), geometry);
     if (rows_written) rows_written(m);
   });
   return trees;

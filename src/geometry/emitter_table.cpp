@@ -1,5 +1,6 @@
 #include "geometry/emitter_table.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -60,19 +61,33 @@ void cube(TableBuilder& table, const Mat4& m, bool mirrors, const Vec3& radiance
 
 Vec3 vertex(const dev::f4& v) { return {v.x, v.y, v.z}; }
 
-void mesh(TableBuilder& table, const TriangleSource& source, const Mat4& m, bool mirrors,
-          const Vec3& radiance) {
-  for (std::size_t t = 0; t < source.size(); ++t) {
-    const dev::Triangle tri = source.triangle(t);
-    table.placed_triangle(m, mirrors, vertex(tri.v0), vertex(tri.v1), vertex(tri.v2), radiance);
-  }
-}
-
 // A material's emission; none for an index past the table (scenes built in code may have no
 // materials).
 Vec3 emission_of(const Scene& scene, int material) {
   const auto m = static_cast<std::size_t>(material);
   return m < scene.materials.size() ? scene.materials[m].emission : Vec3{};
+}
+
+// A mesh instance's glowing triangles.
+void mesh(TableBuilder& table, const Scene& scene, const InstanceSpec& spec, const TriangleSource& source) {
+  const Mat4& m = spec.transform;
+  const bool mirrors = m.determinant() < 0;
+  const MeshData& data = scene.meshes.at(static_cast<std::size_t>(spec.mesh));
+  for (std::size_t t = 0; t < source.size(); ++t) {
+    const Vec3 radiance = emission_of(scene, mesh_triangle_material(spec, data, t));
+    if (!(glow_luminance(radiance) > 0)) continue;
+    const dev::Triangle tri = source.triangle(t);
+    table.placed_triangle(m, mirrors, vertex(tri.v0), vertex(tri.v1), vertex(tri.v2), radiance);
+  }
+}
+
+// Whether any of the mesh instance's faces glows.
+bool mesh_glows(const Scene& scene, const InstanceSpec& spec) {
+  if (glow_luminance(emission_of(scene, spec.material)) > 0) return true;
+  if (!spec.mesh_materials) return false;
+  const MeshData& mesh = scene.meshes[static_cast<std::size_t>(spec.mesh)];
+  return std::any_of(mesh.name_materials.begin(), mesh.name_materials.end(),
+                     [&](int m) { return m >= 0 && glow_luminance(emission_of(scene, m)) > 0; });
 }
 
 }  // namespace
@@ -83,10 +98,10 @@ bool glow_is_sampled(const Scene& scene) {
   for (const TriangleSpec& t : scene.triangles)
     if (glow_luminance(emission_of(scene, t.material)) > 0) return true;
   for (const InstanceSpec& spec : scene.instances) {
-    if (!(glow_luminance(emission_of(scene, spec.material)) > 0) || spec.motion >= 0) continue;
-    if (spec.shape == ShapeKind::Cube || spec.shape == ShapeKind::Mesh ||
-        world_sphere(spec))
-      return true;
+    if (spec.motion >= 0) continue;
+    if (spec.shape == ShapeKind::Mesh && mesh_glows(scene, spec)) return true;
+    if (!(glow_luminance(emission_of(scene, spec.material)) > 0)) continue;
+    if (spec.shape == ShapeKind::Cube || world_sphere(spec)) return true;
   }
   return false;
 }
@@ -109,9 +124,15 @@ void build_emitter_table(const Scene& scene, const std::vector<TriangleSource>& 
       continue;
     }
     const InstanceSpec& spec = scene.instances[static_cast<std::size_t>(out.instance_source[i])];
-    const Vec3 radiance = emission_of(scene, spec.material);
     // A moving surface has no one place to sample: paths that hit it take its light in full.
-    if (!(glow_luminance(radiance) > 0) || spec.motion >= 0) continue;
+    if (spec.motion >= 0) continue;
+    if (spec.shape == ShapeKind::Mesh) {
+      mesh(table, scene, spec, sources[inst.mesh]);
+      if (table.rows.size() > before) inst.glow = CLRT_GLOW_TRIANGLES;
+      continue;
+    }
+    const Vec3 radiance = emission_of(scene, spec.material);
+    if (!(glow_luminance(radiance) > 0)) continue;
     const Mat4& m = spec.transform;
     const bool mirrors = m.determinant() < 0;
     switch (spec.shape) {
@@ -132,10 +153,7 @@ void build_emitter_table(const Scene& scene, const std::vector<TriangleSource>& 
         cube(table, m, mirrors, radiance);
         if (table.rows.size() > before) inst.glow = CLRT_GLOW_TRIANGLES;
         break;
-      case ShapeKind::Mesh:
-        mesh(table, sources[inst.mesh], m, mirrors, radiance);
-        if (table.rows.size() > before) inst.glow = CLRT_GLOW_TRIANGLES;
-        break;
+      case ShapeKind::Mesh:  // above
       case ShapeKind::Plane:
       case ShapeKind::Cylinder:
       case ShapeKind::Cone:

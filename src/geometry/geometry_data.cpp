@@ -22,7 +22,9 @@ void append_instances(const Scene& scene, bool planes, GeometryData& out) {
   for (std::size_t i = 0; i < scene.instances.size(); ++i) {
     const InstanceSpec& spec = scene.instances[i];
     if ((spec.shape == ShapeKind::Plane) != planes) continue;
-    dev::Instance inst = device_instance(spec, static_cast<dev::u32>(spec.mesh));
+    const dev::u32 rows = spec.shape == ShapeKind::Mesh ? out.mesh_material_rows.at(static_cast<std::size_t>(spec.mesh))
+                                                        : CLRT_NO_MATERIAL_ROWS;
+    dev::Instance inst = device_instance(spec, static_cast<dev::u32>(spec.mesh), rows);
     if (spec.motion >= 0) {
       inst.motion = static_cast<dev::u32>(out.motions.size());
       out.motions.push_back(
@@ -33,15 +35,28 @@ void append_instances(const Scene& scene, bool planes, GeometryData& out) {
   }
 }
 
+// Where each source's rows of triangle materials start, for those that have them.
+std::vector<dev::u32> material_rows(const std::vector<TriangleSource>& sources) {
+  std::vector<dev::u32> rows;
+  std::size_t next = 0;
+  for (const TriangleSource& source : sources) {
+    rows.push_back(source.has_materials() ? static_cast<dev::u32>(next) : CLRT_NO_MATERIAL_ROWS);
+    if (source.has_materials()) next += source.size();
+  }
+  return rows;
+}
+
 GeometryData build_tables(const Scene& scene, const std::function<void(std::size_t)>& rows_written) {
   GeometryData out;
+  std::vector<TriangleSource> sources(scene.meshes.begin(), scene.meshes.end());
+  if (!scene.triangles.empty()) sources.emplace_back(scene.triangles);
+  out.mesh_material_rows = material_rows(sources);
   append_instances(scene, true, out);
   out.plane_count = static_cast<dev::u32>(out.instances.size());
   append_instances(scene, false, out);
-  std::vector<TriangleSource> sources(scene.meshes.begin(), scene.meshes.end());
   if (!scene.triangles.empty()) {
-    sources.emplace_back(scene.triangles);
-    out.instances.push_back(loose_triangle_instance(static_cast<dev::u32>(sources.size() - 1)));
+    out.instances.push_back(
+        loose_triangle_instance(static_cast<dev::u32>(sources.size() - 1), out.mesh_material_rows.back()));
     out.instance_source.push_back(-1);
   }
   std::size_t triangles = 0;
@@ -78,7 +93,11 @@ GeometryData build_geometry_for_render(Scene& scene) {
 }
 
 void release_mesh_data(Scene& scene) {
-  for (MeshData& mesh : scene.meshes) mesh = MeshData{mesh.path, {}, {}, {}, {}};
+  for (MeshData& mesh : scene.meshes) {
+    MeshData released;
+    released.path = std::move(mesh.path);
+    mesh = std::move(released);
+  }
 }
 
 }  // namespace clrt

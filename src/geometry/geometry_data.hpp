@@ -21,9 +21,8 @@ struct GeometryData {
   // Per triangle, each mesh's triangles in the order of its BVH leaves, which is the order
   // Hit.primitive counts in (triangle_source maps them back to the file's order):
   DeviceTable<dev::TriangleNormals> triangle_normals;  // zero without normals
-  DeviceTable<dev::u32> triangle_materials;            // one per loose triangle, in the loose
-                                                       // mesh's order (meshes take their
-                                                       // instance's material)
+  DeviceTable<dev::u32> triangle_materials;  // rows of the meshes whose triangles have
+                                             // materials of their own (Instance.material_rows)
   BvhTable nodes;                     // the top level's root is node 0
   // The glowing surfaces path mode samples (geometry/emitter_table.hpp), which the frame's light
   // table carries after the glow light's record; their total power, luminance times area.
@@ -36,6 +35,8 @@ struct GeometryData {
                                            // loose-triangle mesh's instance
   std::vector<dev::u32> triangle_source;   // per triangle: its index within its MeshData (in
                                            // Scene::triangles for the loose-triangle mesh)
+  std::vector<dev::u32> mesh_material_rows;  // per mesh: where its triangle_materials rows
+                                             // start, or CLRT_NO_MATERIAL_ROWS
 
   std::size_t triangle_count() const { return triangle_normals.size(); }
   std::size_t device_bytes() const;

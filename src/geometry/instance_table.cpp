@@ -37,21 +37,24 @@ dev::Instance placed(const Mat4& inverse) {
 
 }  // namespace
 
-dev::Instance device_instance(const InstanceSpec& spec, dev::u32 mesh) {
+dev::Instance device_instance(const InstanceSpec& spec, dev::u32 mesh, dev::u32 material_rows) {
   dev::Instance inst = placed(spec.transform.inverse());
   inst.shape = device_shape(spec.shape);
   inst.material = static_cast<dev::u32>(spec.material);
   inst.mesh = spec.shape == ShapeKind::Mesh ? mesh : 0;
+  inst.material_rows =
+      spec.shape == ShapeKind::Mesh && spec.mesh_materials ? material_rows : CLRT_NO_MATERIAL_ROWS;
   inst.cone_r0 = static_cast<float>(spec.cone_r0);
   inst.cone_r1 = static_cast<float>(spec.cone_r1);
   return inst;
 }
 
-dev::Instance loose_triangle_instance(dev::u32 mesh) {
+dev::Instance loose_triangle_instance(dev::u32 mesh, dev::u32 material_rows) {
   dev::Instance inst = placed(Mat4::identity());
   inst.shape = CLRT_SHAPE_MESH;
-  inst.material = CLRT_MATERIAL_PER_TRIANGLE;
+  inst.material = 0;  // every row is a triangle's own
   inst.mesh = mesh;
+  inst.material_rows = material_rows;
   return inst;
 }
 

@@ -1,5 +1,6 @@
 #include "geometry/mesh_table.hpp"
 
+#include <algorithm>
 #include <array>
 #include <stdexcept>
 #include <string>
@@ -33,11 +34,18 @@ TriangleSource::TriangleSource(const MeshData& mesh) : mesh_(&mesh), size_(mesh.
   if (mesh.corners.size() % 3 != 0)
     throw std::invalid_argument("mesh " + mesh.path + ": corner count is not a multiple of 3");
   has_normals_ = !mesh.normals.empty() && mesh.corner_normals.size() == mesh.corners.size();
+  if (!mesh.triangle_names.empty() && mesh.triangle_names.size() != size_)
+    throw std::invalid_argument("mesh " + mesh.path + ": material names for " +
+                                std::to_string(mesh.triangle_names.size()) + " of " + std::to_string(size_) +
+                                " triangles");
+  has_materials_ = !mesh.triangle_names.empty() &&
+                   std::any_of(mesh.name_materials.begin(), mesh.name_materials.end(), [](int m) { return m >= 0; });
   check_indices(mesh.corners, mesh.positions.size(), mesh);
   if (has_normals_) check_indices(mesh.corner_normals, mesh.normals.size(), mesh);
 }
 
-TriangleSource::TriangleSource(const std::vector<TriangleSpec>& loose) : loose_(&loose), size_(loose.size()) {}
+TriangleSource::TriangleSource(const std::vector<TriangleSpec>& loose)
+    : loose_(&loose), size_(loose.size()), has_materials_(true) {}
 
 dev::Triangle TriangleSource::triangle(std::size_t t) const {
   if (loose_) {
@@ -74,7 +82,10 @@ dev::TriangleNormals TriangleSource::normals(std::size_t t, const std::vector<st
 }
 
 dev::u32 TriangleSource::material(std::size_t t) const {
-  return static_cast<dev::u32>(loose_->at(t).material);
+  if (loose_) return static_cast<dev::u32>((*loose_)[t].material);
+  const std::uint32_t name = mesh_->triangle_names.empty() ? kNoMeshMaterial : mesh_->triangle_names[t];
+  const int m = name == kNoMeshMaterial ? -1 : mesh_->name_materials.at(name);
+  return m < 0 ? CLRT_INSTANCE_MATERIAL : static_cast<dev::u32>(m);
 }
 
 std::vector<Box> triangle_boxes(const TriangleSource& source) {
@@ -95,12 +106,12 @@ dev::Mesh device_mesh(const TriangleSource& source, dev::u32 first_triangle) {
 }
 
 void write_triangle_rows(const TriangleSource& source, const std::vector<std::uint32_t>& order,
-                         std::size_t first, GeometryData& out) {
+                         std::size_t first, dev::u32 material_rows, GeometryData& out) {
   const std::vector<std::array<float, 3>> unit = source.unit_normals();
   parallel_for(order.size(), kChunk, [&](std::size_t i) {
     const std::uint32_t t = order[i];
     out.triangle_normals[first + i] = source.normals(t, unit);
-    if (source.loose()) out.triangle_materials[i] = source.material(t);
+    if (source.has_materials()) out.triangle_materials[material_rows + i] = source.material(t);
     out.triangle_source[first + i] = t;
   });
 }

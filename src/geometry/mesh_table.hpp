@@ -37,9 +37,12 @@ class TriangleSource {
   // Triangle t's unit vertex normals, read from `unit` (unit_normals()); a corner whose normal
   // could not be normalised gets the face normal. All zero without normals.
   dev::TriangleNormals normals(std::size_t t, const std::vector<std::array<float, 3>>& unit) const;
-  // Whether it holds the scene's loose triangles, which alone have materials of their own.
+  // Whether it holds the scene's loose triangles.
   bool loose() const { return loose_ != nullptr; }
-  // Triangle t's own material; only for the loose triangles (a mesh takes its instance's).
+  // Whether its triangles have materials of their own: the loose triangles, and a mesh file's
+  // faces under a `usemtl` that its libraries define.
+  bool has_materials() const { return has_materials_; }
+  // Triangle t's own material, or CLRT_INSTANCE_MATERIAL where it takes its instance's.
   dev::u32 material(std::size_t t) const;
 
  private:
@@ -47,6 +50,7 @@ class TriangleSource {
   const std::vector<TriangleSpec>* loose_ = nullptr;
   std::size_t size_ = 0;
   bool has_normals_ = false;
+  bool has_materials_ = false;
 };
 
 // The boxes of the source's triangles (of their single-precision vertices), on every core.
@@ -56,9 +60,10 @@ std::vector<Box> triangle_boxes(const TriangleSource& source);
 // tables (its BVH root is set later).
 dev::Mesh device_mesh(const TriangleSource& source, dev::u32 first_triangle);
 
-// Writes the per-triangle rows first + i = source triangle order[i] (normals, source index; the
-// loose triangles' materials at row i) on every core; the tables must already hold them.
+// Writes the per-triangle rows first + i = source triangle order[i] (normals, source index) and,
+// for a source with materials, material_rows + i, on every core; the tables must already hold
+// them.
 void write_triangle_rows(const TriangleSource& source, const std::vector<std::uint32_t>& order,
-                         std::size_t first, GeometryData& out);
+                         std::size_t first, dev::u32 material_rows, GeometryData& out);
 
 }  // namespace clrt

@@ -78,6 +78,8 @@ int run(const mpi::Session& session, const CliOptions& cli, const mpi::TileSize&
     RecordingFiles recording;
     scene = load_scene(cli.scene, recording);
     check_outputs_are_not_inputs(output, frames, scene);
+    if (!cli.quiet)
+      for (const std::string& warning : scene.warnings) progress.message(warning);
     files = recording.files();
   });
   if (!all_went_well(session, mine, status, progress)) return status;

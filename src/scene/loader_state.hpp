@@ -23,6 +23,7 @@ struct LoaderState {
   // at time 1 (both the same: they do not move). `reset` clears it.
   std::optional<Mat4> start_pose;
   int material = 0;                         // the current material: index into scene.materials
+  bool mesh_materials = true;               // `mtl on|off`
   std::map<std::string, int> mesh_by_path;  // resolved path -> index into scene.meshes
   std::int64_t shadow_samples = 0;          // shadow_samples() of the lights so far
   MemoryLimit memory = memory_limit();      // what the process may take, read as loading starts

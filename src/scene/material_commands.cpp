@@ -1,4 +1,5 @@
-// material / surface: appends a material and makes it the current one; emission: one that glows.
+// material / surface: appends a material and makes it the current one; emission: one that glows;
+// mtl: whether meshes keep their MTL materials.
 #include "scene/command_table.hpp"
 #include "scene/limits.hpp"
 
@@ -41,12 +42,23 @@ void emission(LoaderState& s, const CommandArgs& a) {
   s.material = static_cast<int>(s.scene.materials.size()) - 1;
 }
 
+// mtl on|off: whether the meshes placed after it give their `usemtl` faces the materials of
+// their MTL libraries (on, the default) or the current material to every face (off).
+void mtl(LoaderState& s, const CommandArgs& a) {
+  a.require_count({1});
+  const std::string word = lower_case(a.word(0).text);
+  if (word != "on" && word != "off")
+    throw a.error_at(0, "mtl takes on or off, found " + excerpt(a.word(0).text));
+  s.mesh_materials = word == "on";
+}
+
 }  // namespace
 
 void add_material_commands(CommandTable& table) {
   table["material"] = material;
   table["surface"] = material;
   table["emission"] = emission;
+  table["mtl"] = mtl;
 }
 
 }  // namespace clrt

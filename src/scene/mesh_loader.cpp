@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstring>
 #include <optional>
+#include <unordered_map>
 #include <vector>
 
 #include "math/parallel_for.hpp"
@@ -117,6 +118,34 @@ void gather(std::vector<ObjChunk>& chunks, const SliceStarts& starts, bool with_
   });
 }
 
+// Each triangle's `usemtl` name, the name in force carried from slice to slice.
+void gather_material_names(const std::string& path, const std::vector<ObjChunk>& chunks,
+                           const SliceStarts& starts, MeshData& mesh) {
+  for (std::size_t i = 0; i < chunks.size(); ++i)
+    for (const ObjLibraryRef& library : chunks[i].libraries)
+      mesh.libraries.push_back({library.path, location(path, starts.lines[i], library.where)});
+  if (std::all_of(chunks.begin(), chunks.end(), [](const ObjChunk& c) { return c.material_runs.empty(); }))
+    return;
+  std::unordered_map<std::string, std::uint32_t> index_of;
+  mesh.triangle_names.assign(starts.total_corners / 3, kNoMeshMaterial);
+  std::uint32_t current = kNoMeshMaterial;
+  for (std::size_t i = 0; i < chunks.size(); ++i) {
+    const ObjChunk& c = chunks[i];
+    const std::size_t end = i + 1 < chunks.size() ? starts.corners[i + 1] : starts.total_corners;
+    const std::size_t first = starts.corners[i] / 3, count = end / 3 - first;
+    std::size_t from = 0;
+    for (const ObjMaterialRun& run : c.material_runs) {
+      std::fill(mesh.triangle_names.begin() + first + from, mesh.triangle_names.begin() + first + run.first_triangle,
+                current);
+      const auto known = index_of.emplace(run.name, static_cast<std::uint32_t>(mesh.material_names.size()));
+      if (known.second) mesh.material_names.push_back({run.name, location(path, starts.lines[i], run.where)});
+      current = known.first->second;
+      from = run.first_triangle;
+    }
+    std::fill(mesh.triangle_names.begin() + first + from, mesh.triangle_names.begin() + first + count, current);
+  }
+}
+
 // The mesh's tables once gathered.
 std::uint64_t mesh_bytes(const SliceStarts& starts, bool with_normals) {
   const std::uint64_t per_corner = with_normals ? 2 * sizeof(std::uint32_t) : sizeof(std::uint32_t);
@@ -178,6 +207,7 @@ MeshData load_obj_mesh(const std::string& path, const FileSource& files, const M
   check_gather_memory(path, chunks, mesh_bytes(starts, with_normals), memory);
   MeshData mesh;
   mesh.path = path;
+  gather_material_names(path, chunks, starts, mesh);
   gather(chunks, starts, with_normals, mesh);
   // Per slice, its first polygon refused.
   std::vector<const ObjPolygon*> refused(chunks.size(), nullptr);

@@ -2,8 +2,10 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "scene/file_source.hpp"
 #include "scene/memory_limit.hpp"
@@ -32,5 +34,16 @@ class MeshError : public std::runtime_error {
 // slices' tables and the mesh's side by side would (this error's line depends on the slices).
 MeshData load_obj_mesh(const std::string& path, const FileSource& files = disk_files(),
                        const MemoryLimit& memory = {});
+
+// The materials of a mesh's `usemtl` names (MeshData::material_names), read from its `mtllib`
+// libraries (found beside the OBJ file) and mapped onto clrt's model (scene/mtl_material.hpp):
+// none for a name no library defines. A library that cannot be read, a name no library
+// defines and what a library says that clrt does not render are warnings, each said once; a
+// malformed library is a MeshError.
+struct MeshMaterials {
+  std::vector<std::optional<MaterialSpec>> by_name;
+  std::vector<std::string> warnings;  // "FILE:LINE:COLUMN: warning: ..."
+};
+MeshMaterials load_mesh_materials(const MeshData& mesh, const FileSource& files = disk_files());
 
 }  // namespace clrt

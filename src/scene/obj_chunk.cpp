@@ -125,6 +125,21 @@ class LineReader {
     return c;
   }
 
+  // The rest of the line, from its first word to the end of its last (a comment left out), and
+  // the column it starts at; empty when no word is left.
+  std::string_view rest(std::size_t& column) {
+    std::string_view span;
+    column = column_past_last();
+    while (at_word()) {
+      const char* start = p_;
+      if (span.empty()) column = column_of(start);
+      const char* first = span.empty() ? start : span.data();
+      take_word();
+      span = {first, static_cast<std::size_t>(p_ - first)};
+    }
+    return span;
+  }
+
   [[noreturn]] void fail(std::size_t column, std::string message) const {
     throw Malformed{{line_, column}, std::move(message)};
   }
@@ -230,6 +245,14 @@ bool parse_line(const char* begin, const char* end, std::size_t line, Sink& sink
   else if (keyword == "vn") normal(r, sink);
   else if (keyword == "vt") texture_coordinate(r);
   else if (keyword == "f") return face(r, sink);
+  else if (keyword == "usemtl" || keyword == "mtllib") {
+    std::size_t column = 1;
+    const std::string_view name = r.rest(column);
+    if (name.empty())
+      r.fail(column, std::string(keyword) + " needs a " + (keyword == "usemtl" ? "material name" : "file name"));
+    if (keyword == "usemtl") sink.use_material(name, {line, column});
+    else sink.library(name, {line, column});
+  }
   return true;
 }
 
@@ -271,6 +294,12 @@ class Collector {
 
   void position(const Vec3& p) { out_.positions.push_back(p); }
   void normal(const Vec3& n) { out_.normals.push_back(n); }
+  void use_material(std::string_view name, const ObjPlace& where) {
+    out_.material_runs.push_back({out_.corners.index.size() / 3, std::string(name), where});
+  }
+  void library(std::string_view path, const ObjPlace& where) {
+    out_.libraries.push_back({std::string(path), where});
+  }
 
   bool triangle(const Corner& a, const Corner& b, const Corner& c, std::size_t) {
     for (const Corner* k : {&a, &b, &c}) {
@@ -311,6 +340,8 @@ class CornerFinder {
 
   void position(const Vec3&) { ++positions_; }
   void normal(const Vec3&) { ++normals_; }
+  void use_material(std::string_view, const ObjPlace&) {}
+  void library(std::string_view, const ObjPlace&) {}
 
   bool triangle(const Corner& a, const Corner& b, const Corner& c, std::size_t line) {
     if (wanted_ >= seen_ + 3) {
@@ -339,7 +370,8 @@ std::uint64_t ObjChunk::bytes() const {
   return (positions.capacity() + normals.capacity()) * sizeof(Vec3) +
          (corners.index.capacity() + corner_normals.index.capacity()) * sizeof(std::int32_t) +
          (corners.relative.capacity() + corner_normals.relative.capacity()) * sizeof(std::uint32_t) +
-         polygons.capacity() * sizeof(ObjPolygon);
+         polygons.capacity() * sizeof(ObjPolygon) + material_runs.capacity() * sizeof(ObjMaterialRun) +
+         libraries.capacity() * sizeof(ObjLibraryRef);
 }
 
 ObjChunk parse_obj_chunk(std::string_view text, ObjMemoryMeter& meter) {

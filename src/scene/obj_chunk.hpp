@@ -45,12 +45,27 @@ struct ObjPolygon {
   std::size_t line;  // in the slice, from 0
 };
 
+// `usemtl NAME`: the slice's triangles from `first_triangle` on, up to the next run's, use NAME.
+struct ObjMaterialRun {
+  std::size_t first_triangle;
+  std::string name;
+  ObjPlace where;  // of the name
+};
+
+// `mtllib FILE`, as written.
+struct ObjLibraryRef {
+  std::string path;
+  ObjPlace where;  // of the path
+};
+
 struct ObjChunk {
   std::vector<Vec3> positions;   // `v x y z`, as single-precision values
   std::vector<Vec3> normals;     // `vn x y z`
   ObjCornerRefs corners;         // three per triangle
   ObjCornerRefs corner_normals;  // likewise; kObjNoIndex for a corner that names no normal
   std::vector<ObjPolygon> polygons;
+  std::vector<ObjMaterialRun> material_runs;
+  std::vector<ObjLibraryRef> libraries;
   bool every_corner_has_normal = true;
   std::size_t lines = 0;              // line ends in the slice
   std::optional<ObjProblem> problem;  // the first malformed line: parsing stopped there
@@ -65,8 +80,8 @@ struct ObjMemoryMeter {
   std::atomic<std::uint64_t> used{0};
 };
 
-// Parses `text`, whole lines of an OBJ file. Lines other than v, vn, vt and f (o, g, s, usemtl,
-// mtllib, ...) and anything from a word starting with '#' to the line's end are ignored. Every
+// Parses `text`, whole lines of an OBJ file. Lines other than v, vn, vt, f, usemtl and mtllib
+// (o, g, s, ...) and anything from a word starting with '#' to the line's end are ignored. Every
 // few thousand lines the chunk's growth is added to `meter`; parsing stops with a problem at the
 // line where the meter passes what is available (in this slice or another).
 ObjChunk parse_obj_chunk(std::string_view text, ObjMemoryMeter& meter);

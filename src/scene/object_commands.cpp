@@ -66,6 +66,17 @@ MemoryLimit memory_left(const LoaderState& s) {
   return {s.memory.bytes > used ? s.memory.bytes - used : 0, s.memory.source};
 }
 
+// The materials of the mesh's `usemtl` names join the scene's (whether or not an instance takes
+// them: a mesh file is read once, and `mtl` may differ between its instances).
+void add_mesh_materials(LoaderState& s, MeshData& mesh) {
+  MeshMaterials found = load_mesh_materials(mesh, *s.files);
+  for (const std::optional<MaterialSpec>& m : found.by_name) {
+    if (m) s.scene.materials.push_back(*m);
+    mesh.name_materials.push_back(m ? static_cast<int>(s.scene.materials.size()) - 1 : -1);
+  }
+  for (std::string& w : found.warnings) s.scene.warnings.push_back(std::move(w));
+}
+
 // The same resolved path is read once; every `mesh` naming it shares that MeshData.
 int mesh_index(LoaderState& s, const CommandArgs& a) {
   const std::string path =
@@ -74,6 +85,7 @@ int mesh_index(LoaderState& s, const CommandArgs& a) {
   if (known != s.mesh_by_path.end()) return known->second;
   try {
     s.scene.meshes.push_back(load_obj_mesh(path, *s.files, memory_left(s)));
+    add_mesh_materials(s, s.scene.meshes.back());
   } catch (const MeshError& e) {
     throw SceneError(a.command_location(), std::string("bad mesh file ") + e.what());
   }
@@ -89,7 +101,9 @@ void mesh(LoaderState& s, const CommandArgs& a) {
                             " (put a path with spaces in double quotes)");
   a.require_count({1});
   const int index = mesh_index(s, a);
-  add_object(s, a.command_location(), ShapeKind::Mesh).mesh = index;
+  InstanceSpec& placed = add_object(s, a.command_location(), ShapeKind::Mesh);
+  placed.mesh = index;
+  placed.mesh_materials = s.mesh_materials;
 }
 
 }  // namespace

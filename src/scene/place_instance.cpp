@@ -23,6 +23,13 @@ InstanceSpec place_instance(ShapeKind shape, const Mat4& to_world, int material)
   return instance;
 }
 
+int mesh_triangle_material(const InstanceSpec& instance, const MeshData& mesh, std::size_t t) {
+  if (!instance.mesh_materials || mesh.triangle_names.empty()) return instance.material;
+  const std::uint32_t name = mesh.triangle_names.at(t);
+  const int own = name == kNoMeshMaterial ? -1 : mesh.name_materials.at(name);
+  return own >= 0 ? own : instance.material;
+}
+
 SourceLocation instance_location(const Scene& scene, const InstanceSpec& instance) {
   return {scene.path, instance.place.line, instance.place.column};
 }

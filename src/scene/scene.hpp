@@ -62,7 +62,7 @@ struct LightSpec {
   int samples = 1;             // area: default 16
 };
 
-enum class ShapeKind { Sphere, Plane, Cube, Cylinder, Cone, Mesh };
+enum class ShapeKind : std::uint8_t { Sphere, Plane, Cube, Cylinder, Cone, Mesh };
 
 // Where in the scene file (Scene::path) a command was written.
 struct TextPlace {
@@ -75,6 +75,9 @@ struct TextPlace {
 // and the file of its place is the scene's. 168 bytes.
 struct InstanceSpec {
   ShapeKind shape = ShapeKind::Sphere;
+  // ShapeKind::Mesh: its faces named by `usemtl` take their MTL materials (MeshData::
+  // name_materials); the others, and every face when false (`mtl off`), take `material`.
+  bool mesh_materials = false;
   int material = 0;  // index into Scene::materials
   int mesh = -1;     // ShapeKind::Mesh: index into Scene::meshes
   TextPlace place;
@@ -86,6 +89,12 @@ struct InstanceSpec {
 // An instance of `shape` placed by `to_world`.
 InstanceSpec place_instance(ShapeKind shape, const Mat4& to_world, int material = 0);
 
+// A place in a mesh file that names something: an `mtllib` library, a `usemtl` material.
+struct MeshName {
+  std::string name;  // as written
+  SourceLocation where;
+};
+
 // A triangle mesh in its own object space, loaded once however many instances use it.
 struct MeshData {
   std::string path;                  // as resolved against the scene's folder
@@ -93,7 +102,22 @@ struct MeshData {
   std::vector<Vec3> normals;         // empty, or the file's normals (see corner_normals)
   std::vector<std::uint32_t> corners;  // 3 per triangle, into `positions`, counter-clockwise
   std::vector<std::uint32_t> corner_normals;  // 3 per triangle into `normals` when normals exist
+  // `usemtl`: the names in the order of their first use (where first used), and per triangle
+  // the index of the name in force (kNoMeshMaterial before the file's first `usemtl`); both
+  // empty when it names none.
+  std::vector<MeshName> material_names;
+  std::vector<std::uint32_t> triangle_names;
+  std::vector<MeshName> libraries;  // `mtllib`, in file order
+  // Per name: its material from the file's `mtllib` libraries, as an index into Scene::materials
+  // (set by the scene's loader), or -1 for a name no library defines.
+  std::vector<int> name_materials;
 };
+
+constexpr std::uint32_t kNoMeshMaterial = UINT32_MAX;
+
+// The material of triangle t of `mesh` placed by `instance`: its MTL material where its `usemtl`
+// names one and the instance keeps them (InstanceSpec::mesh_materials), else the instance's.
+int mesh_triangle_material(const InstanceSpec& instance, const MeshData& mesh, std::size_t t);
 
 // A `triangle` command: vertices already transformed to world space by the current M.
 struct TriangleSpec {
@@ -117,6 +141,9 @@ struct Scene {
   std::vector<Mat4> end_transforms;  // moving objects' poses at time 1 (`endpose`)
   std::vector<MeshData> meshes;
   std::vector<TriangleSpec> triangles;
+  // What the loader read but cannot render as written ("FILE:LINE:COLUMN: warning: ..."), each
+  // said once: shown before the render.
+  std::vector<std::string> warnings;
 };
 
 // Where `instance` was written in `scene`'s file, for messages.

@@ -55,7 +55,10 @@ Json light(const LightSpec& l) {
 Json object(const Scene& scene, const InstanceSpec& o) {
   Json j = {{"shape", shape_name(o.shape)}, {"material", o.material}};
   if (o.shape == ShapeKind::Cone) j["radii"] = Json::array({o.cone_r0, o.cone_r1});
-  if (o.shape == ShapeKind::Mesh) j["mesh"] = o.mesh;
+  if (o.shape == ShapeKind::Mesh) {
+    j["mesh"] = o.mesh;
+    j["mtl"] = o.mesh_materials;
+  }
   j["transform"] = matrix(o.transform);
   if (o.motion >= 0) j["end_transform"] = matrix(scene.end_transforms[static_cast<std::size_t>(o.motion)]);
   j["line"] = o.place.line;
@@ -99,6 +102,11 @@ void write_mesh(const Writer& write, const MeshData& mesh) {
   write_array(write, mesh.normals.size(), vec_at(mesh.normals), ",");
   write(",\"triangle_normals\":");
   write_array(write, mesh.corner_normals.size() / 3, triples_of(mesh.corner_normals), ",");
+  write(",\"triangle_materials\":");
+  write_array(write, mesh.triangle_names.size(), [&mesh](std::size_t t) {
+    const std::uint32_t name = mesh.triangle_names[t];
+    return Json(name == kNoMeshMaterial ? -1 : mesh.name_materials.at(name));
+  }, ",");
   write("}");
 }
 

@@ -25,7 +25,7 @@ std::uint64_t estimated_scene_bytes(const Scene& scene) {
   std::uint64_t growing = table_bytes(scene.triangles);
   for (const MeshData& mesh : scene.meshes)
     growing += table_bytes(mesh.positions) + table_bytes(mesh.normals) + table_bytes(mesh.corners) +
-               table_bytes(mesh.corner_normals);
+               table_bytes(mesh.corner_normals) + table_bytes(mesh.triangle_names);
   const std::uint64_t environment = scene.environment ? table_bytes(scene.environment->rgb) : 0;
   return 2 * growing + table_bytes(scene.instances) + table_bytes(scene.end_transforms) + environment +
          estimated_geometry_bytes(scene);

@@ -12,6 +12,10 @@ std::string position_of(const SourceLocation& where) {
 
 }  // namespace
 
+std::string scene_warning(const SourceLocation& where, const std::string& message) {
+  return position_of(where) + ": warning: " + message;
+}
+
 SceneError::SceneError(SourceLocation where, const std::string& message)
     : std::runtime_error(position_of(where) + ": error: " + message),
       where_(std::move(where)),

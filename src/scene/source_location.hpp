@@ -17,6 +17,10 @@ struct SourceLocation {
   static SourceLocation whole_file(std::string file) { return {std::move(file), 0, 0}; }
 };
 
+// What a loader read but cannot use as written: "FILE:LINE:COLUMN: warning: MESSAGE" (Scene::
+// warnings), placed as a SceneError is.
+std::string scene_warning(const SourceLocation& where, const std::string& message);
+
 // A bad scene or mesh: what() is "FILE:LINE:COLUMN: error: MESSAGE", or "FILE: error: MESSAGE"
 // for the file as a whole.
 class SceneError : public std::runtime_error {

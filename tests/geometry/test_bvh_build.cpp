@@ -171,10 +171,11 @@ TEST_CASE("geometry tables: planes first, one mesh per model, loose triangles la
   for (std::size_t i = 0; i < g.instances.size(); ++i) {
     if (g.instance_source[i] >= 0) {
       CHECK(g.instances[i].material == static_cast<dev::u32>(scene.instances[g.instance_source[i]].material));
+      CHECK(g.instances[i].material_rows == CLRT_NO_MATERIAL_ROWS);  // the mesh names no usemtl
       continue;
     }
     ++loose_instances;
-    CHECK(g.instances[i].material == CLRT_MATERIAL_PER_TRIANGLE);
+    CHECK(g.instances[i].material_rows == 0);
     CHECK(g.instances[i].mesh == 1);
     CHECK(g.instances[i].world_to_object[0].x == 1.0f);
     CHECK(g.instances[i].world_to_object[0].w == 0.0f);

@@ -67,7 +67,7 @@ TEST_CASE("a glowing mesh's rows face where (M^-1)^T turns its normals", "[geome
     INFO((mirrored ? "mirrored" : "not mirrored"));
     Scene scene;
     scene.materials.resize(1);
-    scene.meshes.push_back(MeshData{"tri.obj", {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {}, {0, 1, 2}, {}});
+    scene.meshes.push_back(MeshData{"tri.obj", {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {}, {0, 1, 2}, {}, {}, {}, {}, {}});
     const Mat4 m = Mat4::translate({0, 0, -3}) * Mat4::scale({mirrored ? -2.0 : 2.0, 1, 1});
     InstanceSpec mesh = place_instance(ShapeKind::Mesh, m, glowing(scene, {0, 2, 0}));
     mesh.mesh = 0;
@@ -79,6 +79,36 @@ TEST_CASE("a glowing mesh's rows face where (M^-1)^T turns its normals", "[geome
     CHECK(cross(xyz(r.rows[0].edge1), xyz(r.rows[0].edge2)).z > 0);
     CHECK(area(r.rows[0]) == Approx(1.0));
     CHECK(xyz(r.rows[0].radiance) == Vec3{0, 2, 0});
+  }
+}
+
+TEST_CASE("a mesh's faces glow by their own MTL materials where the instance keeps them",
+          "[geometry][glow][mtl]") {
+  for (const bool keep : {true, false}) {
+    INFO((keep ? "mtl on" : "mtl off"));
+    Scene scene;
+    scene.materials.resize(1);
+    const int glow = glowing(scene, {0, 3, 0});
+    // Two triangles: the first under a usemtl naming the glowing material, the second before any.
+    MeshData quad{"quad.obj", {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}}, {}, {0, 1, 2, 0, 2, 3}, {}, {}, {}, {}, {}};
+    quad.material_names = {{"lamp", {}}};
+    quad.triangle_names = {0, kNoMeshMaterial};
+    quad.name_materials = {glow};
+    scene.meshes.push_back(quad);
+    InstanceSpec mesh = place_instance(ShapeKind::Mesh, Mat4::identity(), 0);
+    mesh.mesh = 0;
+    mesh.mesh_materials = keep;
+    scene.instances.push_back(mesh);
+    const Rows r = rows_of(scene);
+    if (!keep) {
+      CHECK(r.rows.empty());
+      CHECK(r.glow == CLRT_NO_GLOW);
+      continue;
+    }
+    CHECK(r.glow == CLRT_GLOW_TRIANGLES);
+    REQUIRE(r.rows.size() == 1);
+    CHECK(xyz(r.rows[0].origin) == Vec3{0, 0, 0});
+    CHECK(xyz(r.rows[0].radiance) == Vec3{0, 3, 0});
   }
 }
 

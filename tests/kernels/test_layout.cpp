@@ -23,7 +23,7 @@ namespace {
   X(offsetof(Hit, instance)) X(offsetof(Hit, material)) X(sizeof(ShadowRay))                 \
   X(offsetof(ShadowRay, contribution)) X(offsetof(ShadowRay, owner))                        \
   X(offsetof(ShadowRay, time)) X(sizeof(Camera)) X(offsetof(Camera, shutter_close))         \
-  X(offsetof(Instance, motion)) X(sizeof(InstanceMotion)) X(offsetof(InstanceMotion, rotation)) \
+  X(offsetof(Instance, motion)) X(offsetof(Instance, material_rows)) X(sizeof(InstanceMotion)) X(offsetof(InstanceMotion, rotation)) \
   X(offsetof(InstanceMotion, stretch_off)) X(offsetof(InstanceMotion, inverse_sine))        \
   X(offsetof(BvhMeshInstancePacket, motion))                                                 \
   X(offsetof(Camera, pixel_dy)) X(offsetof(Camera, width)) X(offsetof(Camera, seed))         \

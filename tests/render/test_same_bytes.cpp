@@ -62,11 +62,12 @@ TEST_CASE("the test device renders PoCL's bits on every repository scene", "[sam
 TEST_CASE("the test device renders PoCL's bits in path mode", "[same-bytes][path]") {
   const bool interpreter = device().device().platform().name() == "Oclgrind";
   const int side = interpreter ? 8 : 32;
-  // Glowing spheres and triangles (the glow light's samples and the hits' MIS weights), and an
-  // environment image (its samples, the escaping paths' weights, the lookups).
+  // Glowing spheres and triangles (the glow light's samples and the hits' MIS weights), an
+  // environment image (its samples, the escaping paths' weights, the lookups), and a mesh whose
+  // faces take their MTL materials (the per-triangle material rows).
   for (const std::string& path : {test_scene("path-lobes.ray"), test_scene("area.ray"),
                                   test_scene("path/glow_sphere.ray"), test_scene("path/glow_mesh.ray"),
-                                  test_scene("path/environment.ray")}) {
+                                  test_scene("path/environment.ray"), test_scene("path/mtl.ray")}) {
     for (const std::string& integrator : integrator_names()) {
       const auto with = [&](std::uint32_t wavefront) {
         return [&, wavefront](RenderOptions& o) {

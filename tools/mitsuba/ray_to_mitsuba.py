@@ -179,15 +179,19 @@ class DumpedScene:
         elif shape == "cylinder":
             self.cylinders.append((material, cylinder_placement(placement)))
         elif shape == "mesh":
-            check_front(material, placement)
             mesh = self.meshes[placed["mesh"]]
             if mesh["normals"]:
                 raise SceneError(f"{mesh['path']}: every corner has a normal, so clrt shades it smoothly, "
                                  "which the comparison does not read")
+            # An MTL material where the triangle's `usemtl` names one and the object keeps them.
+            own = mesh.get("triangle_materials", []) if placed.get("mtl", False) else []
+            materials = [self.all_materials[m] if m >= 0 else material for m in own] or [material] * len(mesh["triangles"])
+            for m in {id(m): m for m in materials}.values():
+                check_front(m, placement)
             corners = np.array(mesh["positions"], dtype=float)[np.array(mesh["triangles"])]
             world = corners @ placement[:3, :3].T + placement[:3, 3]
-            for triangle in world:
-                self.add_triangle(material, triangle)
+            for triangle_material, triangle in zip(materials, world):
+                self.add_triangle(triangle_material, triangle)
         else:
             raise SceneError(f"`{shape}` has no Mitsuba shape, so the Mitsuba comparison does not read it")
 

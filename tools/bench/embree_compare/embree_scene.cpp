@@ -257,7 +257,7 @@ SurfaceHit EmbreeScene::mesh_hit(const RTCHit& hit, int instance) const {
   const Vec3 face = cross(mesh.positions[c[1]] - mesh.positions[c[0]], mesh.positions[c[2]] - mesh.positions[c[0]]);
   const Mat4& to_world = normal_matrix_[static_cast<std::size_t>(instance)];
   SurfaceHit out;
-  out.material = spec.material;
+  out.material = mesh_triangle_material(spec, mesh, hit.primID);
   out.normal = unit_or_zero(to_world.transform_vector(face));
   out.shading_normal = out.normal;
   if (!mesh.normals.empty()) {
