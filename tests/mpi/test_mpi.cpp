@@ -47,7 +47,9 @@ TEST_CASE("N ranks write the bytes clrt writes", "[mpi]") {
                         // The environment image reaches the ranks from rank 0, as meshes do.
                         Case{"path/environment.ray", "--mode path --spp 2", "16x16", "pfm"},
                         // Each sample's time depends on its pixel and index alone.
-                        Case{"path/motion.ray", "--mode path --spp 4", "16x16", "pfm"}}) {
+                        Case{"path/motion.ray", "--mode path --spp 4", "16x16", "pfm"},
+                        // The MTL library reaches the ranks with its OBJ file.
+                        Case{"path/mtl.ray", "--mode path --spp 2", "16x16", "pfm"}}) {
     const std::string args = quoted(test_scene(c.scene)) + " -q --resolution 64x48 " + c.options;
     const std::string single = dir.file("single." + c.extension);
     REQUIRE(run_clrt(args + " -o " + single).exit_code == 0);
