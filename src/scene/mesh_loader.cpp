@@ -146,11 +146,11 @@ void gather_material_names(const std::string& path, const std::vector<ObjChunk>&
   }
 }
 
-// The mesh's tables once gathered.
-std::uint64_t mesh_bytes(const SliceStarts& starts, bool with_normals) {
+// The mesh's tables once gathered (with a name per triangle when the file has `usemtl`).
+std::uint64_t mesh_bytes(const SliceStarts& starts, bool with_normals, bool with_names) {
   const std::uint64_t per_corner = with_normals ? 2 * sizeof(std::uint32_t) : sizeof(std::uint32_t);
   return (starts.total_elements.positions + (with_normals ? starts.total_elements.normals : 0)) * sizeof(Vec3) +
-         starts.total_corners * per_corner;
+         starts.total_corners * per_corner + (with_names ? starts.total_corners / 3 * sizeof(std::uint32_t) : 0);
 }
 
 void check_gather_memory(const std::string& path, const std::vector<ObjChunk>& chunks, std::uint64_t mesh,
@@ -204,7 +204,9 @@ MeshData load_obj_mesh(const std::string& path, const FileSource& files, const M
 
   const bool with_normals =
       std::all_of(chunks.begin(), chunks.end(), [](const ObjChunk& c) { return c.every_corner_has_normal; });
-  check_gather_memory(path, chunks, mesh_bytes(starts, with_normals), memory);
+  const bool with_names =
+      std::any_of(chunks.begin(), chunks.end(), [](const ObjChunk& c) { return !c.material_runs.empty(); });
+  check_gather_memory(path, chunks, mesh_bytes(starts, with_normals, with_names), memory);
   MeshData mesh;
   mesh.path = path;
   gather_material_names(path, chunks, starts, mesh);
