@@ -1,7 +1,6 @@
 // load_mesh_materials (scene/mesh_loader.hpp): a mesh's `usemtl` names resolved through its
 // `mtllib` libraries.
 #include <filesystem>
-#include <map>
 #include <set>
 
 #include "scene/input_file_checks.hpp"
@@ -63,25 +62,25 @@ MeshMaterials load_mesh_materials(const MeshData& mesh, const FileSource& files)
   MeshMaterials out;
   if (mesh.material_names.empty()) return out;
   const std::filesystem::path folder = std::filesystem::path(mesh.path).parent_path();
-  // Later libraries' definitions win, as later definitions within one library do.
-  std::map<std::string, MtlMaterial> defined;
+  std::vector<MtlLibrary> libraries;
   std::set<std::string> read;
   for (const MeshName& line : mesh.libraries)
     for (auto& [path, file] : open_libraries(line, folder, files, out.warnings)) {
       if (!read.insert(path).second) continue;
-      MtlLibrary library;
       try {
-        library = parse_mtl(without_byte_order_mark(file->text()), path);
+        libraries.push_back(parse_mtl(without_byte_order_mark(file->text()), path));
       } catch (const SceneError& e) {
         throw MeshError(e.where(), e.message());
       }
-      out.warnings.insert(out.warnings.end(), library.warnings.begin(), library.warnings.end());
-      for (const MtlMaterial& m : library.materials) defined[m.name] = m;
+      out.warnings.insert(out.warnings.end(), libraries.back().warnings.begin(), libraries.back().warnings.end());
     }
   for (const MeshName& name : mesh.material_names) {
-    const auto found = defined.find(name.name);
-    if (found != defined.end()) {
-      out.by_name.push_back(material_from_mtl(found->second, out.warnings));
+    // Later libraries' definitions win, as later definitions within one library do.
+    const MtlMaterial* found = nullptr;
+    for (auto library = libraries.rbegin(); library != libraries.rend() && !found; ++library)
+      found = library->find(name.name);
+    if (found) {
+      out.by_name.push_back(material_from_mtl(*found, out.warnings));
       continue;
     }
     out.by_name.push_back(std::nullopt);

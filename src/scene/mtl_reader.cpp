@@ -1,9 +1,12 @@
 #include "scene/mtl_reader.hpp"
 
+#include <algorithm>
+#include <climits>
 #include <cmath>
 #include <map>
 #include <set>
 
+#include "scene/limits.hpp"
 #include "scene/number.hpp"
 
 namespace clrt {
@@ -11,223 +14,325 @@ namespace {
 
 bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
 
-struct MtlWord {
+// Lines and columns are ints in a SourceLocation; a place beyond (in a line over 2 GiB) shows as
+// the last one.
+int capped(std::size_t n) { return static_cast<int>(std::min<std::size_t>(n, INT_MAX)); }
+
+std::string quoted(std::string_view word) { return "'" + excerpt(word) + "'"; }
+
+struct Word {
   std::string_view text;
-  int column;  // 1-based
+  std::size_t begin;  // offset in its line
+  std::size_t end() const { return begin + text.size(); }
 };
 
-// One statement: its words up to a word starting with '#', and the line they came from.
-struct Statement {
-  std::string_view line;
-  int number;
-  std::vector<MtlWord> words;
-};
-
-Statement split(std::string_view line, int number) {
-  Statement s{line, number, {}};
+// The end of the last word of `line`, or 0 for none: a word starting with '#' begins a comment.
+std::size_t statement_end(std::string_view line) {
+  std::size_t end = 0;
   std::size_t i = 0;
-  while (i < line.size()) {
+  while (true) {
     while (i < line.size() && is_blank(line[i])) ++i;
-    if (i == line.size() || line[i] == '#') break;
-    const std::size_t start = i;
+    if (i == line.size() || line[i] == '#') return end;
     while (i < line.size() && !is_blank(line[i])) ++i;
-    s.words.push_back({line.substr(start, i - start), static_cast<int>(start) + 1});
+    end = i;
   }
-  return s;
 }
 
-// At most 40 bytes of a word, so that a huge one is not echoed whole.
-std::string excerpt(std::string_view word) {
-  return "'" + std::string(word.substr(0, 40)) + (word.size() > 40 ? "...'" : "'");
-}
-
-class Reader {
+// One line's statement, taken word by word. Nothing is copied, so a huge line costs no memory.
+class Statement {
  public:
-  Reader(const Statement& s, const std::string& file) : s_(s), file_(file) {}
+  Statement(std::string_view line, int number, const std::string& file)
+      : line_(line), number_(number), file_(file), end_(statement_end(line)), next_(skip_blanks(0)) {}
 
-  std::size_t count() const { return s_.words.size() - 1; }  // words after the keyword
-  const MtlWord& word(std::size_t i) const { return s_.words[i + 1]; }
-  SourceLocation at(std::size_t i) const { return {file_, s_.number, word(i).column}; }
-  // Just past the last word: where a missing one would go.
-  SourceLocation past_end() const {
-    const MtlWord& last = s_.words.back();
-    return {file_, s_.number, last.column + static_cast<int>(last.text.size())};
+  bool more() const { return next_ < end_; }
+  // The next word; only while more().
+  Word peek() const {
+    std::size_t e = next_;
+    while (e < end_ && !is_blank(line_[e])) ++e;
+    return {line_.substr(next_, e - next_), next_};
   }
-  [[noreturn]] void fail_at(std::size_t i, const std::string& message) const { throw SceneError(at(i), message); }
+  Word take() {
+    const Word w = peek();
+    next_ = skip_blanks(w.end());
+    return w;
+  }
+  bool is_last(const Word& w) const { return w.end() == end_; }
+  // From the next word to the end of the last: a name or a path, which may hold spaces.
+  std::string_view rest() const { return line_.substr(next_, end_ - next_); }
+  // The MTL format joins a line ending in '\' with the next one.
+  bool continues() const { return end_ > 0 && line_[end_ - 1] == '\\'; }
+
+  SourceLocation at(const Word& w) const { return at_offset(w.begin); }
+  // Just past the last word: where a missing one would go.
+  SourceLocation past_end() const { return at_offset(end_); }
+  SourceLocation last_byte() const { return at_offset(end_ - 1); }
+  [[noreturn]] void fail_at(const Word& w, const std::string& message) const { throw SceneError(at(w), message); }
   [[noreturn]] void fail_past_end(const std::string& message) const { throw SceneError(past_end(), message); }
 
-  double number(std::size_t i, double low, double high, const char* what) const {
-    if (i >= count()) fail_past_end(std::string("missing ") + what);
-    const ParsedNumber n = parse_number(word(i).text);
-    if (n.problem != NumberProblem::None) fail_at(i, excerpt(word(i).text) + " is not a usable number for " + what);
-    if (!(n.value >= low && n.value <= high))
-      fail_at(i, what + std::string(" must be in [") + std::to_string(low) + ", " + std::to_string(high) +
-                     "], found " + excerpt(word(i).text));
-    return n.value;
-  }
-
-  void require_count(std::size_t most) const {
-    if (count() > most) fail_at(most, "unexpected " + excerpt(word(most).text) + " after " + keyword());
-  }
-
-  // The text from word i to the end of the last word: a name or a path, which may hold spaces.
-  std::string rest(std::size_t i) const {
-    const MtlWord& first = word(i);
-    const MtlWord& last = s_.words.back();
-    return std::string(s_.line.substr(static_cast<std::size_t>(first.column - 1),
-                                      static_cast<std::size_t>(last.column - first.column) + last.text.size()));
-  }
-
-  std::string keyword() const { return std::string(s_.words.front().text); }
-
  private:
-  const Statement& s_;
+  std::size_t skip_blanks(std::size_t i) const {
+    while (i < end_ && is_blank(line_[i])) ++i;
+    return i;
+  }
+  SourceLocation at_offset(std::size_t offset) const { return {file_, number_, capped(offset + 1)}; }
+
+  std::string_view line_;
+  int number_;
   const std::string& file_;
+  std::size_t end_;
+  std::size_t next_;
 };
 
-// `Kd r g b` or `Kd r` (grey).
-Vec3 colour(const Reader& r) {
-  const char* what = "a colour channel (>= 0)";
-  const double red = r.number(0, 0, 1e12, what);
-  if (r.count() == 1) return {red, red, red};
-  r.require_count(3);
-  return {red, r.number(1, 0, 1e12, what), r.number(2, 0, 1e12, what)};
+// The words that may follow a value-taking map option without being read as the file name.
+bool looks_numeric(const Word& w) { return parse_number(w.text).problem != NumberProblem::NotANumber; }
+
+// Word `w` as a finite number within the scene limits, for `what` (named in messages).
+double finite_number(const Statement& s, const Word& w, const std::string& what) {
+  const ParsedNumber n = parse_number(w.text);
+  switch (n.problem) {
+    case NumberProblem::None:
+      return n.value;
+    case NumberProblem::NotANumber:
+      s.fail_at(w, what + ": expected a number, found " + quoted(w.text));
+    case NumberProblem::NotFinite:
+      s.fail_at(w, what + ": " + quoted(w.text) + " is not a finite number");
+    case NumberProblem::OutOfRange:
+      s.fail_at(w, what + ": " + quoted(w.text) + " is out of the range of a double");
+    case NumberProblem::TooLarge:
+      break;
+  }
+  s.fail_at(w, what + ": " + quoted(w.text) + " is too large: numbers lie within -" +
+                   short_number(limits::kMaxNumber) + " and " + short_number(limits::kMaxNumber));
 }
 
-// How many values each map option takes, at most (the first ones required).
-struct MapOption {
-  int least, most;
-  bool rendered;
+struct Range {
+  double low, high;
+  bool above_low = false;  // low itself is out, as 0 is for Ni
+
+  bool holds(double v) const { return (above_low ? v > low : v >= low) && v <= high; }
+  std::string text() const {
+    return (above_low ? "(" : "[") + short_number(low) + ", " + short_number(high) + "]";
+  }
 };
-const std::map<std::string, MapOption>& map_options() {
-  static const std::map<std::string, MapOption> options = {
-      {"-clamp", {1, 1, true}}, {"-s", {1, 3, true}},      {"-o", {1, 3, true}},     {"-bm", {1, 1, true}},
-      {"-blendu", {1, 1, false}}, {"-blendv", {1, 1, false}}, {"-cc", {1, 1, false}}, {"-mm", {2, 2, false}},
-      {"-t", {1, 3, false}},      {"-texres", {1, 1, false}}, {"-imfchan", {1, 1, false}}, {"-boost", {1, 1, false}},
-      {"-type", {1, 1, false}}};
-  return options;
+
+// The next word as a number for statement `what`, within `range`.
+double number(Statement& s, const std::string& what, const Range& range) {
+  if (!s.more()) s.fail_past_end(what + ": a number is missing");
+  const Word w = s.take();
+  const double v = finite_number(s, w, what);
+  if (!range.holds(v)) s.fail_at(w, what + " must be in " + range.text() + ", found " + quoted(w.text));
+  return v;
+}
+
+void finish(const Statement& s, std::string_view keyword) {
+  if (s.more()) s.fail_at(s.peek(), "unexpected " + quoted(s.peek().text) + " after " + std::string(keyword));
+}
+
+// A colour channel, and Ns: no upper bound but the scene limit on every number.
+constexpr Range kAtLeastZero{0, limits::kMaxNumber};
+
+// Statement `Ns`, `Ni`, `d` or `Tr`: one number.
+double single(Statement& s, std::string_view keyword, const Range& range) {
+  const double v = number(s, std::string(keyword), range);
+  finish(s, keyword);
+  return v;
+}
+
+int illum(Statement& s) {
+  if (!s.more()) s.fail_past_end("illum: a number is missing");
+  const Word w = s.peek();
+  const double v = single(s, "illum", {0, 10});
+  if (v != std::floor(v)) s.fail_at(w, "illum is a whole number, found " + quoted(w.text));
+  return static_cast<int>(v);
+}
+
+enum class Takes { OnOff, Channel, Numbers };
+
+struct MapOption {
+  std::string_view name;
+  Takes takes;
+  int least, most;  // how many values (always 1 but for numbers)
+  bool rendered;    // clrt keeps what it says; the others are a warning
+};
+
+constexpr MapOption kMapOptions[] = {
+    {"-clamp", Takes::OnOff, 1, 1, true},     {"-s", Takes::Numbers, 1, 3, true},
+    {"-o", Takes::Numbers, 1, 3, true},       {"-bm", Takes::Numbers, 1, 1, true},
+    {"-blendu", Takes::OnOff, 1, 1, false},   {"-blendv", Takes::OnOff, 1, 1, false},
+    {"-cc", Takes::OnOff, 1, 1, false},       {"-mm", Takes::Numbers, 2, 2, false},
+    {"-t", Takes::Numbers, 1, 3, false},      {"-texres", Takes::Numbers, 1, 1, false},
+    {"-imfchan", Takes::Channel, 1, 1, false}, {"-boost", Takes::Numbers, 1, 1, false},
+};
+
+const MapOption* map_option(std::string_view name) {
+  for (const MapOption& o : kMapOptions)
+    if (o.name == name) return &o;
+  return nullptr;
+}
+
+// A file name may not start with '-' and hold more, so that a misspelt option is not taken
+// for the file.
+bool is_option(const Word& w) { return w.text.size() > 1 && w.text[0] == '-'; }
+
+std::string values_text(const MapOption& o) {
+  switch (o.takes) {
+    case Takes::OnOff:
+      return "on or off";
+    case Takes::Channel:
+      return "r, g, b, m, l or z";
+    case Takes::Numbers:
+      break;
+  }
+  const std::string least = std::to_string(o.least) + (o.least == 1 ? " value" : " values");
+  return o.least == o.most ? least : least + ", up to " + std::to_string(o.most);
+}
+
+bool is_value(Takes takes, std::string_view word) {
+  if (takes == Takes::OnOff) return word == "on" || word == "off";
+  return word.size() == 1 && std::string_view("rgbmlz").find(word[0]) != std::string_view::npos;
+}
+
+// u [v [w]] over `defaults`.
+Vec3 partial_vec3(const double* values, int count, const Vec3& defaults) {
+  return {values[0], count > 1 ? values[1] : defaults.y, count > 2 ? values[2] : defaults.z};
 }
 
 class Parser {
  public:
   explicit Parser(const std::string& file) : file_(file) {}
 
-  void statement(const Statement& s) {
-    if (s.words.empty()) return;
-    const Reader r(s, file_);
-    const std::string keyword = r.keyword();
-    if (keyword == "newmtl") {
-      if (r.count() == 0) r.fail_past_end("newmtl needs a material name");
-      MtlMaterial m;
-      m.name = r.rest(0);
-      m.where = r.at(0);
-      out_.materials.push_back(std::move(m));
-      return;
-    }
-    if (out_.materials.empty()) throw SceneError({file_, s.number, s.words.front().column},
-                                                 excerpt(keyword) + " before the first newmtl");
+  void statement(Statement& s) {
+    if (!s.more()) return;
+    if (s.continues())
+      throw SceneError(s.last_byte(), "a line ending in '\\' continues on the next line, which clrt does not "
+                                      "support: write the statement on one line");
+    const Word keyword = s.take();
+    const std::string_view k = keyword.text;
+    if (k == "newmtl") return new_material(s);
+    if (out_.materials.empty()) s.fail_at(keyword, quoted(k) + " before the first newmtl");
     MtlMaterial& m = out_.materials.back();
-    if (keyword == "Kd" || keyword == "Ks" || keyword == "Ke") {
-      if (r.count() > 0 && (r.word(0).text == "spectral" || r.word(0).text == "xyz"))
-        return warn(r, keyword + " " + std::string(r.word(0).text), r.word(0).column);
-      (keyword == "Kd" ? m.kd : keyword == "Ks" ? m.ks : m.ke) = colour(r);
-    } else if (keyword == "Ns") {
-      r.require_count(1);
-      m.ns = r.number(0, 0, 1e12, "Ns (>= 0)");
-    } else if (keyword == "Ni") {
-      r.require_count(1);
-      m.ni = r.number(0, 1e-6, 1e12, "Ni (> 0)");
-    } else if (keyword == "d" || keyword == "Tr") {
-      if (r.count() > 0 && r.word(0).text == "-halo") return warn(r, keyword + " -halo", r.word(0).column);
-      r.require_count(1);
-      const double v = r.number(0, 0, 1, keyword == "d" ? "d" : "Tr");
-      m.dissolve = keyword == "d" ? v : 1 - v;
-    } else if (keyword == "illum") {
-      r.require_count(1);
-      const double v = r.number(0, 0, 10, "illum (0 to 10)");
-      if (v != std::floor(v)) r.fail_at(0, "illum is a whole number, found " + excerpt(r.word(0).text));
-      m.illum = static_cast<int>(v);
-    } else if (keyword == "map_Kd" || keyword == "map_Ks" || keyword == "map_bump" || keyword == "bump") {
-      (keyword == "map_Kd" ? m.map_kd : keyword == "map_Ks" ? m.map_ks : m.map_bump) = map(r);
-    } else {
-      warn(r, keyword, s.words.front().column);
-    }
+    if (k == "Kd" || k == "Ks" || k == "Ke")
+      colour(s, k, k == "Kd" ? m.kd : k == "Ks" ? m.ks : m.ke);
+    else if (k == "Ns")
+      m.ns = single(s, k, kAtLeastZero);
+    else if (k == "Ni")
+      m.ni = single(s, k, {0, limits::kMaxNumber, true});
+    else if (k == "d" || k == "Tr")
+      dissolve(s, k, m.dissolve);
+    else if (k == "illum")
+      m.illum = illum(s);
+    else if (k == "map_Kd" || k == "map_Ks" || k == "map_bump" || k == "bump")
+      (k == "map_Kd" ? m.map_kd : k == "map_Ks" ? m.map_ks : m.map_bump) = map(s, k);
+    else
+      warn(s.at(keyword), std::string(k));
   }
 
   MtlLibrary take() { return std::move(out_); }
 
  private:
-  MtlTextureRef map(const Reader& r) {
-    MtlTextureRef t;
-    std::size_t i = 0;
-    while (i < r.count() && r.word(i).text.size() > 1 && r.word(i).text[0] == '-') {
-      const std::string option(r.word(i).text);
-      const auto found = map_options().find(option);
-      if (found == map_options().end()) r.fail_at(i, "unknown option " + excerpt(option) + " of " + r.keyword());
-      const MapOption o = found->second;
-      if (option == "-bm" && r.keyword() != "map_bump" && r.keyword() != "bump")
-        r.fail_at(i, "-bm belongs to bump maps, not " + r.keyword());
-      if (!o.rendered) warn(r, r.keyword() + " " + option, r.word(i).column);
-      const std::size_t first = ++i;
-      std::vector<double> values;
-      // Values run until the next option, the file name or the most the option takes.
-      while (i < r.count() && static_cast<int>(values.size()) < o.most && i + 1 < r.count() &&
-             r.word(i).text[0] != '-') {
-        if (option == "-clamp" || option == "-blendu" || option == "-blendv" || option == "-cc" ||
-            option == "-imfchan" || option == "-type") {
-          const std::string_view v = r.word(i).text;
-          if (option != "-imfchan" && option != "-type" && v != "on" && v != "off")
-            r.fail_at(i, option + " takes on or off, found " + excerpt(v));
-          if (option == "-clamp") t.clamp = v == "on";
-          values.push_back(0);
-          ++i;
-          continue;
-        }
-        const ParsedNumber n = parse_number(r.word(i).text);
-        if (n.problem != NumberProblem::None) break;  // the file name
-        values.push_back(n.value);
-        ++i;
-      }
-      // Short of values with at most one word left: that word is the option's or the file's, and
-      // either way a word is missing.
-      if (static_cast<int>(values.size()) < o.least && i + 1 >= r.count())
-        r.fail_past_end(r.keyword() + " needs a file name after its options");
-      if (static_cast<int>(values.size()) < o.least)
-        r.fail_at(first, option + " needs " + std::to_string(o.least) + " value(s)");
-      if (option == "-s" || option == "-o") {
-        Vec3& v = option == "-s" ? t.scale : t.offset;
-        v.x = values[0];
-        if (values.size() > 1) v.y = values[1];
-        if (values.size() > 2) v.z = values[2];
-      }
-      if (option == "-bm") t.bump_multiplier = values[0];
+  void new_material(Statement& s) {
+    if (!s.more()) s.fail_past_end("newmtl needs a material name");
+    MtlMaterial m;
+    m.where = s.at(s.peek());
+    m.name = std::string(s.rest());
+    const auto [first, fresh] = first_lines_.emplace(m.name, m.where.line);
+    if (!fresh)
+      out_.warnings.push_back(scene_warning(m.where, "material " + quoted(m.name) + " is defined again (first at line " +
+                                                         std::to_string(first->second) +
+                                                         "); this later definition counts"));
+    out_.materials.push_back(std::move(m));
+  }
+
+  // `Kd r g b`, or `Kd r` for grey.
+  void colour(Statement& s, std::string_view keyword, std::optional<Vec3>& into) {
+    const std::string what(keyword);
+    if (s.more() && (s.peek().text == "spectral" || s.peek().text == "xyz")) {
+      const Word form = s.take();
+      return warn(s.at(form), what + " " + std::string(form.text));
     }
-    if (i >= r.count()) r.fail_past_end(r.keyword() + " needs a file name");
-    t.path = r.rest(i);
-    t.where = r.at(i);
+    const double r = number(s, what, kAtLeastZero);
+    if (!s.more()) {
+      into = Vec3{r, r, r};
+      return;
+    }
+    const double g = number(s, what, kAtLeastZero);
+    const double b = number(s, what, kAtLeastZero);
+    finish(s, keyword);
+    into = Vec3{r, g, b};
+  }
+
+  void dissolve(Statement& s, std::string_view keyword, std::optional<double>& into) {
+    if (s.more() && s.peek().text == "-halo") {
+      const Word halo = s.take();
+      return warn(s.at(halo), std::string(keyword) + " -halo");
+    }
+    const double v = single(s, keyword, {0, 1});
+    into = keyword == "d" ? v : 1 - v;
+  }
+
+  MtlTextureRef map(Statement& s, std::string_view keyword) {
+    MtlTextureRef t;
+    while (s.more() && is_option(s.peek())) option(s, keyword, t);
+    if (!s.more()) s.fail_past_end(std::string(keyword) + " needs a file name");
+    t.where = s.at(s.peek());
+    t.path = std::string(s.rest());
     return t;
   }
 
+  void option(Statement& s, std::string_view keyword, MtlTextureRef& t) {
+    const Word name = s.take();
+    const MapOption* o = map_option(name.text);
+    const std::string map(keyword);
+    if (!o) s.fail_at(name, "unknown option " + quoted(name.text) + " of " + map);
+    if (o->name == "-bm" && keyword != "map_bump" && keyword != "bump")
+      s.fail_at(name, "-bm belongs to bump maps, not " + map);
+    if (!o->rendered) warn(s.at(name), map + " " + std::string(o->name));
+    const std::string needs = std::string(o->name) + " needs " + values_text(*o);
+    // The last word is the file name, so a value must leave one after it.
+    const auto value_follows = [&s] { return s.more() && !s.is_last(s.peek()); };
+    double values[3];
+    int count = 0;
+    while (count < o->most && value_follows() && (o->takes != Takes::Numbers || looks_numeric(s.peek()))) {
+      const Word w = s.take();
+      if (o->takes != Takes::Numbers && !is_value(o->takes, w.text)) s.fail_at(w, needs + ", found " + quoted(w.text));
+      values[count++] = o->takes == Takes::Numbers ? finite_number(s, w, map + " " + std::string(o->name)) : 0;
+      if (o->name == "-clamp") t.clamp = w.text == "on";
+    }
+    if (count < o->least && !value_follows())
+      s.fail_past_end(map + " needs a file name after its options (" + needs + ")");
+    if (count < o->least) s.fail_at(s.peek(), needs + ", found " + quoted(s.peek().text));
+    if (o->name == "-s") t.scale = partial_vec3(values, count, MtlTextureRef{}.scale);
+    if (o->name == "-o") t.offset = partial_vec3(values, count, MtlTextureRef{}.offset);
+    if (o->name == "-bm") t.bump_multiplier = values[0];
+  }
+
   // Once per `what` (a keyword, or a keyword and its option), at its first place.
-  void warn(const Reader& r, const std::string& what, int column) {
-    if (!warned_.insert(what).second) return;
-    out_.warnings.push_back(
-        scene_warning({file_, r.past_end().line, column}, "'" + what + "' is not rendered by clrt; ignored"));
+  void warn(const SourceLocation& where, const std::string& what) {
+    if (warned_.insert(what).second)
+      out_.warnings.push_back(scene_warning(where, quoted(what) + " is not rendered by clrt; ignored"));
   }
 
   const std::string& file_;
   MtlLibrary out_;
   std::set<std::string> warned_;
+  std::map<std::string, int> first_lines_;  // of each material name
 };
 
 }  // namespace
 
+const MtlMaterial* MtlLibrary::find(std::string_view name) const {
+  const auto found = std::find_if(materials.rbegin(), materials.rend(),
+                                  [name](const MtlMaterial& m) { return m.name == name; });
+  return found == materials.rend() ? nullptr : &*found;
+}
+
 MtlLibrary parse_mtl(std::string_view text, const std::string& file) {
   Parser parser(file);
-  int number = 0;
+  std::size_t number = 0;
   while (!text.empty()) {
     const std::size_t end = std::min(text.find('\n'), text.size());
-    parser.statement(split(text.substr(0, end), ++number));
+    Statement s(text.substr(0, end), capped(++number), file);
+    parser.statement(s);
     text.remove_prefix(std::min(end + 1, text.size()));
   }
   return parser.take();

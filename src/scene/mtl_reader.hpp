@@ -33,13 +33,18 @@ struct MtlMaterial {
 
 struct MtlLibrary {
   std::vector<MtlMaterial> materials;  // in file order; a repeated name: the later one counts
-  // "FILE:LINE:COLUMN: warning: ..." for what clrt does not render, once per keyword or option.
+  // "FILE:LINE:COLUMN: warning: ..." for what clrt does not render, once per keyword or map
+  // option, and for each repeated material name.
   std::vector<std::string> warnings;
+
+  // The last material called `name`, or null.
+  const MtlMaterial* find(std::string_view name) const;
 };
 
 // Reads the text of library `file` (the name used in messages). Throws SceneError at the word of a
 // malformed statement: one before the first `newmtl`, a missing, extra, malformed or out-of-range
-// number, a map without a file, an unknown map option.
+// number, a map without a file, an unknown map option or one short of its values, and a line
+// continued with a final '\' (clrt does not join lines).
 MtlLibrary parse_mtl(std::string_view text, const std::string& file);
 
 }  // namespace clrt
