@@ -83,9 +83,8 @@ dev::TriangleNormals TriangleSource::normals(std::size_t t, const std::vector<st
 
 dev::u32 TriangleSource::material(std::size_t t) const {
   if (loose_) return static_cast<dev::u32>((*loose_)[t].material);
-  const std::uint32_t name = mesh_->triangle_names.empty() ? kNoMeshMaterial : mesh_->triangle_names[t];
-  const int m = name == kNoMeshMaterial ? -1 : mesh_->name_materials.at(name);
-  return m < 0 ? CLRT_INSTANCE_MATERIAL : static_cast<dev::u32>(m);
+  const int own = mesh_face_material(*mesh_, t);
+  return own < 0 ? CLRT_INSTANCE_MATERIAL : static_cast<dev::u32>(own);
 }
 
 std::vector<Box> triangle_boxes(const TriangleSource& source) {

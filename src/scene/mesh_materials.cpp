@@ -2,6 +2,7 @@
 // `mtllib` libraries.
 #include <filesystem>
 #include <set>
+#include <sstream>
 
 #include "scene/input_file_checks.hpp"
 #include "scene/limits.hpp"
@@ -19,12 +20,9 @@ constexpr std::uint64_t kMaxLibraryBytes = std::uint64_t{64} << 20;
 // words, as the format has it.
 std::vector<std::string> library_candidates(const MeshName& line, const std::filesystem::path& folder) {
   std::vector<std::string> names{line.name};
-  std::size_t start = 0;
-  while (line.name.find_first_of(" \t") != std::string::npos && start < line.name.size()) {
-    const std::size_t end = std::min(line.name.find_first_of(" \t", start), line.name.size());
-    if (end > start) names.push_back(line.name.substr(start, end - start));
-    start = end + 1;
-  }
+  std::istringstream words(line.name);
+  for (std::string word; words >> word;)
+    if (word != line.name) names.push_back(word);
   for (std::string& name : names) name = (folder / name).lexically_normal().generic_string();
   return names;
 }

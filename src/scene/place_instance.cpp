@@ -23,10 +23,13 @@ InstanceSpec place_instance(ShapeKind shape, const Mat4& to_world, int material)
   return instance;
 }
 
+int mesh_face_material(const MeshData& mesh, std::size_t t) {
+  const std::uint32_t name = mesh.triangle_names.empty() ? kNoMeshMaterial : mesh.triangle_names.at(t);
+  return name == kNoMeshMaterial ? -1 : mesh.name_materials.at(name);
+}
+
 int mesh_triangle_material(const InstanceSpec& instance, const MeshData& mesh, std::size_t t) {
-  if (!instance.mesh_materials || mesh.triangle_names.empty()) return instance.material;
-  const std::uint32_t name = mesh.triangle_names.at(t);
-  const int own = name == kNoMeshMaterial ? -1 : mesh.name_materials.at(name);
+  const int own = instance.mesh_materials ? mesh_face_material(mesh, t) : -1;
   return own >= 0 ? own : instance.material;
 }
 

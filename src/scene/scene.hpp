@@ -115,8 +115,11 @@ struct MeshData {
 
 constexpr std::uint32_t kNoMeshMaterial = UINT32_MAX;
 
-// The material of triangle t of `mesh` placed by `instance`: its MTL material where its `usemtl`
-// names one and the instance keeps them (InstanceSpec::mesh_materials), else the instance's.
+// Triangle t's own material (index into Scene::materials) from its `usemtl` name, or -1.
+int mesh_face_material(const MeshData& mesh, std::size_t t);
+
+// The material of triangle t of `mesh` placed by `instance`: its own (mesh_face_material) where it
+// has one and the instance keeps them (InstanceSpec::mesh_materials), else the instance's.
 int mesh_triangle_material(const InstanceSpec& instance, const MeshData& mesh, std::size_t t);
 
 // A `triangle` command: vertices already transformed to world space by the current M.
