@@ -22,7 +22,7 @@
 #include "render/transport_step.h"
 
 __kernel void megakernel(SCENE_PARAMS, __global const RenderParams* params,
-                         __global const Camera* camera, __global const Material* materials,
+                         __global const Camera* camera, __global const Material* materials, TEXTURE_PARAMS,
                          __global const Light* lights, uint region_x, uint region_y,
                          uint region_width, uint first_pixel, uint first_sample,
                          uint pixel_samples, uint sample_count, __global float4* sample_colour, __global uint* ray_counts) {
@@ -47,7 +47,7 @@ __kernel void megakernel(SCENE_PARAMS, __global const RenderParams* params,
     Hit hit;
     scene_closest_hit(SCENE_ARGS, vload3(0, ray.origin), vload3(0, ray.dir), ray.time, params->epsilon,
                       INFINITY, &hit);
-    const float3 c = transport_step(&ray, &hit, materials, lights, params, i, &sink);
+    const float3 c = transport_step(&ray, &hit, materials, TEXTURE_ARGS, lights, params, i, &sink);
     const uint depth = CLRT_RAY_DEPTH(ray);
     const ulong bit = 1ul << depth;
     level[depth] = (levels_seen & bit) ? level[depth] + c : c;

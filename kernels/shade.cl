@@ -16,8 +16,8 @@
 
 /* The parameters both kernels take before and after their own, as the host's ShadeInputs and
  * ShadeOutputs (src/render/stage_args.hpp) bind them. */
-#define SHADE_INPUT_PARAMS __global const RenderParams* params, __global const Material* materials, __global const Light* lights, __global const Ray* rays, __global const Hit* hits
-#define SHADE_INPUT_ARGS params, materials, lights, rays, hits
+#define SHADE_INPUT_PARAMS __global const RenderParams* params, __global const Material* materials, TEXTURE_PARAMS, __global const Light* lights, __global const Ray* rays, __global const Hit* hits
+#define SHADE_INPUT_ARGS params, materials, TEXTURE_ARGS, lights, rays, hits
 #define SHADE_OUTPUT_PARAMS __global float4* colour, __global ShadowRay* shadow_slots, __global uint* shadow_flags, __global Ray* spawn_slots, __global uint* spawn_flags
 #define SHADE_OUTPUT_ARGS colour, shadow_slots, shadow_flags, spawn_slots, spawn_flags
 
@@ -32,7 +32,7 @@ CLRT_INLINE void shade_ray(SHADE_INPUT_PARAMS, uint first, uint i, SHADE_OUTPUT_
   }
   const Ray ray = rays[i];
   const Hit hit = hits[i];
-  colour[i] = as_f4(transport_step(&ray, &hit, materials, lights, params, i, &sink));
+  colour[i] = as_f4(transport_step(&ray, &hit, materials, TEXTURE_ARGS, lights, params, i, &sink));
 }
 
 __kernel void shade(SHADE_INPUT_PARAMS, uint first, uint count, SHADE_OUTPUT_PARAMS) {

@@ -8,6 +8,7 @@
 #include "shared/ray.h"
 #include "shared/scene.h"
 #include "geometry/instance.h"
+#include "geometry/texcoords.h"
 #include "geometry/triangle.h"
 
 typedef struct HitRecord {
@@ -49,6 +50,7 @@ CLRT_INLINE void hit_record_resolve(const HitRecord* r, float3 o, float3 d, floa
                                __global const InstanceMotion* motions,
                                __global const Mesh* meshes, __global const BvhBlock* bvh,
                                __global const TriangleNormals* triangle_normals,
+                               __global const TriangleTexcoords* triangle_texcoords,
                                __global const u32* triangle_materials, Hit* hit) {
   hit->instance = r->instance;
   if (r->instance == CLRT_NO_HIT) {
@@ -57,16 +59,19 @@ CLRT_INLINE void hit_record_resolve(const HitRecord* r, float3 o, float3 d, floa
     hit->material = 0u;
     hit->geometric_normal = (float4)(0.0f, 0.0f, 0.0f, r->t);
     hit->shading_normal = (float4)(0.0f);
+    hit->u = hit->v = hit->uv_scale = hit->pad = 0.0f;
     return;
   }
   __global const Instance* inst = instances + r->instance;
   hit->glow = inst->glow;
   const InstanceFrame frame = instance_frame(inst, motions, time);
-  float3 geometric, shading;
+  float3 geometric, shading, object_normal;
+  SurfaceCoords coords;
   if (inst->shape != CLRT_SHAPE_MESH) {
-    const float3 object_normal = inst->shape == CLRT_SHAPE_SPHERE
-                                     ? frame_point_to_object(&frame, o + r->t * d) : r->object_normal;
+    const float3 p = frame_point_to_object(&frame, o + r->t * d);
+    object_normal = inst->shape == CLRT_SHAPE_SPHERE ? p : r->object_normal;
     geometric = shading = bvh_world_normal(&frame, object_normal, (float3)(0.0f, 1.0f, 0.0f));
+    coords = shape_coords(inst->shape, inst->cone_r0, inst->cone_r1, p, object_normal);
     hit->primitive = 0u;
     hit->material = inst->material;
   } else {
@@ -75,7 +80,8 @@ CLRT_INLINE void hit_record_resolve(const HitRecord* r, float3 o, float3 d, floa
     const u32 triangle = packet->triangle[r->lane];
     const float3 v0 = bvh_packet_vertex(packet, 0, r->lane), v1 = bvh_packet_vertex(packet, 1, r->lane),
                  v2 = bvh_packet_vertex(packet, 2, r->lane);
-    geometric = bvh_world_normal(&frame, triangle_normal(v0, v1, v2), (float3)(0.0f, 1.0f, 0.0f));
+    object_normal = triangle_normal(v0, v1, v2);
+    geometric = bvh_world_normal(&frame, object_normal, (float3)(0.0f, 1.0f, 0.0f));
     shading = geometric;
     if (mesh->has_normals) {
       __global const float* n = triangle_normals[triangle].n;
@@ -84,12 +90,21 @@ CLRT_INLINE void hit_record_resolve(const HitRecord* r, float3 o, float3 d, floa
       shading = bvh_world_normal(&frame, interpolated, geometric);
     }
     hit->primitive = triangle - mesh->first_triangle;
+    coords = triangle_coords(triangle_texcoords,
+                             mesh->texcoords == CLRT_NO_TEXCOORDS ? CLRT_NO_TEXCOORDS
+                                                                  : mesh->texcoords + hit->primitive,
+                             r->u, r->v, v1 - v0, v2 - v0);
     const u32 own = inst->material_rows == CLRT_NO_MATERIAL_ROWS
                         ? CLRT_INSTANCE_MATERIAL : triangle_materials[inst->material_rows + hit->primitive];
     hit->material = own == CLRT_INSTANCE_MATERIAL ? inst->material : own;
   }
   hit->geometric_normal = (float4)(geometric, r->t);
   hit->shading_normal = (float4)(shading, 0.0f);
+  hit->u = coords.u;
+  hit->v = coords.v;
+  hit->uv_scale = coords.area > 0.0f && dot3(object_normal, object_normal) > 0.0f
+                      ? world_uv_scale(&frame, coords.area, normalize3(object_normal)) : 0.0f;
+  hit->pad = 0.0f;
 }
 
 #endif

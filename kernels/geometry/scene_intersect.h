@@ -27,8 +27,8 @@
 #include "geometry/bvh_ray.h"
 #include "geometry/bvh_stack.h"
 
-#define SCENE_PARAMS uint instance_count, uint plane_count, __global const Instance* instances, __global const InstanceMotion* motions, __global const Mesh* meshes, __global const TriangleNormals* triangle_normals, __global const uint* triangle_materials, __global const BvhBlock* bvh
-#define SCENE_ARGS instance_count, plane_count, instances, motions, meshes, triangle_normals, triangle_materials, bvh
+#define SCENE_PARAMS uint instance_count, uint plane_count, __global const Instance* instances, __global const InstanceMotion* motions, __global const Mesh* meshes, __global const TriangleNormals* triangle_normals, __global const TriangleTexcoords* triangle_texcoords, __global const uint* triangle_materials, __global const BvhBlock* bvh
+#define SCENE_ARGS instance_count, plane_count, instances, motions, meshes, triangle_normals, triangle_texcoords, triangle_materials, bvh
 /* The same tables kept in one value by a function that needs them later (a sink), and passed on
  * from it: SceneTables t = {SCENE_ARGS}; scene_any_hit(SCENE_ARGS_OF(t), ...). */
 typedef struct SceneTables {
@@ -37,10 +37,11 @@ typedef struct SceneTables {
   __global const InstanceMotion* motions;
   __global const Mesh* meshes;
   __global const TriangleNormals* triangle_normals;
+  __global const TriangleTexcoords* triangle_texcoords;
   __global const uint* triangle_materials;
   __global const BvhBlock* bvh;
 } SceneTables;
-#define SCENE_ARGS_OF(t) (t).instance_count, (t).plane_count, (t).instances, (t).motions, (t).meshes, (t).triangle_normals, (t).triangle_materials, (t).bvh
+#define SCENE_ARGS_OF(t) (t).instance_count, (t).plane_count, (t).instances, (t).motions, (t).meshes, (t).triangle_normals, (t).triangle_texcoords, (t).triangle_materials, (t).bvh
 
 /* Canonical shape instance `index` against the world ray at `time`; updates *best on a hit in
  * (tmin, best->t). */
@@ -122,7 +123,7 @@ CLRT_INLINE bool scene_closest_hit(SCENE_PARAMS, float3 o, float3 d, float time,
   HitRecord best = hit_record_none(tmax);
   const bool found =
       scene_search(SCENE_ARGS, (float4)(o, time), (float4)(d, 0.0f), tmin, false, &best);
-  hit_record_resolve(&best, o, d, time, instances, motions, meshes, bvh, triangle_normals, triangle_materials, hit);
+  hit_record_resolve(&best, o, d, time, instances, motions, meshes, bvh, triangle_normals, triangle_texcoords, triangle_materials, hit);
   return found;
 }
 

@@ -91,7 +91,7 @@ CLRT_INLINE Ray wave_camera_ray(const Camera* cam, uint region_x, uint region_y,
   vstore3(origin, 0, ray.origin);
   ray.radiance_scale = 1.0f;
   vstore3(normalize3(dir), 0, ray.dir);
-  ray.sample_index = k;
+  ray.sample_cone = CLRT_SAMPLE_CONE(k, 0u); /* a cone of width 0 */
   vstore3((float3)(1.0f), 0, ray.weight);
   ray.pdf = 0.0f;
   ray.sample = index;

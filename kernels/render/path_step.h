@@ -24,7 +24,7 @@
 
 /* The ray's pair of random numbers for `use` at its depth. */
 CLRT_INLINE float2 path_sample(const Ray* ray, uint use) {
-  return sobol_sample(sample_key(ray->path, CLRT_RAY_DEPTH(*ray), use), ray->sample_index);
+  return sobol_sample(sample_key(ray->path, CLRT_RAY_DEPTH(*ray), use), CLRT_SAMPLE_INDEX(*ray));
 }
 
 /* The power heuristic for `count` draws from density `pdf` against one from `other`, as a ratio
@@ -85,7 +85,6 @@ CLRT_INLINE float3 escaped(const Ray* ray, __global const Light* lights, __globa
 struct TransportVertex {
   ShadePoint sp;
   PathLobes lobes;
-  __global const Material* material;
   const Ray* ray;
 };
 
@@ -96,7 +95,7 @@ CLRT_INLINE float2 transport_light_pair(const TransportVertex* v, uint use) { re
 CLRT_INLINE float3 transport_light_term(const TransportVertex* v, __global const Light* light,
                                         const LightSample* ls) {
   float pdf;
-  const float3 f = smooth_lobes(&v->lobes, v->material, v->sp.n, v->sp.v, ls->to_light, &pdf);
+  const float3 f = smooth_lobes(&v->lobes, &v->sp.material, v->sp.n, v->sp.v, ls->to_light, &pdf);
   float3 estimate = (float3)(0.0f);
   if (!all(f == (float3)(0.0f)) && ls->geometry != 0.0f) {
     /* A light that paths can hit as well shares this direction with the BSDF's samples. */
@@ -108,7 +107,7 @@ CLRT_INLINE float3 transport_light_term(const TransportVertex* v, __global const
 
 
 CLRT_INLINE float3 path_step(const Ray* ray, const Hit* hit, __global const Material* materials,
-                             __global const Light* lights, __global const RenderParams* params,
+                             TEXTURE_PARAMS, __global const Light* lights, __global const RenderParams* params,
                              uint owner, RaySink* sink) {
   const bool missed = hit->instance == CLRT_NO_HIT;
   float3 c = crossed_emission(ray, lights, params, missed ? INFINITY : hit->geometric_normal.w);
@@ -119,16 +118,15 @@ CLRT_INLINE float3 path_step(const Ray* ray, const Hit* hit, __global const Mate
    * light its mirror and glass lobes bring (which no shadow ray samples) is not lost. */
   if (CLRT_RAY_DEPTH(*ray) > params->max_depth) return c;
   TransportVertex vertex;
-  vertex.sp = shade_point(ray, hit, materials);
-  vertex.material = &materials[vertex.sp.material];
-  vertex.lobes = path_lobes(vertex.material);
+  vertex.sp = shade_point(ray, hit, materials, TEXTURE_ARGS, params);
+  vertex.lobes = path_lobes(&vertex.sp.material);
   vertex.ray = ray;
   if (has_smooth_lobes(&vertex.lobes))
     gather_light_samples(&vertex, &vertex.sp, lights, params, true, owner, ray->time, sink, &c);
   const float2 choice = path_sample(ray, CLRT_PATH_CHOICE);
   LobeSample s;
   float pdf;
-  if (!sample_lobes(&vertex.lobes, vertex.material, &vertex.sp, vload3(0, ray->dir),
+  if (!sample_lobes(&vertex.lobes, &vertex.sp.material, &vertex.sp, vload3(0, ray->dir),
                     path_sample(ray, CLRT_PATH_DIRECTION), choice.x, &s, &pdf))
     return c;
   float3 throughput = vload3(0, ray->weight) * s.weight;
@@ -146,7 +144,7 @@ CLRT_INLINE float3 path_step(const Ray* ray, const Hit* hit, __global const Mate
     if (!(choice.y < keep)) return c;
     throughput /= keep;
   }
-  Ray next = child_ray(ray, offset_origin(vertex.sp.p, vertex.sp.ng, s.dir, params->epsilon), s.dir,
+  Ray next = child_ray(ray, &vertex.sp, offset_origin(vertex.sp.p, vertex.sp.ng, s.dir, params->epsilon), s.dir,
                        1.0f, CLRT_BRANCH_REFLECT, s.kind);
   next.radiance_scale = scale;
   vstore3(throughput, 0, next.weight);

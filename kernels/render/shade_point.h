@@ -1,6 +1,7 @@
 /* What both transport models need at a hit, shared by the wavefront's kernels and the
  * megakernel so that both compute every term with the same instructions:
- *   shade_point    the surface at a hit, seen from the ray;
+ *   shade_point    the surface at a hit, seen from the ray, in its material with the textures
+ *                  applied (render/texture.h);
  *   miss_colour    what a ray that hits nothing contributes;
  *   emitted        what a glowing surface sends back along the ray;
  *   offset_origin  where a secondary or shadow ray leaves the surface;
@@ -14,6 +15,7 @@
 #include "lights/environment.h"
 #include "optics.h"
 #include "random.h"
+#include "texture.h"
 
 typedef struct ShadePoint {
   float3 p;     /* the hit point */
@@ -22,11 +24,19 @@ typedef struct ShadePoint {
   float3 v;     /* unit vector towards the ray's origin */
   float3 base;  /* the ray's weight times the material's local share */
   bool front;   /* the ray arrived on the side the surface's normal points to */
-  uint material;
+  float cone_width; /* the ray's cone's width there, where its children's cones start */
+  Material material; /* the hit's material, textured */
 } ShadePoint;
 
-CLRT_INLINE ShadePoint shade_point(const Ray* ray, const Hit* hit, __global const Material* materials) {
+/* The textures' tables, which every transport step passes on. */
+#define TEXTURE_PARAMS __global const Texture* textures, __global const uint* texels
+#define TEXTURE_ARGS textures, texels
+
+CLRT_INLINE ShadePoint shade_point(const Ray* ray, const Hit* hit, __global const Material* materials,
+                                   TEXTURE_PARAMS, __global const RenderParams* params) {
   ShadePoint s;
+  s.cone_width = cone_width_at_hit(ray, hit, params->cone_spread);
+  s.material = surface_material(materials, TEXTURE_ARGS, ray, hit, s.cone_width);
   const float3 d = vload3(0, ray->dir);
   s.p = vload3(0, ray->origin) + hit->geometric_normal.w * d;
   s.front = dot3(xyz(hit->geometric_normal), d) < 0.0f;
@@ -36,8 +46,7 @@ CLRT_INLINE ShadePoint shade_point(const Ray* ray, const Hit* hit, __global cons
   const float3 ns = xyz(hit->shading_normal);
   s.n = dot3(ns, s.ng) < 0.0f ? -ns : ns;
   s.v = -d;
-  s.material = hit->material;
-  s.base = vload3(0, ray->weight) * local_share(&materials[hit->material]);
+  s.base = vload3(0, ray->weight) * local_share(&s.material);
   return s;
 }
 
@@ -81,16 +90,17 @@ CLRT_INLINE ShadowRay shadow_ray_to(const ShadePoint* s, const LightSample* ls, 
   return sr;
 }
 
-/* A ray leaving the parent's hit with `share` of its weight. It keeps its camera sample (that
+/* A ray leaving the parent's hit `s` with `share` of its weight. It keeps its camera sample (that
  * sample's index, which path mode's Sobol samples need, and its time) and the refractions'
- * radiance scale so far, and takes a stream of its own from its parent's and the branch. */
-CLRT_INLINE Ray child_ray(const Ray* parent, float3 origin, float3 dir, float share, uint branch,
-                          uint kind) {
+ * radiance scale so far, takes a stream of its own from its parent's and the branch, and starts
+ * its cone where the parent's met the surface. */
+CLRT_INLINE Ray child_ray(const Ray* parent, const ShadePoint* s, float3 origin, float3 dir,
+                          float share, uint branch, uint kind) {
   Ray r;
   vstore3(origin, 0, r.origin);
   r.radiance_scale = parent->radiance_scale;
   vstore3(dir, 0, r.dir);
-  r.sample_index = parent->sample_index;
+  r.sample_cone = CLRT_SAMPLE_CONE(CLRT_SAMPLE_INDEX(*parent), cone_code(s->cone_width));
   vstore3(vload3(0, parent->weight) * share, 0, r.weight);
   r.pdf = 0.0f;
   r.sample = parent->sample;

@@ -20,17 +20,17 @@
 /* Shadow rays and children leave every vertex. */
 #define CLRT_TRANSPORT_SPAWNS 1
 CLRT_INLINE float3 transport_step(const Ray* ray, const Hit* hit, __global const Material* materials,
-                                  __global const Light* lights, __global const RenderParams* params,
+                                  TEXTURE_PARAMS, __global const Light* lights, __global const RenderParams* params,
                                   uint owner, RaySink* sink) {
-  return path_step(ray, hit, materials, lights, params, owner, sink);
+  return path_step(ray, hit, materials, TEXTURE_ARGS, lights, params, owner, sink);
 }
 #else
 #include "whitted_step.h"
 #define CLRT_TRANSPORT_SPAWNS (CLRT_TRANSPORT == CLRT_MODE_TRACE)
 CLRT_INLINE float3 transport_step(const Ray* ray, const Hit* hit, __global const Material* materials,
-                                  __global const Light* lights, __global const RenderParams* params,
+                                  TEXTURE_PARAMS, __global const Light* lights, __global const RenderParams* params,
                                   uint owner, RaySink* sink) {
-  return whitted_step(ray, hit, materials, lights, params, CLRT_TRANSPORT_SPAWNS, owner, sink);
+  return whitted_step(ray, hit, materials, TEXTURE_ARGS, lights, params, CLRT_TRANSPORT_SPAWNS, owner, sink);
 }
 #endif
 

@@ -21,6 +21,13 @@ CLRT_SHARED_BEGIN
 #define CLRT_RAY_DEPTH(ray) ((ray).depth_kind >> 2)
 #define CLRT_RAY_KIND(ray) ((ray).depth_kind & 3u)
 
+/* Ray.sample_cone's halves. A cone's width w > 0 is kept as 32768 + 256 log2(w), rounded and
+ * held to [1, 65535] (a relative step of 0.27%, widths from 2^-128 to 2^128); 0 is width 0, a
+ * camera ray's. */
+#define CLRT_SAMPLE_INDEX(ray) ((ray).sample_cone & 0xffffu)
+#define CLRT_CONE_CODE(ray) ((ray).sample_cone >> 16)
+#define CLRT_SAMPLE_CONE(sample_index, cone_code) ((sample_index) | ((cone_code) << 16))
+
 /* Child-ray slots per ray of a queue: its reflection (slot 0) and its refraction (slot 1). */
 #define CLRT_CHILD_SLOTS 2u
 
@@ -37,8 +44,11 @@ typedef struct Ray {
                          * path (render/path_step.h), which Russian roulette leaves out; 1 for a
                          * camera ray */
   float dir[3];         /* unit direction */
-  u32 sample_index;     /* the camera sample's index within its pixel, which path mode's Sobol
-                         * samples need (every ray of a sample keeps it) */
+  u32 sample_cone;      /* low 16 bits: the camera sample's index within its pixel, which path
+                         * mode's Sobol samples need (every ray of a sample keeps it; there are
+                         * at most 65536); high 16 bits: the width of the ray's cone where it
+                         * starts, which picks the textures' filter where it lands
+                         * (render/texture.h), as CLRT_CONE_CODE */
   float weight[3];      /* rgb share of the sample's colour this ray carries (a path's
                          * throughput) */
   float pdf;            /* path mode: the solid-angle density its direction was drawn with, for
@@ -63,8 +73,12 @@ typedef struct Hit {
   u32 primitive;       /* triangle index for meshes, 0 for canonical shapes */
   u32 material;        /* index into the material table, resolved by the intersector */
   u32 glow;            /* its instance's Instance.glow */
+  float u, v;          /* texture coordinates (docs/scene-format.md#texture-coordinates) */
+  float uv_scale;      /* world length per unit of (u, v) about the hit: the square root of the
+                          world area a unit of uv area covers there (0 where it vanishes) */
+  float pad;
 } Hit;
-CLRT_CHECK_SIZE(Hit, 48);
+CLRT_CHECK_SIZE(Hit, 64);
 
 /* A shadow ray towards one light sample, carrying the light's contribution to its owner ray
  * if nothing blocks it. */

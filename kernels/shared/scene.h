@@ -2,6 +2,7 @@
 #ifndef CLRT_SHARED_SCENE_H
 #define CLRT_SHARED_SCENE_H
 #include "common.h"
+#include "texture.h"
 
 CLRT_SHARED_BEGIN
 
@@ -36,8 +37,10 @@ typedef struct Material {
   float ka, kd, ks, shininess;
   float kr, kt, ior, pad;
   f4 emission; /* rgb radiance leaving the front side (the normal's); w 1 if any channel is not 0 */
+  u32 textures[CLRT_TEXTURE_SLOTS]; /* per CLRT_TEXTURE_SLOT_*: a row of the texture table whose
+                                       value multiplies that term, or CLRT_NO_TEXTURE */
 } Material;
-CLRT_CHECK_SIZE(Material, 64);
+CLRT_CHECK_SIZE(Material, 80);
 
 /* The light kinds the device knows, one row X(KIND, name) for each device file
  * kernels/render/lights/name.h, whose name_light_* functions sample it, say whether it reads
@@ -160,8 +163,15 @@ typedef struct Mesh {
   u32 triangle_count;
   u32 root_node;      /* root of its bottom-level BVH in the node table */
   u32 has_normals;    /* nonzero: triangle_normals holds interpolable vertex normals */
+  u32 texcoords;      /* CLRT_NO_TEXCOORDS, or where its triangles' rows of triangle_texcoords
+                         start (in the order Hit.primitive counts) */
+  u32 pad[3];
 } Mesh;
-CLRT_CHECK_SIZE(Mesh, 16);
+CLRT_CHECK_SIZE(Mesh, 32);
+
+/* Mesh.texcoords of a mesh whose triangles have no texture coordinates of their own: each takes
+ * (0, 0), (1, 0) and (0, 1) at its corners. */
+#define CLRT_NO_TEXCOORDS 0xffffffffu
 
 /* Vertices in the mesh's object space, counter-clockwise seen from the front. */
 typedef struct Triangle {
@@ -176,6 +186,12 @@ typedef struct TriangleNormals {
   float n[9];
 } TriangleNormals;
 CLRT_CHECK_SIZE(TriangleNormals, 36);
+
+/* A triangle's texture coordinates: u, v of its first corner, then the second's and the third's. */
+typedef struct TriangleTexcoords {
+  float uv[6];
+} TriangleTexcoords;
+CLRT_CHECK_SIZE(TriangleTexcoords, 24);
 
 #define CLRT_MODE_TRACE 0u
 #define CLRT_MODE_CAST 1u
@@ -199,7 +215,9 @@ typedef struct RenderParams {
                            * where it is below light_count), or CLRT_NO_LIGHT: the background */
   u32 glossy;             /* trace mode, --glossy: reflection rays are drawn from the material's
                            * Phong lobe about the mirror direction */
-  u32 pad[3];
+  float cone_spread;      /* the angle a pixel spans at the image's centre, in radians: every
+                           * ray's cone widens by it per unit of distance (render/texture_lod.h) */
+  u32 pad[2];
 } RenderParams;
 CLRT_CHECK_SIZE(RenderParams, 80);
 

@@ -13,6 +13,7 @@ DeviceGeometry::DeviceGeometry(DeviceContext& device, std::shared_ptr<const Geom
   args_.motions = share(device, g.motions, "motion table", tables_);
   args_.meshes = share(device, g.meshes, "mesh table", tables_);
   args_.triangle_normals = share(device, g.triangle_normals, "triangle normal table", tables_);
+  args_.triangle_texcoords = share(device, g.triangle_texcoords, "triangle texture coordinate table", tables_);
   args_.triangle_materials = share(device, g.triangle_materials, "triangle material table", tables_);
   // The table is stored as nodes but addressed in 64-byte blocks (kernels/shared/bvh.h).
   static_assert(sizeof(dev::BvhNode) % sizeof(dev::BvhBlock) == 0);

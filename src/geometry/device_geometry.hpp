@@ -18,6 +18,7 @@ CLRT_DEVICE_TYPE_NAME(dev::InstanceMotion, "InstanceMotion");
 CLRT_DEVICE_TYPE_NAME(dev::Mesh, "Mesh");
 CLRT_DEVICE_TYPE_NAME(dev::Triangle, "Triangle");
 CLRT_DEVICE_TYPE_NAME(dev::TriangleNormals, "TriangleNormals");
+CLRT_DEVICE_TYPE_NAME(dev::TriangleTexcoords, "TriangleTexcoords");
 CLRT_DEVICE_TYPE_NAME(dev::BvhBlock, "BvhBlock");
 CLRT_DEVICE_TYPE_NAME(dev::Hit, "Hit");  // what the tracing kernels find
 
@@ -29,11 +30,12 @@ struct SceneArgs {
   Global<const dev::InstanceMotion> motions;
   Global<const dev::Mesh> meshes;
   Global<const dev::TriangleNormals> triangle_normals;
+  Global<const dev::TriangleTexcoords> triangle_texcoords;
   Global<const cl_uint> triangle_materials;
   Global<const dev::BvhBlock> bvh;
 
   CLRT_KERNEL_ARGS(instance_count, plane_count, instances, motions, meshes, triangle_normals,
-                   triangle_materials, bvh)
+                   triangle_texcoords, triangle_materials, bvh)
 };
 
 class DeviceGeometry {

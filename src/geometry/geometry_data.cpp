@@ -73,7 +73,7 @@ GeometryData build_tables(const Scene& scene, const std::function<void(std::size
 }  // namespace
 
 std::size_t GeometryData::device_bytes() const {
-  return bytes(instances) + bytes(motions) + bytes(meshes) + bytes(triangle_normals) + bytes(triangle_materials) +
+  return bytes(instances) + bytes(motions) + bytes(meshes) + bytes(triangle_normals) + bytes(triangle_materials) + bytes(triangle_texcoords) +
          bytes(nodes);
 }
 
@@ -85,6 +85,8 @@ GeometryData build_geometry_for_render(Scene& scene) {
     MeshData& mesh = scene.meshes[m];
     std::vector<Vec3>().swap(mesh.normals);
     std::vector<std::uint32_t>().swap(mesh.corner_normals);
+    std::vector<std::array<float, 2>>().swap(mesh.texcoords);
+    std::vector<std::uint32_t>().swap(mesh.corner_texcoords);
   });
   release_mesh_data(scene);
   std::vector<int>().swap(out.instance_source);

@@ -23,6 +23,8 @@ struct GeometryData {
   DeviceTable<dev::TriangleNormals> triangle_normals;  // zero without normals
   DeviceTable<dev::u32> triangle_materials;  // rows of the meshes whose triangles have
                                              // materials of their own (Instance.material_rows)
+  DeviceTable<dev::TriangleTexcoords> triangle_texcoords;  // rows of the meshes whose triangles
+                                                           // have coordinates (Mesh.texcoords)
   BvhTable nodes;                     // the top level's root is node 0
   // The glowing surfaces path mode samples (geometry/emitter_table.hpp), which the frame's light
   // table carries after the glow light's record; their total power, luminance times area.

@@ -42,10 +42,20 @@ TriangleSource::TriangleSource(const MeshData& mesh) : mesh_(&mesh), size_(mesh.
                    std::any_of(mesh.name_materials.begin(), mesh.name_materials.end(), [](int m) { return m >= 0; });
   check_indices(mesh.corners, mesh.positions.size(), mesh);
   if (has_normals_) check_indices(mesh.corner_normals, mesh.normals.size(), mesh);
+  has_texcoords_ = !mesh.corner_texcoords.empty();
+  if (has_texcoords_) {
+    if (mesh.corner_texcoords.size() != mesh.corners.size())
+      throw std::invalid_argument("mesh " + mesh.path + ": texture coordinates for some corners only");
+    for (std::uint32_t index : mesh.corner_texcoords)
+      if (index != kNoMeshTexcoord && index >= mesh.texcoords.size())
+        throw std::invalid_argument("mesh " + mesh.path + ": texture coordinate index " + std::to_string(index) +
+                                    " out of range");
+  }
 }
 
 TriangleSource::TriangleSource(const std::vector<TriangleSpec>& loose)
-    : loose_(&loose), size_(loose.size()), has_materials_(true) {}
+    : loose_(&loose), size_(loose.size()), has_materials_(true),
+      has_texcoords_(std::any_of(loose.begin(), loose.end(), [](const TriangleSpec& t) { return t.has_uv; })) {}
 
 dev::Triangle TriangleSource::triangle(std::size_t t) const {
   if (loose_) {
@@ -87,6 +97,20 @@ dev::u32 TriangleSource::material(std::size_t t) const {
   return own < 0 ? CLRT_INSTANCE_MATERIAL : static_cast<dev::u32>(own);
 }
 
+dev::TriangleTexcoords TriangleSource::texcoords(std::size_t t) const {
+  dev::TriangleTexcoords out{{0, 0, 1, 0, 0, 1}};
+  if (loose_) {
+    for (int k = 0; k < 6; ++k) out.uv[k] = (*loose_)[t].uv[static_cast<std::size_t>(k)];
+  } else if (has_texcoords_ && mesh_->corner_texcoords[3 * t] != kNoMeshTexcoord) {
+    for (int k = 0; k < 3; ++k) {
+      const std::array<float, 2>& uv = mesh_->texcoords[mesh_->corner_texcoords[3 * t + static_cast<std::size_t>(k)]];
+      out.uv[2 * k] = uv[0];
+      out.uv[2 * k + 1] = uv[1];
+    }
+  }
+  return out;
+}
+
 std::vector<Box> triangle_boxes(const TriangleSource& source) {
   std::vector<Box> boxes(source.size());
   parallel_for(source.size(), kChunk, [&](std::size_t t) {
@@ -101,16 +125,19 @@ dev::Mesh device_mesh(const TriangleSource& source, dev::u32 first_triangle) {
   mesh.first_triangle = first_triangle;
   mesh.triangle_count = static_cast<dev::u32>(source.size());
   mesh.has_normals = source.has_normals() ? 1u : 0u;
+  mesh.texcoords = CLRT_NO_TEXCOORDS;  // its rows are placed with the other meshes'
   return mesh;
 }
 
 void write_triangle_rows(const TriangleSource& source, const std::vector<std::uint32_t>& order,
-                         std::size_t first, dev::u32 material_rows, GeometryData& out) {
+                         std::size_t first, dev::u32 material_rows, dev::u32 texcoord_rows,
+                         GeometryData& out) {
   const std::vector<std::array<float, 3>> unit = source.unit_normals();
   parallel_for(order.size(), kChunk, [&](std::size_t i) {
     const std::uint32_t t = order[i];
     out.triangle_normals[first + i] = source.normals(t, unit);
     if (source.has_materials()) out.triangle_materials[material_rows + i] = source.material(t);
+    if (source.has_texcoords()) out.triangle_texcoords[texcoord_rows + i] = source.texcoords(t);
     out.triangle_source[first + i] = t;
   });
 }

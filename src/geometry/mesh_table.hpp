@@ -44,6 +44,11 @@ class TriangleSource {
   bool has_materials() const { return has_materials_; }
   // Triangle t's own material, or CLRT_INSTANCE_MATERIAL where it takes its instance's.
   dev::u32 material(std::size_t t) const;
+  // Whether any of its triangles has texture coordinates of its own (a loose triangle's `uv`,
+  // a mesh file's `vt`).
+  bool has_texcoords() const { return has_texcoords_; }
+  // Triangle t's corners' (u, v): its own, or (0, 0), (1, 0), (0, 1).
+  dev::TriangleTexcoords texcoords(std::size_t t) const;
 
  private:
   const MeshData* mesh_ = nullptr;
@@ -51,6 +56,7 @@ class TriangleSource {
   std::size_t size_ = 0;
   bool has_normals_ = false;
   bool has_materials_ = false;
+  bool has_texcoords_ = false;
 };
 
 // The boxes of the source's triangles (of their single-precision vertices), on every core.
@@ -61,9 +67,10 @@ std::vector<Box> triangle_boxes(const TriangleSource& source);
 dev::Mesh device_mesh(const TriangleSource& source, dev::u32 first_triangle);
 
 // Writes the per-triangle rows first + i = source triangle order[i] (normals, source index) and,
-// for a source with materials, material_rows + i, on every core; the tables must already hold
-// them.
+// for a source with materials, material_rows + i, and for one with texture coordinates,
+// texcoord_rows + i, on every core; the tables must already hold them.
 void write_triangle_rows(const TriangleSource& source, const std::vector<std::uint32_t>& order,
-                         std::size_t first, dev::u32 material_rows, GeometryData& out);
+                         std::size_t first, dev::u32 material_rows, dev::u32 texcoord_rows,
+                         GeometryData& out);
 
 }  // namespace clrt

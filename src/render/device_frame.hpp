@@ -20,6 +20,8 @@ struct DeviceFrame {
   Global<const dev::Camera> camera;
   Global<const dev::RenderParams> params;
   Global<const dev::Material> materials;
+  Global<const dev::Texture> textures;
+  Global<const cl_uint> texels;
   Global<const dev::Light> lights;
   std::uint64_t bytes = 0;  // on the device
 };

@@ -74,6 +74,8 @@ std::vector<dev::Material> make_materials(const Scene& scene) {
     d.kr = static_cast<float>(m.kr);
     d.kt = static_cast<float>(m.kt);
     d.ior = static_cast<float>(m.ior);
+    for (std::size_t slot = 0; slot < CLRT_TEXTURE_SLOTS; ++slot)
+      d.textures[slot] = m.textures[slot] < 0 ? CLRT_NO_TEXTURE : static_cast<dev::u32>(m.textures[slot]);
     out.push_back(d);
   }
   return out;
@@ -126,6 +128,9 @@ dev::RenderParams make_params(const Scene& scene, const RenderOptions& options) 
   p.max_sample_value = options.max_sample_value;
   p.glow_light = p.environment = CLRT_NO_LIGHT;  // make_frame adds them
   p.glossy = options.glossy && options.mode == RenderMode::Trace ? 1u : 0u;
+  // A pixel at the image's centre spans 1 / focal radians, the focal length in pixels as
+  // make_camera has it.
+  p.cone_spread = static_cast<float>(2.0 * std::tan(scene.camera.fov_degrees * M_PI / 360.0) / options.width);
   return p;
 }
 
@@ -179,7 +184,7 @@ constexpr dev::u32 kF4sPerEmitter = sizeof(dev::Emitter) / sizeof(dev::f4);
 
 FrameData make_frame(const Scene& scene, const GeometryData& geometry, const RenderOptions& options) {
   FrameData frame{make_camera(scene, options), make_params(scene, options), make_materials(scene),
-                  make_lights(scene), nullptr};
+                  make_lights(scene), nullptr, std::make_shared<const TextureTable>(make_texture_table(scene))};
   const bool path = options.mode == RenderMode::Path;
   // Appends a record, counted among the sampled lights when `sampled`.
   const auto add = [&frame](dev::Light record, bool sampled) {

@@ -7,6 +7,7 @@
 #include "math/stratification_grid.hpp"
 #include "geometry/geometry_data.hpp"
 #include "render/render_options.hpp"
+#include "render/texture_table.hpp"
 #include "scene/scene.hpp"
 #include "shared/scene.h"
 
@@ -39,6 +40,7 @@ struct FrameData {
   // The environment's texels and rows (kernels/render/lights/environment.h), after the emitter
   // rows in the device's light table; shared by every device's copy of the frame.
   std::shared_ptr<const std::vector<dev::f4>> environment_table;
+  std::shared_ptr<const TextureTable> textures;  // likewise shared
 };
 
 // The light records: the scene's lights; in path mode, with glowing surfaces in `geometry`'s

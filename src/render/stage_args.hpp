@@ -18,6 +18,7 @@ CLRT_DEVICE_TYPE_NAME(dev::Ray, "Ray");
 CLRT_DEVICE_TYPE_NAME(dev::ShadowRay, "ShadowRay");
 CLRT_DEVICE_TYPE_NAME(dev::Camera, "Camera");
 CLRT_DEVICE_TYPE_NAME(dev::Material, "Material");
+CLRT_DEVICE_TYPE_NAME(dev::Texture, "Texture");
 CLRT_DEVICE_TYPE_NAME(dev::Light, "Light");
 CLRT_DEVICE_TYPE_NAME(dev::RenderParams, "RenderParams");
 
@@ -58,11 +59,13 @@ struct IntersectArgs {
 struct ShadeInputs {
   Global<const dev::RenderParams> params;
   Global<const dev::Material> materials;
+  Global<const dev::Texture> textures;
+  Global<const cl_uint> texels;
   Global<const dev::Light> lights;
   Global<const dev::Ray> rays;
   Global<const dev::Hit> hits;
 
-  CLRT_KERNEL_ARGS(params, materials, lights, rays, hits)
+  CLRT_KERNEL_ARGS(params, materials, textures, texels, lights, rays, hits)
 };
 
 // What both write, in each ray's own slots (kernels/shade.cl).

@@ -8,6 +8,7 @@ const CommandTable& command_table() {
     add_camera_commands(t);
     add_environment_command(t);
     add_material_commands(t);
+    add_texture_commands(t);
     add_transform_commands(t);
     add_object_commands(t);
     add_light_commands(t);

@@ -16,6 +16,7 @@ using CommandTable = std::map<std::string, CommandHandler>;
 void add_camera_commands(CommandTable& table);
 void add_environment_command(CommandTable& table);
 void add_material_commands(CommandTable& table);
+void add_texture_commands(CommandTable& table);
 void add_transform_commands(CommandTable& table);
 void add_object_commands(CommandTable& table);
 void add_light_commands(CommandTable& table);

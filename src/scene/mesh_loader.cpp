@@ -1,6 +1,7 @@
 #include "scene/mesh_loader.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cstring>
 #include <optional>
 #include <unordered_map>
@@ -53,6 +54,7 @@ SliceStarts slice_starts(const std::vector<ObjChunk>& chunks) {
     s.corners.push_back(s.total_corners);
     s.lines.push_back(lines);
     s.total_elements.positions += c.positions.size();
+    s.total_elements.texcoords += c.texcoords.size();
     s.total_elements.normals += c.normals.size();
     s.total_corners += c.corners.index.size();
     lines += c.lines;
@@ -73,12 +75,26 @@ SourceLocation location(const std::string& path, std::size_t lines_before, const
   throw std::logic_error("fail_at_first_problem: no problem");
 }
 
+// A corner's index into one table: what messages call it, as written, and the file's count.
+struct CornerIndex {
+  std::string what;
+  std::int64_t written;
+  std::size_t count;
+};
+
+CornerIndex corner_index(ObjTable table, const ObjCornerSource& source, const ObjCounts& total) {
+  switch (table) {
+    case ObjTable::Position: return {"vertex", source.position, total.positions};
+    case ObjTable::Texcoord: return {"texture coordinate", source.texcoord, total.texcoords};
+    case ObjTable::Normal: return {"normal", source.normal, total.normals};
+  }
+  throw std::logic_error("corner_index: no such table");
+}
+
 [[noreturn]] void fail_at_corner(const std::string& path, std::string_view slice, std::size_t lines_before,
                                  const ObjBadCorner& bad, const ObjCounts& total) {
   const ObjCornerSource source = find_obj_corner(slice, bad.corner);
-  const std::int64_t written = bad.normal ? source.normal : source.position;
-  const std::string what = bad.normal ? "normal" : "vertex";
-  const std::size_t count = bad.normal ? total.normals : total.positions;
+  const auto [what, written, count] = corner_index(bad.table, source, total);
   throw MeshError(location(path, lines_before, source.where),
                   written > 0 ? what + " index " + std::to_string(written) + " is out of range (the file has " +
                                     std::to_string(count) + ")"
@@ -96,25 +112,53 @@ void copy_indices(std::vector<std::int32_t>& from, std::uint32_t* to) {
   release(from);
 }
 
+// kNoMeshTexcoord for a corner that names none, as for every corner of a slice none of whose
+// corners names one (it holds no indices: ObjChunk::corner_texcoords).
+void copy_texcoord_indices(std::vector<std::int32_t>& from, std::size_t corners, std::uint32_t* to) {
+  if (from.empty()) std::fill_n(to, corners, kNoMeshTexcoord);
+  std::transform(from.begin(), from.end(), to, [](std::int32_t i) {
+    return i == kObjNoIndex ? kNoMeshTexcoord : static_cast<std::uint32_t>(i);
+  });
+  release(from);
+}
+
+// Which optional tables the mesh keeps.
+struct MeshTables {
+  bool normals = false, texcoords = false, names = false;
+};
+
 // Moves every slice's elements into `mesh`, each slice's memory freed as soon as it is copied.
-void gather(std::vector<ObjChunk>& chunks, const SliceStarts& starts, bool with_normals, MeshData& mesh) {
+// Texture coordinate indices are copied per corner: a triangle with a corner naming none loses
+// them only once its polygon is cut (keep_whole_triangle_texcoords).
+void gather(std::vector<ObjChunk>& chunks, const SliceStarts& starts, const MeshTables& with, MeshData& mesh) {
   mesh.positions.resize(starts.total_elements.positions);
   mesh.corners.resize(starts.total_corners);
-  if (with_normals) {
+  if (with.normals) {
     mesh.normals.resize(starts.total_elements.normals);
     mesh.corner_normals.resize(starts.total_corners);
   }
+  if (with.texcoords) {
+    mesh.texcoords.resize(starts.total_elements.texcoords);
+    mesh.corner_texcoords.resize(starts.total_corners);
+  }
   parallel_for(chunks.size(), 1, [&](std::size_t i) {
     ObjChunk& c = chunks[i];
+    const std::size_t corners = c.corners.index.size();
     std::copy(c.positions.begin(), c.positions.end(), mesh.positions.begin() + starts.elements[i].positions);
     release(c.positions);
     copy_indices(c.corners.index, mesh.corners.data() + starts.corners[i]);
-    if (with_normals) {
+    if (with.normals) {
       std::copy(c.normals.begin(), c.normals.end(), mesh.normals.begin() + starts.elements[i].normals);
       copy_indices(c.corner_normals.index, mesh.corner_normals.data() + starts.corners[i]);
     }
     release(c.normals);
     release(c.corner_normals.index);
+    if (with.texcoords) {
+      std::copy(c.texcoords.begin(), c.texcoords.end(), mesh.texcoords.begin() + starts.elements[i].texcoords);
+      copy_texcoord_indices(c.corner_texcoords.index, corners, mesh.corner_texcoords.data() + starts.corners[i]);
+    }
+    release(c.texcoords);
+    release(c.corner_texcoords.index);
   });
 }
 
@@ -146,11 +190,29 @@ void gather_material_names(const std::string& path, const std::vector<ObjChunk>&
   }
 }
 
-// The mesh's tables once gathered (with a name per triangle when the file has `usemtl`).
-std::uint64_t mesh_bytes(const SliceStarts& starts, bool with_normals, bool with_names) {
-  const std::uint64_t per_corner = with_normals ? 2 * sizeof(std::uint32_t) : sizeof(std::uint32_t);
-  return (starts.total_elements.positions + (with_normals ? starts.total_elements.normals : 0)) * sizeof(Vec3) +
-         starts.total_corners * per_corner + (with_names ? starts.total_corners / 3 * sizeof(std::uint32_t) : 0);
+// The mesh's tables once gathered.
+std::uint64_t mesh_bytes(const SliceStarts& starts, const MeshTables& with) {
+  const std::uint64_t per_corner = (std::uint64_t{1} + with.normals + with.texcoords) * sizeof(std::uint32_t);
+  return (starts.total_elements.positions + (with.normals ? starts.total_elements.normals : 0)) * sizeof(Vec3) +
+         (with.texcoords ? starts.total_elements.texcoords * sizeof(std::array<float, 2>) : 0) +
+         starts.total_corners * per_corner + (with.names ? starts.total_corners / 3 * sizeof(std::uint32_t) : 0);
+}
+
+// A triangle keeps its texture coordinates only when all three corners name one, and the mesh
+// keeps them only when a triangle does.
+void keep_whole_triangle_texcoords(MeshData& mesh) {
+  std::vector<std::uint32_t>& c = mesh.corner_texcoords;
+  bool any = false;
+  for (std::size_t t = 0; t < c.size(); t += 3) {
+    if (c[t] == kNoMeshTexcoord || c[t + 1] == kNoMeshTexcoord || c[t + 2] == kNoMeshTexcoord)
+      c[t] = c[t + 1] = c[t + 2] = kNoMeshTexcoord;
+    else
+      any = true;
+  }
+  if (!any) {
+    release(mesh.texcoords);
+    release(c);
+  }
 }
 
 void check_gather_memory(const std::string& path, const std::vector<ObjChunk>& chunks, std::uint64_t mesh,
@@ -202,15 +264,18 @@ MeshData load_obj_mesh(const std::string& path, const FileSource& files, const M
   // and the mesh's side by side (the peak of loading a large mesh).
   file.reset();
 
-  const bool with_normals =
+  MeshTables with;
+  with.normals =
       std::all_of(chunks.begin(), chunks.end(), [](const ObjChunk& c) { return c.every_corner_has_normal; });
-  const bool with_names =
+  with.texcoords =
+      std::any_of(chunks.begin(), chunks.end(), [](const ObjChunk& c) { return !c.corner_texcoords.index.empty(); });
+  with.names =
       std::any_of(chunks.begin(), chunks.end(), [](const ObjChunk& c) { return !c.material_runs.empty(); });
-  check_gather_memory(path, chunks, mesh_bytes(starts, with_normals, with_names), memory);
+  check_gather_memory(path, chunks, mesh_bytes(starts, with), memory);
   MeshData mesh;
   mesh.path = path;
   gather_material_names(path, chunks, starts, mesh);
-  gather(chunks, starts, with_normals, mesh);
+  gather(chunks, starts, with, mesh);
   // Per slice, its first polygon refused.
   std::vector<const ObjPolygon*> refused(chunks.size(), nullptr);
   parallel_for(chunks.size(), 1, [&](std::size_t i) {
@@ -224,6 +289,7 @@ MeshData load_obj_mesh(const std::string& path, const FileSource& files, const M
     if (refused[i])
       throw MeshError(location(path, starts.lines[i], {refused[i]->line, 1}),
                       ConcavePolygonTooLarge(refused[i]->corners).what());
+  keep_whole_triangle_texcoords(mesh);
   return mesh;
 }
 

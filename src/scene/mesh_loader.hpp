@@ -9,6 +9,7 @@
 
 #include "scene/file_source.hpp"
 #include "scene/memory_limit.hpp"
+#include "scene/mtl_reader.hpp"
 #include "scene/scene.hpp"
 #include "scene/source_location.hpp"
 
@@ -24,7 +25,8 @@ class MeshError : public std::runtime_error {
 };
 
 // Polygons are cut into fans. Vertex normals are kept only if every corner of every face has
-// one. Throws MeshError for a file that cannot be read, a malformed line (a word that is not a
+// one; texture coordinates for the triangles whose three corners name one (MeshData::texcoords).
+// Throws MeshError for a file that cannot be read, a malformed line (a word that is not a
 // finite single-precision number, a wrong number of them, a bad face corner), an index out of
 // range, or a mesh with no triangles. A large file is parsed in slices on every core; the result
 // and the error reported do not depend on how many.
@@ -42,6 +44,9 @@ MeshData load_obj_mesh(const std::string& path, const FileSource& files = disk_f
 // malformed library is a MeshError.
 struct MeshMaterials {
   std::vector<std::optional<MaterialSpec>> by_name;
+  // Per name, the maps clrt renders (map_Kd, map_Ks), their paths resolved against their
+  // library's folder; for the scene's loader to read as textures.
+  std::vector<std::optional<MtlTextureRef>> color_maps, specular_maps;
   std::vector<std::string> warnings;  // "FILE:LINE:COLUMN: warning: ..."
 };
 MeshMaterials load_mesh_materials(const MeshData& mesh, const FileSource& files = disk_files());

@@ -61,12 +61,14 @@ MeshMaterials load_mesh_materials(const MeshData& mesh, const FileSource& files)
   if (mesh.material_names.empty()) return out;
   const std::filesystem::path folder = std::filesystem::path(mesh.path).parent_path();
   std::vector<MtlLibrary> libraries;
+  std::vector<std::filesystem::path> library_folders;  // each library's, for its maps' paths
   std::set<std::string> read;
   for (const MeshName& line : mesh.libraries)
     for (auto& [path, file] : open_libraries(line, folder, files, out.warnings)) {
       if (!read.insert(path).second) continue;
       try {
         libraries.push_back(parse_mtl(without_byte_order_mark(file->text()), path));
+        library_folders.push_back(std::filesystem::path(path).parent_path());
       } catch (const SceneError& e) {
         throw MeshError(e.where(), e.message());
       }
@@ -75,8 +77,15 @@ MeshMaterials load_mesh_materials(const MeshData& mesh, const FileSource& files)
   for (const MeshName& name : mesh.material_names) {
     // Later libraries' definitions win, as later definitions within one library do.
     const MtlMaterial* found = nullptr;
-    for (auto library = libraries.rbegin(); library != libraries.rend() && !found; ++library)
-      found = library->find(name.name);
+    std::size_t holder = libraries.size();
+    while (holder > 0 && !found) found = libraries[--holder].find(name.name);
+    const auto resolved = [&](const std::optional<MtlTextureRef>& map) {
+      std::optional<MtlTextureRef> out_map = map;
+      if (out_map) out_map->path = (library_folders[holder] / map->path).lexically_normal().generic_string();
+      return out_map;
+    };
+    out.color_maps.push_back(found ? resolved(found->map_kd) : std::nullopt);
+    out.specular_maps.push_back(found ? resolved(found->map_ks) : std::nullopt);
     if (found) {
       out.by_name.push_back(material_from_mtl(*found, out.warnings));
       continue;

@@ -29,10 +29,9 @@ MaterialSpec material_from_mtl(const MtlMaterial& mtl, std::vector<std::string>&
   if (mtl.dissolve) m.kt = 1.0 - *mtl.dissolve;
   if (mtl.ni) m.ior = *mtl.ni;
   if (mtl.ke) m.emission = *mtl.ke;
-  for (const std::optional<MtlTextureRef>* map : {&mtl.map_kd, &mtl.map_ks, &mtl.map_bump})
-    if (*map)
-      warnings.push_back(scene_warning((*map)->where, "material '" + mtl.name + "': texture '" + (*map)->path +
-                                                       "' is not rendered (clrt has no textures yet)"));
+  if (mtl.map_bump)
+    warnings.push_back(scene_warning(mtl.map_bump->where, "material '" + mtl.name + "': bump map '" +
+                                                           mtl.map_bump->path + "' is not rendered (clrt has no bump maps)"));
   return m;
 }
 

@@ -52,9 +52,10 @@ const char* short_decimal(const char* p, const char* end, float& value) {
   return p;
 }
 
-// A face corner as written: indices from 1, negative ones relative; normal 0 when it has none.
+// A face corner as written: indices from 1, negative ones relative; texcoord or normal 0 when it
+// has none.
 struct Corner {
-  std::int64_t position = 0, normal = 0;
+  std::int64_t position = 0, texcoord = 0, normal = 0;
   std::size_t column = 1;
 };
 
@@ -114,7 +115,7 @@ class LineReader {
     c.position = index(start, "vertex");
     if (p_ < end_ && *p_ == '/') {
       ++p_;
-      if (p_ == end_ || *p_ != '/') index(start, "texture coordinate");  // unused, but must be an index
+      if (p_ == end_ || *p_ != '/') c.texcoord = index(start, "texture coordinate");
       if (p_ < end_ && *p_ == '/') {
         ++p_;
         c.normal = index(start, "normal");
@@ -211,10 +212,12 @@ void normal(LineReader& r, Sink& sink) {
   sink.normal({xyz[0], xyz[1], xyz[2]});
 }
 
-void texture_coordinate(LineReader& r) {
-  float uvw[3];
+template <class Sink>
+void texture_coordinate(LineReader& r, Sink& sink) {
+  float uvw[3] = {0, 0, 0};
   if (numbers(r, 3, "a texture coordinate (u [v [w]])", uvw) == 0)
     r.fail(r.column_past_last(), "a texture coordinate is u [v [w]]: found no number");
+  sink.texcoord({uvw[0], uvw[1]});
 }
 
 // Cut into the fan (0, k, k + 1). Returns false when the sink wants no more.
@@ -243,7 +246,7 @@ bool parse_line(const char* begin, const char* end, std::size_t line, Sink& sink
   const std::string_view keyword = r.take_word();
   if (keyword == "v") vertex(r, sink);
   else if (keyword == "vn") normal(r, sink);
-  else if (keyword == "vt") texture_coordinate(r);
+  else if (keyword == "vt") texture_coordinate(r, sink);
   else if (keyword == "f") return face(r, sink);
   else if (keyword == "usemtl" || keyword == "mtllib") {
     std::size_t column = 1;
@@ -293,6 +296,7 @@ class Collector {
   }
 
   void position(const Vec3& p) { out_.positions.push_back(p); }
+  void texcoord(const std::array<float, 2>& uv) { out_.texcoords.push_back(uv); }
   void normal(const Vec3& n) { out_.normals.push_back(n); }
   void use_material(std::string_view name, const ObjPlace& where) {
     out_.material_runs.push_back({out_.corners.index.size() / 3, std::string(name), where});
@@ -304,12 +308,9 @@ class Collector {
   bool triangle(const Corner& a, const Corner& b, const Corner& c, std::size_t) {
     for (const Corner* k : {&a, &b, &c}) {
       add(out_.corners, k->position, out_.positions.size());
-      if (k->normal != 0) {
-        add(out_.corner_normals, k->normal, out_.normals.size());
-      } else {
-        out_.every_corner_has_normal = false;
-        out_.corner_normals.index.push_back(kObjNoIndex);
-      }
+      texcoord_corner(k->texcoord);
+      if (k->normal == 0) out_.every_corner_has_normal = false;
+      add_or_none(out_.corner_normals, k->normal, out_.normals.size());
     }
     return true;
   }
@@ -319,6 +320,20 @@ class Collector {
   }
 
  private:
+  // After the corner's position: ObjChunk::corner_texcoords stays empty up to the first corner
+  // that names one, and from there holds one index per corner.
+  void texcoord_corner(std::int64_t written) {
+    ObjCornerRefs& refs = out_.corner_texcoords;
+    if (written == 0 && refs.index.empty()) return;
+    refs.index.resize(out_.corners.index.size() - 1, kObjNoIndex);  // the corners before, naming none
+    add_or_none(refs, written, out_.texcoords.size());
+  }
+
+  static void add_or_none(ObjCornerRefs& refs, std::int64_t written, std::size_t read_so_far) {
+    if (written != 0) add(refs, written, read_so_far);
+    else refs.index.push_back(kObjNoIndex);
+  }
+
   static void add(ObjCornerRefs& refs, std::int64_t written, std::size_t read_so_far) {
     if (written > 0) {
       refs.index.push_back(static_cast<std::int32_t>(written - 1));
@@ -339,6 +354,7 @@ class CornerFinder {
   explicit CornerFinder(std::size_t corner) : wanted_(corner) {}
 
   void position(const Vec3&) { ++positions_; }
+  void texcoord(const std::array<float, 2>&) { ++texcoords_; }
   void normal(const Vec3&) { ++normals_; }
   void use_material(std::string_view, const ObjPlace&) {}
   void library(std::string_view, const ObjPlace&) {}
@@ -350,7 +366,7 @@ class CornerFinder {
     }
     const Corner* corners[3] = {&a, &b, &c};
     const Corner& k = *corners[wanted_ - seen_];
-    found_ = {{line, k.column}, k.position, k.normal, positions_, normals_};
+    found_ = {{line, k.column}, k.position, k.texcoord, k.normal, positions_, texcoords_, normals_};
     return false;
   }
 
@@ -360,16 +376,18 @@ class CornerFinder {
   const ObjCornerSource& found() const { return found_; }
 
  private:
-  std::size_t wanted_, seen_ = 0, positions_ = 0, normals_ = 0;
+  std::size_t wanted_, seen_ = 0, positions_ = 0, texcoords_ = 0, normals_ = 0;
   ObjCornerSource found_;
 };
 
 }  // namespace
 
 std::uint64_t ObjChunk::bytes() const {
+  std::uint64_t refs = 0;
+  for (const ObjCornerRefs* r : {&corners, &corner_texcoords, &corner_normals})
+    refs += r->index.capacity() * sizeof(std::int32_t) + r->relative.capacity() * sizeof(std::uint32_t);
   return (positions.capacity() + normals.capacity()) * sizeof(Vec3) +
-         (corners.index.capacity() + corner_normals.index.capacity()) * sizeof(std::int32_t) +
-         (corners.relative.capacity() + corner_normals.relative.capacity()) * sizeof(std::uint32_t) +
+         texcoords.capacity() * sizeof(std::array<float, 2>) + refs +
          polygons.capacity() * sizeof(ObjPolygon) + material_runs.capacity() * sizeof(ObjMaterialRun) +
          libraries.capacity() * sizeof(ObjLibraryRef);
 }

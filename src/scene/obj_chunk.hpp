@@ -1,7 +1,9 @@
 // One slice of an OBJ file's lines parsed on its own, so that the slices of a large file can be
-// parsed side by side: its vertices, normals and triangle corners, or its first malformed line.
+// parsed side by side: its vertices, texture coordinates, normals and triangle corners, or its first
+// malformed line.
 #pragma once
 
+#include <array>
 #include <atomic>
 #include <cstddef>
 #include <cstdint>
@@ -25,10 +27,15 @@ struct ObjProblem {
   std::string message;
 };
 
-// Marks a corner without a normal in ObjCornerRefs::index (no relative index reaches it).
+// Marks a corner without a normal (or texture coordinate) in ObjCornerRefs::index (no relative
+// index reaches it).
 constexpr std::int32_t kObjNoIndex = INT32_MIN;
 
-// Per triangle corner, an index from 0 into the whole file's positions (or normals). A relative
+// The tables a face corner indexes into, in the order it names them (v/vt/vn).
+enum class ObjTable { Position, Texcoord, Normal };
+
+// Per triangle corner, an index from 0 into the whole file's positions (or texture coordinates,
+// or normals). A relative
 // index (negative in the file) counts back from the elements read so far, of which a slice knows
 // only its own: it is stored counted from the slice's first element (so it may be negative) and
 // listed in `relative`, for resolve_obj_indices (obj_index_check.hpp) to complete.
@@ -60,9 +67,13 @@ struct ObjLibraryRef {
 
 struct ObjChunk {
   std::vector<Vec3> positions;   // `v x y z`, as single-precision values
+  std::vector<std::array<float, 2>> texcoords;  // `vt u [v [w]]`: (u, v), v 0 when missing
   std::vector<Vec3> normals;     // `vn x y z`
   ObjCornerRefs corners;         // three per triangle
   ObjCornerRefs corner_normals;  // likewise; kObjNoIndex for a corner that names no normal
+  // Likewise for texture coordinates, but empty until the slice's first corner that names one, so
+  // that a file without any costs nothing.
+  ObjCornerRefs corner_texcoords;
   std::vector<ObjPolygon> polygons;
   std::vector<ObjMaterialRun> material_runs;
   std::vector<ObjLibraryRef> libraries;
@@ -87,12 +98,12 @@ struct ObjMemoryMeter {
 ObjChunk parse_obj_chunk(std::string_view text, ObjMemoryMeter& meter);
 
 // Triangle corner `corner` of the slice `text` as the file spells it: where its word is, its
-// position and normal index as written (normal 0: none), and how many positions and normals the
+// position, texture coordinate and normal index as written (0: none), and how many of each the
 // slice held before its line. `corner` must be one that parse_obj_chunk returned.
 struct ObjCornerSource {
   ObjPlace where;
-  std::int64_t position = 0, normal = 0;
-  std::size_t positions_before = 0, normals_before = 0;
+  std::int64_t position = 0, texcoord = 0, normal = 0;
+  std::size_t positions_before = 0, texcoords_before = 0, normals_before = 0;
 };
 ObjCornerSource find_obj_corner(std::string_view text, std::size_t corner);
 

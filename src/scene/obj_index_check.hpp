@@ -11,13 +11,13 @@
 namespace clrt {
 
 struct ObjCounts {
-  std::size_t positions = 0, normals = 0;
+  std::size_t positions = 0, texcoords = 0, normals = 0;
 };
 
-// A corner whose position (or normal, when `normal`) index is out of range.
+// A corner whose index into `table` is out of range.
 struct ObjBadCorner {
   std::size_t corner;  // triangle corner in its slice
-  bool normal;
+  ObjTable table;
 };
 
 // Makes every index of `chunk`'s corners one into the whole file's tables, given the elements of

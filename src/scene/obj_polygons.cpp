@@ -119,9 +119,8 @@ bool triangulate_polygon(MeshData& mesh, std::size_t first_corner, std::size_t c
   // The mesh holds the fan already, which covers a convex polygon exactly.
   if (corners > limits::kMaxConcavePolygonCorners) return is_convex(project(points));
   const std::vector<Triangle> triangles = corners == 4 ? cut_quad(points) : clip_ears(points);
-  if (!mesh.corner_normals.empty())
-    write_triangles(mesh.corner_normals, first_corner, fan_corners(mesh.corner_normals, first_corner, corners),
-                    triangles);
+  for (std::vector<std::uint32_t>* table : {&mesh.corner_normals, &mesh.corner_texcoords})
+    if (!table->empty()) write_triangles(*table, first_corner, fan_corners(*table, first_corner, corners), triangles);
   write_triangles(mesh.corners, first_corner, position, triangles);
   return true;
 }

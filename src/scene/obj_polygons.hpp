@@ -10,7 +10,7 @@ namespace clrt {
 
 // The polygon whose corners `mesh` holds as the fan (0, k, k + 1) in the triangle corners from
 // `first_corner` on is cut again, into as many triangles, keeping its winding (and each corner's
-// normal):
+// normal and texture coordinate):
 // - a quad along its shorter diagonal, from corner 0 to 2 only when that one is strictly shorter
 //   (in single precision), as tinyobjloader, which clrt used before, cut it;
 // - a larger polygon by ear clipping in the plane of its (Newell) normal, so that a concave

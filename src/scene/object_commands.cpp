@@ -5,6 +5,8 @@
 #include "scene/coordinate_check.hpp"
 #include "scene/limits.hpp"
 #include "scene/mesh_loader.hpp"
+#include "scene/texture_images.hpp"
+#include "shared/texture.h"
 
 namespace clrt {
 namespace {
@@ -45,16 +47,26 @@ void cone(LoaderState& s, const CommandArgs& a) {
   instance.cone_r1 = radii[1];
 }
 
+// 9 numbers: the corners; 15: each corner followed by its (u, v).
 void triangle(LoaderState& s, const CommandArgs& a) {
-  a.require_count({9});
+  a.require_count({9, 15});
   if (in_motion(s))
     throw SceneError(a.command_location(),
                      "a triangle cannot move: its corners are fixed in world space as it is read "
                      "(put moving triangles in an OBJ mesh, or `reset` before this one)");
   TriangleSpec t;
+  const std::size_t stride = a.count() == 15 ? 5 : 3;
+  for (std::size_t i = 0; i < a.count(); ++i) a.number(i);  // errors left to right
   t.v0 = s.transform.transform_point(a.vec3(0));
-  t.v1 = s.transform.transform_point(a.vec3(3));
-  t.v2 = s.transform.transform_point(a.vec3(6));
+  t.v1 = s.transform.transform_point(a.vec3(stride));
+  t.v2 = s.transform.transform_point(a.vec3(2 * stride));
+  if (stride == 5) {
+    t.has_uv = true;
+    for (std::size_t k = 0; k < 3; ++k)
+      for (std::size_t j = 0; j < 2; ++j)
+        t.uv[2 * k + j] = static_cast<float>(a.number_in(k * 5 + 3 + j, -limits::kMaxNumber,
+                                                        limits::kMaxNumber, "a texture coordinate"));
+  }
   for (const Vec3& v : {t.v0, t.v1, t.v2}) check_world_point(v, a.command_location());
   t.material = s.material;
   s.scene.triangles.push_back(t);
@@ -68,9 +80,25 @@ MemoryLimit memory_left(const LoaderState& s) {
 
 // The materials of the mesh's `usemtl` names join the scene's (whether or not an instance takes
 // them: a mesh file is read once, and `mtl` may differ between its instances).
+// A map_Kd or map_Ks as a texture of the scene: its index into Scene::textures.
+int map_texture(LoaderState& s, const MtlTextureRef& map) {
+  TextureSpec t;
+  t.image = texture_image(s, map.path, map.where);
+  t.clamp = map.clamp;
+  t.scale[0] = map.scale.x;
+  t.scale[1] = map.scale.y;
+  t.offset[0] = map.offset.x;
+  t.offset[1] = map.offset.y;
+  s.scene.textures.push_back(t);
+  return static_cast<int>(s.scene.textures.size()) - 1;
+}
+
 void add_mesh_materials(LoaderState& s, MeshData& mesh) {
   MeshMaterials found = load_mesh_materials(mesh, *s.files);
-  for (const std::optional<MaterialSpec>& m : found.by_name) {
+  for (std::size_t i = 0; i < found.by_name.size(); ++i) {
+    std::optional<MaterialSpec>& m = found.by_name[i];
+    if (m && found.color_maps[i]) m->textures[CLRT_TEXTURE_SLOT_COLOR] = map_texture(s, *found.color_maps[i]);
+    if (m && found.specular_maps[i]) m->textures[CLRT_TEXTURE_SLOT_KS] = map_texture(s, *found.specular_maps[i]);
     if (m) s.scene.materials.push_back(*m);
     mesh.name_materials.push_back(m ? static_cast<int>(s.scene.materials.size()) - 1 : -1);
   }

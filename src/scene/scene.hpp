@@ -1,6 +1,7 @@
 // The scene model: everything a scene file (.ray or NFF) describes, validated and ready to upload.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <deque>
 #include <optional>
@@ -34,6 +35,28 @@ struct MaterialSpec {
   double kr = 0, kt = 0;
   double ior = 1;  // a value <= 0 in the file is stored as 1
   Vec3 emission{0, 0, 0};  // radiance leaving the front side (`emission`)
+  // Per CLRT_TEXTURE_SLOT_* (colour, ks, kr, kt): an index into Scene::textures whose value
+  // multiplies that term, or -1.
+  std::array<int, 4> textures{-1, -1, -1, -1};
+};
+
+// An image a texture shows, read once however many textures use it; rows from the top.
+struct TextureImage {
+  std::string path;  // as resolved
+  int width = 0, height = 0;
+  bool linear = false;                  // PFM, EXR: `rgb` holds linear values
+  std::vector<std::uint8_t> srgb;       // PNG, PPM: 3 sRGB-encoded bytes per texel
+  std::vector<float> rgb;               // PFM, EXR: 3 floats per texel
+};
+
+// `texture` (docs/scene-format.md#textures), or an MTL map: what a material's term is multiplied by.
+struct TextureSpec {
+  enum class Kind { Image, Checker, Noise } kind = Kind::Image;
+  int image = -1;  // Kind::Image: index into Scene::texture_images
+  bool clamp = false;  // images: clamp (s, t) to [0, 1] rather than repeat
+  double scale[2] = {1, 1}, offset[2] = {0, 0};  // (s, t) = (u, v) * scale + offset
+  Vec3 color0{0, 0, 0}, color1{1, 1, 1};  // checker and noise
+  int octaves = 4;  // noise
 };
 
 // `environment FILE [SCALE]`: the radiance arriving from every direction, an equirectangular
@@ -102,6 +125,11 @@ struct MeshData {
   std::vector<Vec3> normals;         // empty, or the file's normals (see corner_normals)
   std::vector<std::uint32_t> corners;  // 3 per triangle, into `positions`, counter-clockwise
   std::vector<std::uint32_t> corner_normals;  // 3 per triangle into `normals` when normals exist
+  // `vt`: the file's texture coordinates (u, v as single-precision values; a missing v is 0, a w
+  // is dropped), and 3 per triangle, indices into them; both empty when no face corner names one.
+  // A triangle with a corner that names none has kNoMeshTexcoord at all three corners.
+  std::vector<std::array<float, 2>> texcoords;
+  std::vector<std::uint32_t> corner_texcoords;
   // `usemtl`: the names in the order of their first use (where first used), and per triangle
   // the index of the name in force (kNoMeshMaterial before the file's first `usemtl`); both
   // empty when it names none.
@@ -114,6 +142,7 @@ struct MeshData {
 };
 
 constexpr std::uint32_t kNoMeshMaterial = UINT32_MAX;
+constexpr std::uint32_t kNoMeshTexcoord = UINT32_MAX;
 
 // Triangle t's own material (index into Scene::materials) from its `usemtl` name, or -1.
 int mesh_face_material(const MeshData& mesh, std::size_t t);
@@ -126,6 +155,9 @@ int mesh_triangle_material(const InstanceSpec& instance, const MeshData& mesh, s
 struct TriangleSpec {
   Vec3 v0, v1, v2;
   int material = 0;
+  // (u, v) at each corner; the default (0, 0), (1, 0), (0, 1) unless the command gives them.
+  std::array<float, 6> uv{0, 0, 1, 0, 0, 1};
+  bool has_uv = false;
 };
 
 struct Scene {
@@ -138,6 +170,8 @@ struct Scene {
   std::vector<MaterialSpec> materials;  // [0] is the default material
   std::vector<LightSpec> lights;
   std::optional<EnvironmentSpec> environment;  // none: escaping rays see `background`
+  std::vector<TextureSpec> textures;
+  std::vector<TextureImage> texture_images;
   // A deque grows without copying what it holds: a vector's doubling held up to three times
   // the table at its last growth, the peak of loading a scene of spheres.
   std::deque<InstanceSpec> instances;

@@ -1,4 +1,5 @@
 #include "scene/scene_memory.hpp"
+#include "scene/texture_images.hpp"
 
 namespace clrt {
 namespace {
@@ -25,10 +26,13 @@ std::uint64_t estimated_scene_bytes(const Scene& scene) {
   std::uint64_t growing = table_bytes(scene.triangles);
   for (const MeshData& mesh : scene.meshes)
     growing += table_bytes(mesh.positions) + table_bytes(mesh.normals) + table_bytes(mesh.corners) +
-               table_bytes(mesh.corner_normals) + table_bytes(mesh.triangle_names);
+               table_bytes(mesh.corner_normals) + table_bytes(mesh.texcoords) + table_bytes(mesh.corner_texcoords) +
+               table_bytes(mesh.triangle_names);
   const std::uint64_t environment = scene.environment ? table_bytes(scene.environment->rgb) : 0;
+  std::uint64_t textures = 0;
+  for (const TextureImage& image : scene.texture_images) textures += texture_image_bytes(image);
   return 2 * growing + table_bytes(scene.instances) + table_bytes(scene.end_transforms) + environment +
-         estimated_geometry_bytes(scene);
+         textures + estimated_geometry_bytes(scene);
 }
 
 void check_scene_memory(std::uint64_t needed, const MemoryLimit& limit, const SourceLocation& where) {

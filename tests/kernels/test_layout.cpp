@@ -17,7 +17,7 @@ namespace {
 // Each entry is the sizeof or offsetof expression, evaluated by both compilers.
 #define LAYOUT_FIELDS(X)                                                                     \
   X(sizeof(Ray)) X(offsetof(Ray, radiance_scale)) X(offsetof(Ray, dir))                     \
-  X(offsetof(Ray, sample_index)) X(offsetof(Ray, weight)) X(offsetof(Ray, pdf))              \
+  X(offsetof(Ray, sample_cone)) X(offsetof(Ray, weight)) X(offsetof(Ray, pdf))              \
   X(offsetof(Ray, sample))                                                                   \
   X(offsetof(Ray, depth_kind)) X(offsetof(Ray, time)) X(sizeof(Hit)) X(offsetof(Hit, shading_normal))                     \
   X(offsetof(Hit, instance)) X(offsetof(Hit, material)) X(sizeof(ShadowRay))                 \

@@ -32,7 +32,7 @@ __kernel void draw_continuations(__global const Material* material, float4 norma
   vstore3((float3)(0.0f), 0, ray.origin);
   ray.radiance_scale = 1.0f;
   vstore3(-wo.xyz, 0, ray.dir);
-  ray.sample_index = 0u;
+  ray.sample_cone = 0u;
   vstore3((float3)(1.0f), 0, ray.weight);
   ray.pdf = 0.0f;
   ray.sample = i;

@@ -1,5 +1,7 @@
 #include <catch2/catch.hpp>
 
+#include <array>
+
 #include "scene_test_support.hpp"
 
 using clrt::load_scene;
@@ -71,6 +73,21 @@ TEST_CASE("a mesh without normals leaves normals and corner_normals empty", "[sc
   CHECK(m.corners == std::vector<std::uint32_t>{0, 1, 2, 1, 3, 2});
   CHECK(m.normals.empty());
   CHECK(m.corner_normals.empty());
+  CHECK(m.texcoords.empty());
+  CHECK(m.corner_texcoords.empty());
+}
+
+TEST_CASE("a mesh with texture coordinates keeps them per corner, the quad's cut included",
+          "[scene][mesh][texcoords]") {
+  const clrt::Scene s = load_with_obj(
+      "quad.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\nvn 0 0 1\n"
+                  "f 1/1/1 2/2/1 3/3/1 4/4/1\n",
+      "mesh quad.obj\n");
+  const clrt::MeshData& m = s.meshes.at(0);
+  CHECK(m.texcoords == std::vector<std::array<float, 2>>{{0, 0}, {1, 0}, {1, 1}, {0, 1}});
+  CHECK(m.corners == std::vector<std::uint32_t>{0, 1, 3, 1, 2, 3});
+  CHECK(m.corner_texcoords == m.corners);
+  CHECK(m.corner_normals == std::vector<std::uint32_t>(6, 0));
 }
 
 TEST_CASE("normals are dropped unless every corner has one", "[scene][mesh]") {
@@ -139,6 +156,10 @@ TEST_CASE("bad OBJ indices are errors at the mesh command naming the OBJ line an
        "m.obj:4:9: relative vertex index -4 reaches before the first one"},
       {"normal index past the end", "vn 0 0 1\nf 1//1 2//1 3//2\n",
        "m.obj:5:13: normal index 2 is out of range (the file has 1)"},
+      {"texture coordinate index past the end", "vt 0 0\nf 1/1 2/1 3/2\n",
+       "m.obj:5:11: texture coordinate index 2 is out of range (the file has 1)"},
+      {"relative texture coordinate index before the first one", "vt 0 0\nf 1/-1/1 2/-2/1 3/-1/1\nvn 0 0 1\n",
+       "m.obj:5:10: relative texture coordinate index -2 reaches before the first one"},
       {"a corner that is not an index", "f 1 2 x\n", "m.obj:4:7: bad face corner 'x'"},
       {"a face with two corners", "f 1 2\n", "m.obj:4:6: a face needs at least 3 corners, found 2"},
   };

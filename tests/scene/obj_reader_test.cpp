@@ -3,6 +3,7 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <array>
 #include <charconv>
 #include <cmath>
 #include <random>
@@ -19,6 +20,10 @@ using clrt::Vec3;
 using clrt::test::ScratchDir;
 
 namespace {
+
+using UV = std::array<float, 2>;
+using Indices = std::vector<std::uint32_t>;
+constexpr std::uint32_t kNone = clrt::kNoMeshTexcoord;
 
 MeshData load_obj_text(const std::string& text) {
   ScratchDir dir;
@@ -57,7 +62,7 @@ TEST_CASE("OBJ: the spellings of numbers, corners and lines a file may use", "[s
       "v +1 .5 -2e-1 # trailing comment\r\n"
       "v\t1.\t0\t0 1.0\r\n"                     // with a weight
       "v 0 1 0 0.5 0.25 1\r\n"                  // with a colour
-      "vt 0.5 0.5\r\nvt 1\r\nvp 0.1 0.2\r\n"  // texture and parameter coordinates are ignored
+      "vt 0.5 0.5\r\nvt 1\r\nvp 0.1 0.2\r\n"  // v left out; parameter coordinates are ignored
       "vn 0 0 1\r\n"
       "g group\r\ns 1\r\nusemtl red\r\n"
       "  f 1/1/1 2/2/1 3//1   \r\n"
@@ -71,6 +76,9 @@ TEST_CASE("OBJ: the spellings of numbers, corners and lines a file may use", "[s
   // The last two faces name no normals: none are kept.
   CHECK(m.normals.empty());
   CHECK(m.corner_normals.empty());
+  // Only the middle face names a texture coordinate at every corner.
+  CHECK(m.texcoords == std::vector<UV>{{0.5f, 0.5f}, {1, 0}});
+  CHECK(m.corner_texcoords == Indices{kNone, kNone, kNone, 0, 1, 0, kNone, kNone, kNone});
 }
 
 TEST_CASE("OBJ: a malformed line is an error at its line and column, never a silent 0", "[scene][obj][errors]") {
@@ -179,6 +187,76 @@ TEST_CASE("OBJ: a concave polygon is cut into triangles inside it, keeping its w
   for (std::size_t t = 0; t < 4; ++t) CHECK(twice_area_z(flipped, t) < 0);
 }
 
+TEST_CASE("OBJ: texture coordinates are kept per corner, as written or relative", "[scene][obj][texcoords]") {
+  const MeshData m = load_obj_text(
+      "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\n"
+      "vt 0.1 0.3\nvt 0.7\nvt -2.5 1e3 0.125\n"  // v left out; w read, then dropped
+      "f 1/1 2/2 3/3\n"
+      "f 1/3/1 2/1/1 3/2/1\n"
+      "f 1/-3 2/-1 3/-2\n");
+  CHECK(m.texcoords == std::vector<UV>{{0.1f, 0.3f}, {0.7f, 0}, {-2.5f, 1000}});
+  CHECK(m.corner_texcoords == Indices{0, 1, 2, 2, 0, 1, 0, 2, 1});
+  CHECK(m.corners == Indices{0, 1, 2, 0, 1, 2, 0, 1, 2});
+  CHECK(m.normals.empty());  // the first face names none
+}
+
+TEST_CASE("OBJ: texture coordinates that no face corner names are not kept", "[scene][obj][texcoords]") {
+  const MeshData m = load_obj_text("vt 0 0\nvt 1 0\nvt 0 1\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nf -3 -2 -1\n");
+  CHECK(m.corners.size() == 6);
+  CHECK(m.texcoords.empty());
+  CHECK(m.corner_texcoords.empty());
+}
+
+TEST_CASE("OBJ: a triangle with a corner naming no texture coordinate has none at any corner",
+          "[scene][obj][texcoords]") {
+  const std::string verts = "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\n";
+  const MeshData m = load_obj_text(verts + "f 1/1 2 3/3\nf 1/1 2/2 3/3\nf 1//1 2/2 3/3\nvn 0 0 1\n");
+  CHECK(m.corner_texcoords == Indices{kNone, kNone, kNone, 0, 1, 2, kNone, kNone, kNone});
+  CHECK(m.texcoords.size() == 3);
+  // When no triangle keeps them, the mesh holds none.
+  const MeshData none = load_obj_text(verts + "f 1/1 2 3/3\nf 1/1 2/2 3\n");
+  CHECK(none.texcoords.empty());
+  CHECK(none.corner_texcoords.empty());
+}
+
+TEST_CASE("OBJ: a polygon's texture coordinates follow its corners as it is cut", "[scene][obj][texcoords]") {
+  // A square, cut from corner 1 to 3; texture coordinate k named at position k, so that each
+  // triangle corner's index into both must match.
+  const std::string uv = "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\n";
+  const MeshData quad = load_obj_text("v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n" + uv + "f 1/1 2/2 3/3 4/4\n");
+  CHECK(quad.corners == Indices{0, 1, 3, 1, 2, 3});
+  CHECK(quad.corner_texcoords == quad.corners);
+  // The concave L of the test above, ear-clipped.
+  const MeshData l = load_obj_text("v 2 1 0\nv 1 1 0\nv 1 2 0\nv 0 2 0\nv 0 0 0\nv 2 0 0\n" + uv +
+                                   "vt 2 2\nvt 3 3\nf 1/1/1 2/2/1 3/3/1 4/4/1 5/5/1 6/6/1\nvn 0 0 1\n");
+  REQUIRE(l.corners.size() == 12);
+  CHECK(l.corners != Indices({0, 1, 2, 0, 2, 3, 0, 3, 4, 0, 4, 5}));  // not the fan
+  CHECK(l.corner_texcoords == l.corners);
+  CHECK(l.corner_normals == Indices(12, 0));
+  // A corner without one: each triangle cut with it loses them, whether or not the fan's did.
+  const std::string partial = uv + "f 1/1 2/2 3/3 4\n";
+  const MeshData square = load_obj_text("v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n" + partial);
+  CHECK(square.corners == Indices{0, 1, 3, 1, 2, 3});
+  CHECK(square.corner_texcoords.empty());  // the fan's (0, 1, 2) had them, but it was cut otherwise
+  const MeshData kite = load_obj_text("v 0 0 0\nv 1 0 0\nv 0.4 0.4 0\nv 0 1 0\n" + partial);
+  CHECK(kite.corners == Indices{0, 1, 2, 0, 2, 3});
+  CHECK(kite.corner_texcoords == Indices{0, 1, 2, kNone, kNone, kNone});
+}
+
+TEST_CASE("OBJ: a texture coordinate index out of range is an error at its corner",
+          "[scene][obj][texcoords][errors]") {
+  const std::string verts = "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\n";  // lines 1-5
+  CHECK(obj_error(verts + "f 1/1 2/2 3/3\n") == ":6:11: texture coordinate index 3 is out of range (the file has 2)");
+  CHECK(obj_error(verts + "f 1/1 2/-3 3/1\n") ==
+        ":6:7: relative texture coordinate index -3 reaches before the first one");
+  // Also in a triangle that would not keep them, and in a file with no other corner naming one.
+  CHECK(obj_error(verts + "f 1 2 3/9\n") == ":6:7: texture coordinate index 9 is out of range (the file has 2)");
+  CHECK(obj_error("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1/1/1 2//1 3//1\nvn 0 0 1\n") ==
+        ":4:3: texture coordinate index 1 is out of range (the file has 0)");
+  // A bad vertex index is reported before a bad texture coordinate index of the same corner.
+  CHECK(obj_error(verts + "f 1/1 2/2 4/3\n") == ":6:11: vertex index 4 is out of range (the file has 3)");
+}
+
 namespace {
 
 // One face of `corners` corners round the origin in z = 0, counter-clockwise: a circle of radius
@@ -278,6 +356,34 @@ TEST_CASE("OBJ: a file read in slices gives what one pass gives, and the first e
   // A malformed line is reported before an index out of range earlier in the file.
   CHECK_THAT(obj_error("f 1 2 999999\n" + text + "v nan 0 0\n"),
              Catch::Contains(":" + std::to_string(lines + 2) + ":3: 'nan' is not a finite number"));
+}
+
+TEST_CASE("OBJ: texture coordinates read in slices: slices naming none, relative indices across them",
+          "[scene][obj][texcoords]") {
+  const int quads = 80000;
+  // Texture coordinates at the start, named only by the last face, from a later slice.
+  const std::string text = "vt 0.25 0.75\nvt 1 0\nvt 0 1\n" + strip_obj(quads) + "f 1/-3 2/-1 3/-2\n";
+  REQUIRE(text.size() > 3u << 20);
+  const MeshData m = load_obj_text(text);
+  const std::size_t corners = 6 + 6 * static_cast<std::size_t>(quads);
+  REQUIRE(m.corners.size() == corners);
+  CHECK(m.texcoords == std::vector<UV>{{0.25f, 0.75f}, {1, 0}, {0, 1}});
+  Indices expected(corners, kNone);
+  expected[corners - 3] = 0;
+  expected[corners - 2] = 2;
+  expected[corners - 1] = 1;
+  CHECK(m.corner_texcoords == expected);
+  for (unsigned threads : {1u, 3u}) {
+    clrt::parallel_thread_limit = threads;
+    const MeshData other = load_obj_text(text);
+    clrt::parallel_thread_limit = 0;
+    INFO(threads << " threads");
+    CHECK(other.texcoords == m.texcoords);
+    CHECK(other.corner_texcoords == m.corner_texcoords);
+  }
+  const std::size_t lines = static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n'));
+  CHECK_THAT(obj_error(text + "f 1/1 2/2 3/4\n"),
+             Catch::Contains(":" + std::to_string(lines + 1) + ":11: texture coordinate index 4 is out of range (the file has 3)"));
 }
 
 TEST_CASE("OBJ: numbers read exactly as std::from_chars reads them, in every spelling", "[scene][obj]") {

@@ -17,12 +17,14 @@ struct MegakernelArgs {
   Global<const dev::RenderParams> params;
   Global<const dev::Camera> camera;
   Global<const dev::Material> materials;
+  Global<const dev::Texture> textures;
+  Global<const cl_uint> texels;
   Global<const dev::Light> lights;
   WaveArgs wave;
   Global<dev::f4> sample_colour;
   Global<cl_uint> ray_counts;  // CLRT_RAY_KINDS per camera sample
 
-  CLRT_KERNEL_ARGS(scene, params, camera, materials, lights, wave, sample_colour, ray_counts)
+  CLRT_KERNEL_ARGS(scene, params, camera, materials, textures, texels, lights, wave, sample_colour, ray_counts)
 };
 
 // Its own buffers, X(member, element, length in elements of WaveSizes s, name).
@@ -79,7 +81,7 @@ class MegakernelIntegrator final : public WaveLoop {
   // lives on the stack, so it never overflows.
   bool trace(const WaveArgs& wave) override {
     launcher().launch(megakernel_,
-                      {frame().geometry.args(), frame().params, frame().camera, frame().materials,
+                      {frame().geometry.args(), frame().params, frame().camera, frame().materials, frame().textures, frame().texels,
                        frame().lights, wave, resolver().sample_colour(), ray_counts_},
                       wave.sample_count, 0);
     profiler().count_rows(ray_counts_, wave.sample_count, 0);

@@ -96,7 +96,7 @@ void WavefrontIntegrator::run_pass(std::uint32_t pass, std::uint32_t count) {
 }
 
 ShadeInputs WavefrontIntegrator::shade_inputs() const {
-  return {frame().params, frame().materials, frame().lights, queues_.rays, queues_.hits};
+  return {frame().params, frame().materials, frame().textures, frame().texels, frame().lights, queues_.rays, queues_.hits};
 }
 
 ShadeOutputs WavefrontIntegrator::shade_outputs() const {

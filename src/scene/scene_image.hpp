@@ -1,0 +1,23 @@
+// Images a scene names (an environment, a texture), read through the scene's FileSource.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <string>
+
+#include "image/image.hpp"
+#include "image/image_info.hpp"
+#include "scene/file_source.hpp"
+
+namespace clrt {
+
+// The image at `path`, its bytes taken from `files` as a mesh's are, so that an MPI rank gets
+// them from rank 0 rather than from a disk of its own. `check_header` sees what the header
+// declares before a pixel is decoded (and may throw to refuse it). Messages name `path`.
+AnyImage read_scene_image(const FileSource& files, const std::string& path, std::uint64_t max_bytes,
+                          const std::function<void(const ImageInfo&)>& check_header = {});
+
+// The linear value of an 8-bit sRGB code (PNG and PPM hold sRGB; the renderer wants linear).
+float srgb_to_linear(std::uint8_t code);
+
+}  // namespace clrt

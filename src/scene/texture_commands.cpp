@@ -1,0 +1,109 @@
+// texture SLOT ...: a copy of the current material with one of its terms textured
+// (docs/scene-format.md#textures).
+#include <filesystem>
+
+#include "scene/command_table.hpp"
+#include "scene/limits.hpp"
+#include "scene/texture_images.hpp"
+#include "shared/texture.h"
+
+namespace clrt {
+namespace {
+
+// The slot a SLOT word names, or -1.
+int texture_slot(const std::string& word) {
+  if (word == "color") return CLRT_TEXTURE_SLOT_COLOR;
+  if (word == "ks") return CLRT_TEXTURE_SLOT_KS;
+  if (word == "kr") return CLRT_TEXTURE_SLOT_KR;
+  if (word == "kt") return CLRT_TEXTURE_SLOT_KT;
+  return -1;
+}
+
+// The options from word `first` on: scale SU SV, offset OU OV, wrap repeat|clamp, octaves N
+// (noise only).
+void read_options(const CommandArgs& a, std::size_t first, TextureSpec& t) {
+  for (std::size_t i = first; i < a.count();) {
+    const std::string option = lower_case(a.word(i).text);
+    const auto needs = [&](std::size_t n) {
+      if (i + n >= a.count())
+        throw a.error_past_end("the texture option " + excerpt(a.word(i).text) + " takes " + std::to_string(n) +
+                               (n == 1 ? " word" : " numbers"));
+    };
+    if (option == "scale" || option == "offset") {
+      needs(2);
+      double* target = option == "scale" ? t.scale : t.offset;
+      for (std::size_t k = 0; k < 2; ++k) {
+        target[k] = a.number_in(i + 1 + k, -limits::kMaxNumber, limits::kMaxNumber, "the texture's " + option);
+        if (option == "scale" && target[k] == 0) throw a.error_at(i + 1 + k, "a texture's scale must not be 0");
+      }
+      i += 3;
+    } else if (option == "wrap") {
+      needs(1);
+      const std::string mode = lower_case(a.word(i + 1).text);
+      if (mode != "repeat" && mode != "clamp")
+        throw a.error_at(i + 1, "wrap takes repeat or clamp, found " + excerpt(a.word(i + 1).text));
+      t.clamp = mode == "clamp";
+      i += 2;
+    } else if (option == "octaves" && t.kind == TextureSpec::Kind::Noise) {
+      needs(1);
+      t.octaves = a.whole_number(i + 1, 1, 16, "the noise's octaves");
+      i += 2;
+    } else {
+      throw a.error_at(i, "unknown texture option " + excerpt(a.word(i).text) +
+                              (t.kind == TextureSpec::Kind::Noise ? " (scale, offset, octaves)"
+                               : t.kind == TextureSpec::Kind::Image ? " (scale, offset, wrap)"
+                                                                    : " (scale, offset)"));
+    }
+  }
+}
+
+Vec3 colour_at(const CommandArgs& a, std::size_t first) {
+  Vec3 c;
+  double* channel[3] = {&c.x, &c.y, &c.z};
+  for (std::size_t k = 0; k < 3; ++k) *channel[k] = a.number_in(first + k, 0, limits::kMaxNumber, "a texture colour");
+  return c;
+}
+
+void texture(LoaderState& s, const CommandArgs& a) {
+  if (a.count() < 2) a.require_count({2});
+  const int slot = texture_slot(lower_case(a.word(0).text));
+  if (slot < 0) throw a.error_at(0, "texture takes a term first: color, ks, kr or kt, found " + excerpt(a.word(0).text));
+  const std::string kind = lower_case(a.word(1).text);
+  MaterialSpec m = s.scene.materials.at(static_cast<std::size_t>(s.material));
+  if (kind == "off") {
+    a.require_count({2});
+    m.textures[static_cast<std::size_t>(slot)] = -1;
+  } else {
+    TextureSpec t;
+    std::size_t options = 0;
+    if (kind == "image") {
+      if (a.count() < 3) throw a.error_past_end("texture ... image needs a file name");
+      options = 3;
+    } else if (kind == "checker" || kind == "noise") {
+      t.kind = kind == "checker" ? TextureSpec::Kind::Checker : TextureSpec::Kind::Noise;
+      if (a.count() < 8) throw a.error_past_end("texture ... " + kind + " needs two colours, R G B R G B");
+      t.color0 = colour_at(a, 2);
+      t.color1 = colour_at(a, 5);
+      options = 8;
+    } else {
+      throw a.error_at(1, "unknown texture " + excerpt(a.word(1).text) + " (image, checker, noise, or off)");
+    }
+    read_options(a, options, t);
+    // The file is read last, once every word is known to be right.
+    if (kind == "image") {
+      const std::string path =
+          (std::filesystem::path(s.scene_folder) / a.word(2).text).lexically_normal().generic_string();
+      t.image = texture_image(s, path, a.error_at(2, "").where());
+    }
+    s.scene.textures.push_back(t);
+    m.textures[static_cast<std::size_t>(slot)] = static_cast<int>(s.scene.textures.size()) - 1;
+  }
+  s.scene.materials.push_back(m);
+  s.material = static_cast<int>(s.scene.materials.size()) - 1;
+}
+
+}  // namespace
+
+void add_texture_commands(CommandTable& table) { table["texture"] = texture; }
+
+}  // namespace clrt

@@ -1,0 +1,29 @@
+// The images textures show: read once per file, checked from their headers before anything is
+// decoded, and counted with the scene's memory.
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include "scene/loader_state.hpp"
+#include "scene/scene.hpp"
+#include "scene/source_location.hpp"
+
+namespace clrt {
+
+// The longest side a texture image may have, in texels.
+constexpr std::int64_t kMaxTextureSide = 16384;
+
+// The bytes of an image of width x height texels on the device, with its mip levels (each at
+// most a quarter of the one before): 4 per texel for 8-bit images, 12 for linear ones.
+std::uint64_t texture_device_bytes(std::int64_t width, std::int64_t height, bool linear);
+
+// The bytes `image` takes from its load to its render: its texels on the host and on the device.
+std::uint64_t texture_image_bytes(const TextureImage& image);
+
+// The index into s.scene.texture_images of the image at `path` (as resolved), read on its first
+// use. A file that cannot be read, is no image clrt reads, has a side beyond kMaxTextureSide, would
+// pass the memory left, or holds a value that is not finite and >= 0 is a SceneError at `where`.
+int texture_image(LoaderState& s, const std::string& path, const SourceLocation& where);
+
+}  // namespace clrt
