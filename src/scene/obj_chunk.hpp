@@ -1,6 +1,6 @@
 // One slice of an OBJ file's lines parsed on its own, so that the slices of a large file can be
-// parsed side by side: its vertices, texture coordinates, normals and triangle corners, or its first
-// malformed line.
+// parsed side by side: its vertices, texture coordinates, normals and triangle corners, or its
+// first malformed line.
 #pragma once
 
 #include <array>
@@ -35,10 +35,10 @@ constexpr std::int32_t kObjNoIndex = INT32_MIN;
 enum class ObjTable { Position, Texcoord, Normal };
 
 // Per triangle corner, an index from 0 into the whole file's positions (or texture coordinates,
-// or normals). A relative
-// index (negative in the file) counts back from the elements read so far, of which a slice knows
-// only its own: it is stored counted from the slice's first element (so it may be negative) and
-// listed in `relative`, for resolve_obj_indices (obj_index_check.hpp) to complete.
+// or normals). A relative index (negative in the file) counts back from the elements read so far,
+// of which a slice knows only its own: it is stored counted from the slice's first element (so it
+// may be negative) and listed in `relative`, for resolve_obj_indices (obj_index_check.hpp) to
+// complete.
 struct ObjCornerRefs {
   std::vector<std::int32_t> index;
   std::vector<std::uint32_t> relative;  // the entries of `index` that are counted from the slice

@@ -40,10 +40,48 @@ Json camera(const Scene& scene) {
           {"shutter", Json::array({scene.camera.shutter_open, scene.camera.shutter_close})}};
 }
 
+// Only the textured slots, so that a reader sees at a glance which terms vary over a surface.
+Json material_textures(const MaterialSpec& m) {
+  static const char* const slots[] = {"color", "ks", "kr", "kt"};
+  Json j = Json::object();
+  for (std::size_t slot = 0; slot < m.textures.size(); ++slot)
+    if (m.textures[slot] >= 0) j[slots[slot]] = m.textures[slot];
+  return j;
+}
+
 Json material(const MaterialSpec& m) {
   return {{"color", json_of(m.color)}, {"ka", m.ka}, {"kd", m.kd}, {"ks", m.ks},
           {"shininess", m.shininess}, {"kr", m.kr}, {"kt", m.kt}, {"ior", m.ior},
-          {"emission", json_of(m.emission)}};
+          {"emission", json_of(m.emission)}, {"textures", material_textures(m)}};
+}
+
+const char* texture_kind_name(TextureSpec::Kind kind) {
+  switch (kind) {
+    case TextureSpec::Kind::Image: return "image";
+    case TextureSpec::Kind::Checker: return "checker";
+    case TextureSpec::Kind::Noise: return "noise";
+  }
+  return "?";
+}
+
+// The image inline rather than as an index into a table of its own: a reader wants the file,
+// and clrt reads a file shown by several textures once anyway.
+Json texture(const Scene& scene, const TextureSpec& t) {
+  Json j = {{"kind", texture_kind_name(t.kind)}};
+  if (t.kind == TextureSpec::Kind::Image) {
+    const TextureImage& image = scene.texture_images[static_cast<std::size_t>(t.image)];
+    j["file"] = image.path;
+    j["width"] = image.width;
+    j["height"] = image.height;
+    j["linear"] = image.linear;
+    j["wrap"] = t.clamp ? "clamp" : "repeat";
+  } else {
+    j["colors"] = Json::array({json_of(t.color0), json_of(t.color1)});
+  }
+  if (t.kind == TextureSpec::Kind::Noise) j["octaves"] = t.octaves;
+  j["scale"] = Json::array({t.scale[0], t.scale[1]});
+  j["offset"] = Json::array({t.offset[0], t.offset[1]});
+  return j;
 }
 
 Json light(const LightSpec& l) {
@@ -66,8 +104,14 @@ Json object(const Scene& scene, const InstanceSpec& o) {
   return j;
 }
 
+Json uv_pair(float u, float v) { return Json::array({u, v}); }
+
 Json triangle(const TriangleSpec& t) {
-  return {{"corners", Json::array({json_of(t.v0), json_of(t.v1), json_of(t.v2)})}, {"material", t.material}};
+  Json j = {{"corners", Json::array({json_of(t.v0), json_of(t.v1), json_of(t.v2)})},
+            {"material", t.material}};
+  if (t.has_uv)
+    j["uv"] = Json::array({uv_pair(t.uv[0], t.uv[1]), uv_pair(t.uv[2], t.uv[3]), uv_pair(t.uv[4], t.uv[5])});
+  return j;
 }
 
 Json index_triple(const std::vector<std::uint32_t>& indices, std::size_t triangle) {
@@ -102,6 +146,15 @@ void write_mesh(const Writer& write, const MeshData& mesh) {
   write_array(write, mesh.normals.size(), vec_at(mesh.normals), ",");
   write(",\"triangle_normals\":");
   write_array(write, mesh.corner_normals.size() / 3, triples_of(mesh.corner_normals), ",");
+  write(",\"texcoords\":");
+  write_array(write, mesh.texcoords.size(), [&mesh](std::size_t i) {
+    return uv_pair(mesh.texcoords[i][0], mesh.texcoords[i][1]);
+  }, ",");
+  write(",\"triangle_texcoords\":");
+  write_array(write, mesh.corner_texcoords.size() / 3, [&mesh](std::size_t t) {
+    const bool none = mesh.corner_texcoords[3 * t] == kNoMeshTexcoord;
+    return none ? Json(nullptr) : index_triple(mesh.corner_texcoords, t);
+  }, ",");
   write(",\"triangle_materials\":");
   write_array(write, mesh.triangle_names.size(), [&mesh](std::size_t t) {
     const std::uint32_t name = mesh.triangle_names[t];
@@ -137,6 +190,8 @@ void write_scene_json(const Scene& scene, const Writer& write) {
   const std::string next = ",\n";
   write("\"materials\": ");
   write_array(write, scene.materials.size(), [&](std::size_t i) { return material(scene.materials[i]); }, next);
+  write(",\n\"textures\": ");
+  write_array(write, scene.textures.size(), [&](std::size_t i) { return texture(scene, scene.textures[i]); }, next);
   write(",\n\"lights\": ");
   write_array(write, scene.lights.size(), [&](std::size_t i) { return light(scene.lights[i]); }, next);
   write(",\n\"objects\": ");

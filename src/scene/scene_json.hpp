@@ -12,7 +12,8 @@
 namespace clrt {
 
 // The "version" of the document; it changes whenever a reader of the last one would misread it.
-constexpr int kSceneJsonVersion = 1;
+// 2 since textures: a reader of 1 would take a textured material for its plain colour.
+constexpr int kSceneJsonVersion = 2;
 
 // Writes `scene` as one JSON document, in pieces to `write`: an element of the objects', the
 // meshes' and the triangles' tables is converted only when it is written, so a scene of

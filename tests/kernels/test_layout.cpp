@@ -41,7 +41,11 @@ namespace {
   X(offsetof(RenderParams, environment)) X(offsetof(RenderParams, glossy))                     \
   X(offsetof(Light, data)) X(sizeof(BvhNode))                                                \
   X(offsetof(BvhNode, max_z))                                                                \
-  X(offsetof(BvhNode, child)) X(offsetof(BvhNode, count))
+  X(offsetof(BvhNode, child)) X(offsetof(BvhNode, count))                                    \
+  X(offsetof(Hit, u)) X(offsetof(Hit, uv_scale)) X(offsetof(Material, textures))             \
+  X(offsetof(Mesh, texcoords)) X(sizeof(TriangleTexcoords)) X(offsetof(RenderParams, cone_spread)) \
+  X(sizeof(Texture)) X(offsetof(Texture, color1)) X(offsetof(Texture, offset))               \
+  X(offsetof(Texture, kind)) X(offsetof(Texture, levels)) X(offsetof(Texture, octaves))
 
 #define AS_STRING(expr) #expr,
 #define AS_HOST_VALUE(expr) static_cast<unsigned>(expr),

@@ -9,6 +9,7 @@
 #include <set>
 #include <string>
 
+#include "png_header.hpp"
 #include "render_support.hpp"
 #include "scratch_dir.hpp"
 #include "skip_test.hpp"
@@ -124,4 +125,23 @@ TEST_CASE("a scene larger than the memory clrt may take stops loading early, at 
                            Catch::Contains(":1: error: loading stopped here: the scene needs ") &&
                            Catch::Contains(" MiB available (RLIMIT_AS, ulimit -v)"));
   CHECK(dir.entries() == std::set<std::string>{"big.ray"});
+}
+
+TEST_CASE("a texture image larger than the memory clrt may take is refused from its header, exit 2",
+          "[cli][limits][memory][texture]") {
+#if defined(__SANITIZE_ADDRESS__)
+  CLRT_SKIP_TEST("AddressSanitizer cannot run under ulimit -v");
+#endif
+  // 16384 x 16384 texels declared: 0.75 GiB decoded and 1.3 GiB with its mip levels on the
+  // device, past the 2 GiB address space the run is capped at; the file is a header alone.
+  ScratchDir dir;
+  dir.write("big.png", png_header(16384, 16384));
+  const std::string path = dir.write("big.ray", "resolution 8 8\nsphere\ntexture color image big.png\n");
+  const std::string clrt = std::string("\"") + CLRT_EXE + "\" -q -o \"" + dir.file("out.png") + "\" \"" + path + "\"";
+  const CommandResult r = run_program("sh", "-c " + quoted("ulimit -v 2097152 && exec " + clrt));
+  INFO(r.output);
+  CHECK(r.exit_code == 2);
+  CHECK_THAT(r.output, Catch::Contains(path + ":3:21: error: cannot use the texture image") &&
+                           Catch::Contains(" MiB available (RLIMIT_AS, ulimit -v)"));
+  CHECK(dir.entries() == std::set<std::string>{"big.png", "big.ray"});
 }

@@ -82,9 +82,11 @@ TEST_CASE("triangle vertices are transformed to world space by M", "[scene][obje
   CHECK(s.triangles[0].material == 1);
 }
 
-TEST_CASE("triangle takes 9 numbers", "[scene][objects][errors]") {
-  require_error("triangle 0 0 0 1 0 0 0 1\n", 1, 25, "triangle takes 9 arguments, found 8");
-  require_error("triangle 0 0 0 1 0 0 0 1 0 7\n", 1, 28, "found 10");
+TEST_CASE("triangle takes 9 numbers, or 15 with (u, v) at each corner", "[scene][objects][errors]") {
+  require_error("triangle 0 0 0 1 0 0 0 1\n", 1, 25, "triangle takes 9 or 15 arguments, found 8");
+  // Between the two counts: just past the last word, as for every command of several counts.
+  require_error("triangle 0 0 0 1 0 0 0 1 0 7\n", 1, 29, "found 10");
+  require_error("triangle 0 0 0 0 0 1 0 0 1 0 0 1 0 0 1 9\n", 1, 40, "found 16");
   require_error("triangle 0 0 0 1 0 0 0 y 0\n", 1, 24, "expected a number");
 }
 

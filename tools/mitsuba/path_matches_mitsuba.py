@@ -36,10 +36,11 @@ def reference(python, scene, args, mitsuba_version):
     if dump.returncode != 0:
         raise RuntimeError(f"clrt cannot read {scene}: {dump.stdout.strip()}")
     key.update(dump.stdout.encode())
-    # The environment's image is named by the dump, not held in it.
-    environment = json.loads(dump.stdout).get("environment")
-    if environment:
-        with open(environment["file"], "rb") as f:
+    # The images of the environment and of textures are named by the dump, not held in it.
+    scene_read = json.loads(dump.stdout)
+    images = [scene_read["environment"]] if scene_read["environment"] else []
+    for image in images + [t for t in scene_read["textures"] if "file" in t]:
+        with open(image["file"], "rb") as f:
             key.update(f.read())
     code = [os.path.join(HERE, f"{name}.py") for name in ("ray_to_mitsuba", "lobes", "render_reference", "estimates")]
     for path in code:

@@ -29,7 +29,7 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 DEFAULT_CLRT = pathlib.Path(__file__).resolve().parents[2] / "build" / "clrt"
 
 # The version of clrt's scene dump this converter reads.
-SCENE_JSON_VERSION = 1
+SCENE_JSON_VERSION = 2
 
 # clrt's `maxdepth` counts bounces after the camera ray and still takes next-event estimation
 # at the last vertex, so a path of D bounces carries light over D + 2 segments (camera to the
@@ -49,6 +49,9 @@ PLANE_EXTENT = 1e3
 # the face turned towards it first and a shadow ray to one face is never blocked by the other.
 AREA_FACE_GAP = 1e-5
 
+# The (u, v) of a triangle's corners where the scene gives none (docs/scene-format.md).
+DEFAULT_UV = ((0.0, 0.0), (1.0, 0.0), (0.0, 1.0))
+
 
 class SceneError(Exception):
     pass
@@ -57,8 +60,10 @@ class SceneError(Exception):
 class Material:
     """A `.ray` material as the lobe weights of docs/path-tracing.md."""
 
-    def __init__(self, color, kd, ks, n, kr, kt, ior, emission=(0, 0, 0)):
+    def __init__(self, color, kd, ks, n, kr, kt, ior, emission=(0, 0, 0), textures=None):
         self.emission = np.asarray(emission, dtype=float)
+        # Per textured term ("color", "ks", "kr", "kt"): the dumped texture that multiplies it.
+        self.textures = textures or {}
         local = max(0.0, 1.0 - kr - kt)
         diffuse = local * kd * np.asarray(color, dtype=float)
         glossy, mirror, glass = local * ks, kr, kt
@@ -80,12 +85,32 @@ def one_sided(bsdf):
     return {"type": "twosided", "bsdf": bsdf}
 
 
+def bitmap(texture):
+    """Mitsuba's `bitmap` for a clrt image texture: the same file, decoded by Mitsuba (sRGB to
+    linear for an 8-bit image, raw=False) into single precision ("variant"; its default keeps
+    8-bit images in half precision), interpolated bilinearly without mip levels, wrapped alike.
+    clrt's (s, t) = (u su + ou, v sv + ov) has t = 0 at the image's bottom row, Mitsuba's v = 0
+    its top row (measured), so to_uv also turns t into 1 - t."""
+    import mitsuba as mi
+    (su, sv), (ou, ov) = texture["scale"], texture["offset"]
+    to_uv = mi.ScalarTransform3f([[su, 0.0, ou], [0.0, -sv, 1.0 - ov], [0.0, 0.0, 1.0]])
+    return {"type": "bitmap", "filename": texture["file"], "filter_type": "bilinear",
+            "wrap_mode": texture["wrap"], "raw": False, "format": "variant", "to_uv": to_uv}
+
+
+def reflectance(material):
+    """The Lambertian lobe's reflectance: check_texture lets a textured colour through only
+    where the lobe's weight is 1, the texel itself."""
+    texture = material.textures.get("color")
+    return bitmap(texture) if texture else rgb(material.diffuse)
+
+
 def mitsuba_bsdf(material):
     """The sum of the material's lobes, each with its own weight (lobes.py's clrt_lobes)."""
     lobes = []
     if material.diffuse.max() > 0:
         lobes.append((material.diffuse.mean(),
-                      one_sided({"type": "diffuse", "reflectance": rgb(material.diffuse)})))
+                      one_sided({"type": "diffuse", "reflectance": reflectance(material)})))
     if material.glossy > 0:
         lobes.append((material.glossy,
                       one_sided({"type": "clrt_phong", "weight": material.glossy,
@@ -146,8 +171,11 @@ class DumpedScene:
         self.environment = dump.get("environment")
         # One object per material, so that triangles group by the material they were given.
         self.all_materials = [Material(m["color"], m["kd"], m["ks"], m["shininess"], m["kr"], m["kt"], m["ior"],
-                                       m["emission"]) for m in dump["materials"]]
+                                       m["emission"], {slot: dump["textures"][i] for slot, i in m["textures"].items()})
+                              for m in dump["materials"]]
         self.spheres, self.triangles, self.lights, self.planes, self.cubes = [], [], [], [], []
+        # The (u, v) of each triangle's corners, beside `triangles` (which subclasses extend).
+        self.triangle_uvs = []
         self.cylinders = []
         self.meshes = dump["meshes"]
         for placed in dump["objects"]:
@@ -161,7 +189,8 @@ class DumpedScene:
         # Loose triangles and lights have no place in the dump: their errors name the file.
         try:
             for triangle in dump["triangles"]:
-                self.add_triangle(self.all_materials[triangle["material"]], np.array(triangle["corners"], dtype=float))
+                self.place_triangle(self.all_materials[triangle["material"]], np.array(triangle["corners"], dtype=float),
+                                    np.array(triangle.get("uv", DEFAULT_UV), dtype=float))
             for light in dump["lights"]:
                 self.add_light(light)
         except SceneError as e:
@@ -169,6 +198,9 @@ class DumpedScene:
 
     def add_object(self, placed, material, placement):
         shape = placed["shape"]
+        if shape != "mesh" and material.textures:
+            raise SceneError(f"a textured `{shape}`: its (u, v) are not Mitsuba's, so the comparison textures "
+                             "triangles and meshes only")
         if shape == "sphere":
             self.add_sphere(material, placement)
         elif shape == "plane":
@@ -190,10 +222,15 @@ class DumpedScene:
                 check_front(m, placement)
             corners = np.array(mesh["positions"], dtype=float)[np.array(mesh["triangles"])]
             world = corners @ placement[:3, :3].T + placement[:3, 3]
-            for triangle_material, triangle in zip(materials, world):
-                self.add_triangle(triangle_material, triangle)
+            for triangle_material, triangle, uv in zip(materials, world, mesh_uvs(mesh)):
+                self.place_triangle(triangle_material, triangle, uv)
         else:
             raise SceneError(f"`{shape}` has no Mitsuba shape, so the Mitsuba comparison does not read it")
+
+    def place_triangle(self, material, corners, uv):
+        check_texture(material)
+        self.add_triangle(material, corners)
+        self.triangle_uvs.append(uv)
 
     def add_triangle(self, material, corners):
         self.triangles.append((material, corners))
@@ -312,6 +349,43 @@ def check_front(material, placement):
     # mesh's front from its winding in world space, which the mirror turns inside out.
     if (material.glass > 0 or material.emission.max() > 0) and np.linalg.det(placement[:3, :3]) < 0:
         raise SceneError("a glass or glowing cube or mesh under a mirroring transform is inside out in Mitsuba")
+
+
+def mesh_uvs(mesh):
+    """Per triangle of a dumped mesh, the (u, v) of its corners: the file's `vt`, or clrt's
+    default where a triangle names none."""
+    texcoords = np.array(mesh["texcoords"], dtype=float).reshape(-1, 2)
+    named = mesh["triangle_texcoords"] or [None] * len(mesh["triangles"])
+    return [np.array(DEFAULT_UV) if corners is None else texcoords[corners] for corners in named]
+
+
+def check_texture(material):
+    """Refuses the textures the comparison does not carry over: it needs one case, an image on
+    the colour of a white Lambertian material (Mitsuba's bitmap cannot be scaled by a weight)."""
+    if set(material.textures) - {"color"}:
+        raise SceneError("textures of ks, kr or kt are not carried over to Mitsuba")
+    texture = material.textures.get("color")
+    if texture is None:
+        return
+    if texture["kind"] != "image":
+        raise SceneError(f"`{texture['kind']}` textures have no Mitsuba counterpart; the comparison reads images")
+    if material.diffuse.tolist() != [1.0, 1.0, 1.0] or max(material.glossy, material.mirror, material.glass) > 0:
+        raise SceneError("a textured colour is compared on a white Lambertian material only (colour 1 1 1, "
+                         "kd 1, no ks, kr or kt; in an MTL, Kd 1 1 1 and illum 1): Mitsuba's bitmap takes no weight")
+    check_image(texture)
+
+
+def check_image(texture):
+    """Refuses an image that Mitsuba would not read as clrt does: clrt reads PNG and PPM as 8-bit
+    sRGB (a 16-bit one too, Mitsuba all 16 bits); a linear texel above 1 makes clrt scale the
+    lobe down, as for any weight above 1, where Mitsuba's `diffuse` reflects more than it gets."""
+    import mitsuba as mi
+    image = mi.Bitmap(texture["file"])
+    if texture["linear"]:
+        if np.array(image).max() > 1:
+            raise SceneError(f"{texture['file']}: a texel above 1 (clrt scales such a lobe down, Mitsuba does not)")
+    elif image.component_format() != mi.Struct.Type.UInt8 or not image.srgb_gamma():
+        raise SceneError(f"{texture['file']}: not 8-bit sRGB to Mitsuba, which would decode it otherwise than clrt")
 
 
 def dump_scene(clrt, path):
@@ -448,16 +522,19 @@ def environment_emitter(env):
             "to_world": transform(rotation)}
 
 
-def triangle_mesh(material, corners):
+def triangle_mesh(material, corners, uvs):
     import mitsuba as mi
     # A mesh made here takes its emitter from its properties (it has no set_emitter).
     props = mi.Properties()
     if material.emission.max() > 0:
         props["emitter"] = mi.load_dict(glowing({}, material)["emitter"])
+    textured = bool(material.textures)
     mesh = mi.Mesh("triangles", 3 * len(corners), len(corners), props=props,
-                   has_vertex_normals=False, has_vertex_texcoords=False)
+                   has_vertex_normals=False, has_vertex_texcoords=textured)
     params = mi.traverse(mesh)
     params["vertex_positions"] = np.concatenate(corners).ravel().tolist()
+    if textured:
+        params["vertex_texcoords"] = np.concatenate(uvs).ravel().tolist()
     params["faces"] = list(range(3 * len(corners)))
     params.update()
     mesh.set_bsdf(mi.load_dict(mitsuba_bsdf(material)))
@@ -512,10 +589,12 @@ def to_mitsuba(scene, spp=None, resolution=None, seed=0):
         for j, shape in enumerate(cylinder_shapes(material, ends)):
             d[f"cylinder_{i}_{j}"] = shape
     groups = {}
-    for material, corners in scene.triangles:
-        groups.setdefault(id(material), (material, []))[1].append(corners)
-    for i, (material, corners) in enumerate(groups.values()):
-        d[f"triangles_{i}"] = triangle_mesh(material, corners)
+    for (material, corners), uv in zip(scene.triangles, scene.triangle_uvs):
+        _, group_corners, group_uvs = groups.setdefault(id(material), (material, [], []))
+        group_corners.append(corners)
+        group_uvs.append(uv)
+    for i, (material, corners, uvs) in enumerate(groups.values()):
+        d[f"triangles_{i}"] = triangle_mesh(material, corners, uvs)
     for i, (kind, color, v) in enumerate(scene.lights):
         if kind == "point":
             d[f"light_{i}"] = {"type": "point", "position": v[:3].tolist(), "intensity": rgb(color)}
