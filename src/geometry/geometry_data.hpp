@@ -53,9 +53,9 @@ GeometryData build_geometry(const Scene& scene);
 // mesh with normals the build's peak is 24 MB lower and the render's 4 MB.
 GeometryData build_geometry_for_render(Scene& scene);
 
-// Frees the positions, normals and corners of `scene`'s meshes (each keeps its path): once
-// build_geometry has run, its BVH table and per-triangle tables hold all the device needs, and
-// nothing reads the meshes again.
+// Frees the positions, normals, texture coordinates and corners of `scene`'s meshes (each keeps
+// its path): once build_geometry has run, its BVH table and per-triangle tables hold all the
+// device needs, and nothing reads the meshes again.
 void release_mesh_data(Scene& scene);
 
 }  // namespace clrt

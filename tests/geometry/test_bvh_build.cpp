@@ -192,8 +192,9 @@ TEST_CASE("geometry tables: planes first, one mesh per model, loose triangles la
   }
   CHECK(sources.size() == scene.triangles.size());
   // Per triangle the device holds its normals (36 bytes), and a loose one its material (4); no
-  // triangle table: the BVH's leaf packets carry the vertices.
-  CHECK(g.device_bytes() == g.instances.size() * 128 + g.meshes.size() * 16 + g.triangle_count() * 36 +
+  // triangle table: the BVH's leaf packets carry the vertices. No triangle has (u, v) of its own.
+  CHECK(g.triangle_texcoords.empty());
+  CHECK(g.device_bytes() == g.instances.size() * 128 + g.meshes.size() * 32 + g.triangle_count() * 36 +
                                 30 * 4 + g.nodes.size() * sizeof(dev::BvhNode));
 }
 
@@ -514,6 +515,57 @@ TEST_CASE("once the geometry is built the meshes' data can be freed", "[bvh]") {
   CHECK(m.corners.capacity() == 0);
   CHECK(m.corner_normals.capacity() == 0);
   CHECK(before.triangle_count() == 6 * 8 * 2);
+}
+
+TEST_CASE("texture coordinate rows follow each mesh's leaf order, only for meshes that have them", "[bvh]") {
+  Scene scene;
+  scene.meshes.push_back(ball_mesh(6, 8, false));  // (u, v) per corner from its position
+  scene.meshes.push_back(ball_mesh(5, 7, false));  // none
+  MeshData& textured = scene.meshes[0];
+  for (const Vec3& p : textured.positions) textured.texcoords.push_back({static_cast<float>(p.x), static_cast<float>(p.y)});
+  textured.corner_texcoords = textured.corners;
+  for (std::size_t c = 0; c < 3; ++c) textured.corner_texcoords[c] = kNoMeshTexcoord;  // triangle 0 has none
+  for (int m = 0; m < 2; ++m) {
+    scene.instances.push_back(place_instance(ShapeKind::Mesh, Mat4::translate({3.0 * m, 0, 0})));
+    scene.instances.back().mesh = m;
+  }
+  TriangleSpec loose{{0, 0, 5}, {1, 0, 5}, {0, 1, 5}, 0};
+  scene.triangles.push_back(loose);
+  loose.uv = {0.5f, 0.25f, 2, 3, -1, 4};
+  loose.has_uv = true;
+  scene.triangles.push_back(loose);
+  const GeometryData g = build_geometry(scene);
+  REQUIRE(g.meshes.size() == 3);
+  CHECK(g.meshes[1].texcoords == CLRT_NO_TEXCOORDS);
+  const std::size_t balls = textured.corners.size() / 3;
+  CHECK(g.meshes[0].texcoords == 0);
+  CHECK(g.meshes[2].texcoords == balls);
+  REQUIRE(g.triangle_texcoords.size() == balls + 2);
+  for (std::size_t m : {std::size_t{0}, std::size_t{2}})
+    for (std::uint32_t i = 0; i < g.meshes[m].triangle_count; ++i) {
+      const std::uint32_t t = g.triangle_source[g.meshes[m].first_triangle + i];
+      const dev::TriangleTexcoords& row = g.triangle_texcoords[g.meshes[m].texcoords + i];
+      for (int k = 0; k < 3; ++k) {
+        INFO("mesh " << m << ", triangle " << t << ", corner " << k);
+        float u = k == 1 ? 1.0f : 0.0f, v = k == 2 ? 1.0f : 0.0f;  // the default
+        if (m == 0 && t != 0) {
+          const Vec3& p = textured.positions[textured.corners[3 * t + static_cast<std::size_t>(k)]];
+          u = static_cast<float>(p.x);
+          v = static_cast<float>(p.y);
+        } else if (m == 2 && scene.triangles[t].has_uv) {
+          u = scene.triangles[t].uv[static_cast<std::size_t>(2 * k)];
+          v = scene.triangles[t].uv[static_cast<std::size_t>(2 * k + 1)];
+        }
+        CHECK(row.uv[2 * k] == u);
+        CHECK(row.uv[2 * k + 1] == v);
+      }
+    }
+  // A build for a render makes the same rows and frees the mesh's coordinates.
+  const GeometryData freed = build_geometry_for_render(scene);
+  CHECK(std::memcmp(freed.triangle_texcoords.data(), g.triangle_texcoords.data(),
+                    sizeof(dev::TriangleTexcoords) * g.triangle_texcoords.size()) == 0);
+  CHECK(scene.meshes[0].texcoords.capacity() == 0);
+  CHECK(scene.meshes[0].corner_texcoords.capacity() == 0);
 }
 
 TEST_CASE("a build for a render frees the meshes as it goes and makes the same tables", "[bvh]") {
