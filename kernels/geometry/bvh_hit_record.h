@@ -100,9 +100,9 @@ CLRT_INLINE void hit_record_resolve(const HitRecord* r, float3 o, float3 d, floa
   }
   hit->geometric_normal = (float4)(geometric, r->t);
   hit->shading_normal = (float4)(shading, 0.0f);
-  hit->u = coords.u;
-  hit->v = coords.v;
-  hit->uv_scale = coords.area > 0.0f && dot3(object_normal, object_normal) > 0.0f
+  hit->u = CLRT_SCENE_TEXTURED ? coords.u : 0.0f;
+  hit->v = CLRT_SCENE_TEXTURED ? coords.v : 0.0f;
+  hit->uv_scale = CLRT_SCENE_TEXTURED && coords.area > 0.0f && dot3(object_normal, object_normal) > 0.0f
                       ? world_uv_scale(&frame, coords.area, normalize3(object_normal)) : 0.0f;
   hit->pad = 0.0f;
 }

@@ -35,7 +35,7 @@ typedef struct ShadePoint {
 CLRT_INLINE ShadePoint shade_point(const Ray* ray, const Hit* hit, __global const Material* materials,
                                    TEXTURE_PARAMS, __global const RenderParams* params) {
   ShadePoint s;
-  s.cone_width = cone_width_at_hit(ray, hit, params->cone_spread);
+  s.cone_width = CLRT_SCENE_TEXTURED ? cone_width_at_hit(ray, hit, params->cone_spread) : 0.0f;
   s.material = surface_material(materials, TEXTURE_ARGS, ray, hit, s.cone_width);
   const float3 d = vload3(0, ray->dir);
   s.p = vload3(0, ray->origin) + hit->geometric_normal.w * d;

@@ -8,6 +8,15 @@
 
 CLRT_SHARED_BEGIN
 
+/* A program built for a scene without textures (-DCLRT_UNTEXTURED, which the host adds when no
+ * material has one) computes no texture coordinates at hits and no ray cones, so the compiler
+ * drops that code and such scenes run what they ran before textures existed. */
+#ifdef CLRT_UNTEXTURED
+#define CLRT_SCENE_TEXTURED 0
+#else
+#define CLRT_SCENE_TEXTURED 1
+#endif
+
 /* Material.textures: no texture in that slot. */
 #define CLRT_NO_TEXTURE 0xffffffffu
 

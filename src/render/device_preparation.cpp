@@ -10,7 +10,7 @@ std::vector<PreparedDevice> prepare_devices(const std::vector<DeviceEntry>& devi
   for (const DeviceEntry& entry : devices) {
     PreparedDevice d;
     d.context = std::make_unique<DeviceContext>(entry);
-    d.program = build_renderer_program(*d.context, mode, d.motion, compiling);
+    d.program = build_renderer_program(*d.context, mode, d.features, compiling);
     d.mode = mode;
     prepared.push_back(std::move(d));
   }

@@ -1,8 +1,8 @@
 // A device with its context and the renderer's program, made before the scene is known, so
 // OpenCL's start (the ICD loader opening PoCL: about 25 ms) and the build (about 30 ms from a
 // warm kernel cache) can run while the scene loads. The program depends on the scene only
-// through whether anything in it moves; it is prepared for a still scene, the common case, and a
-// scene with motion has its own built once it is known (Renderer).
+// through its SceneFeatures; it is prepared for a still scene without textures, the common case,
+// and another scene has its own built once it is known (Renderer).
 #pragma once
 
 #include <memory>
@@ -19,7 +19,7 @@ struct PreparedDevice {
   std::unique_ptr<DeviceContext> context;
   compute::program program;
   RenderMode mode = RenderMode::Trace;        // the transport model the program holds
-  SceneMotion motion = SceneMotion::Still;    // and whether it places moving objects
+  SceneFeatures features;                     // and what of the scene it holds code for: none
 };
 
 // The program for the render's mode (a command-line choice, known before the scene). Throws

@@ -204,7 +204,7 @@ Renderer::Renderer(const Scene& scene, GeometryData geometry, const RenderSetup&
   setup_stats_.geometry_bytes = tables->device_bytes();
   setup_stats_.bvh_bytes = tables->nodes.size() * sizeof(dev::BvhNode);
   const FrameData frame = make_frame(scene, *tables, options_);
-  const SceneMotion motion = tables->motions.empty() ? SceneMotion::Still : SceneMotion::Moving;
+  const SceneFeatures features{!tables->motions.empty(), !frame.textures->records.empty()};
 
   if (progress) progress->phase("building the kernels");
   const auto start = Clock::now();
@@ -215,12 +215,12 @@ Renderer::Renderer(const Scene& scene, GeometryData geometry, const RenderSetup&
     if (i < prepared.size()) {
       w.context = std::move(prepared[i].context);
       // A program prepared for another mode holds another transport model.
-      w.program = prepared[i].mode == options_.mode && prepared[i].motion == motion
+      w.program = prepared[i].mode == options_.mode && prepared[i].features == features
                       ? prepared[i].program
-                      : build_renderer_program(*w.context, options_.mode, motion);
+                      : build_renderer_program(*w.context, options_.mode, features);
     } else {
       w.context = std::make_unique<DeviceContext>(entry);
-      w.program = build_renderer_program(*w.context, options_.mode, motion);
+      w.program = build_renderer_program(*w.context, options_.mode, features);
     }
     w.frame = std::make_unique<DeviceFrame>(*w.context, frame, tables);
     w.timeline = std::make_unique<BusyTimeline>();

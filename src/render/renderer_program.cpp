@@ -9,10 +9,11 @@
 namespace clrt {
 
 compute::program build_renderer_program(const DeviceContext& device, RenderMode mode,
-                                        SceneMotion motion, const CompileNotice& compiling) {
+                                        SceneFeatures features, const CompileNotice& compiling) {
   const std::string options = integrator_program_options(classify(device.device())) +
                               " -DCLRT_TRANSPORT=" + std::to_string(device_mode(mode)) +
-                              (motion == SceneMotion::Still ? " -DCLRT_STILL_SCENE" : "");
+                              (features.moving ? "" : " -DCLRT_STILL_SCENE") +
+                              (features.textured ? "" : " -DCLRT_UNTEXTURED");
   return device.build(renderer_program_source(), options, compiling);
 }
 

@@ -76,7 +76,7 @@ TEST_CASE("a program prepared for still scenes is replaced for a scene with moti
   setup.devices = select_devices(test_device_spec());
   const std::vector<PreparedDevice> prepared = prepare_devices(setup.devices, setup.options.mode);
   REQUIRE(prepared.size() == 1);
-  REQUIRE(prepared.front().motion == SceneMotion::Still);
+  REQUIRE(prepared.front().features == SceneFeatures{});
   Renderer own_program(scene, build_geometry(scene), setup);
   const FloatImage expected = std::get<FloatImage>(own_program.render(render_region(setup.options), false));
   CHECK(same_bits(render_on(scene, setup, prepared.front()), expected));
@@ -86,4 +86,29 @@ TEST_CASE("a program prepared for still scenes is replaced for a scene with moti
   first_pose.end_transforms.clear();
   for (InstanceSpec& instance : first_pose.instances) instance.motion = -1;
   CHECK_FALSE(same_bits(render_on(first_pose, setup, prepared.front()), expected));
+}
+
+// Likewise a scene with textures must get the program that reads them: the prepared program
+// (for scenes without textures) would render every material plain.
+TEST_CASE("a program prepared for scenes without textures is replaced for a textured scene",
+          "[render][repeated][texture]") {
+  const Scene scene = load_scene(std::string(CLRT_SOURCE_DIR) + "/scenes/textures.ray");
+  RenderSetup setup;
+  setup.options = RenderOptions::from_scene(scene);
+  setup.options.width = 48;
+  setup.options.height = 30;
+  setup.options.mode = RenderMode::Trace;
+  setup.devices = select_devices(test_device_spec());
+  const std::vector<PreparedDevice> prepared = prepare_devices(setup.devices, setup.options.mode);
+  REQUIRE(prepared.size() == 1);
+  REQUIRE(prepared.front().features == SceneFeatures{});
+  Renderer own_program(scene, build_geometry(scene), setup);
+  const FloatImage expected = std::get<FloatImage>(own_program.render(render_region(setup.options), false));
+  CHECK(same_bits(render_on(scene, setup, prepared.front()), expected));
+
+  // Without its textures the scene is another image.
+  Scene plain = scene;
+  for (MaterialSpec& m : plain.materials) m.textures = {-1, -1, -1, -1};
+  plain.textures.clear();
+  CHECK_FALSE(same_bits(render_on(plain, setup, prepared.front()), expected));
 }

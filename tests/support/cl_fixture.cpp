@@ -38,7 +38,7 @@ compute::program& test_program(const std::string& text) {
 compute::program& renderer_program(RenderMode mode) {
   static std::map<RenderMode, compute::program>& programs = *new std::map<RenderMode, compute::program>;
   auto it = programs.find(mode);
-  if (it == programs.end()) it = programs.emplace(mode, build_renderer_program(device(), mode, SceneMotion::Moving)).first;
+  if (it == programs.end()) it = programs.emplace(mode, build_renderer_program(device(), mode, SceneFeatures{true, true})).first;
   return it->second;
 }
 

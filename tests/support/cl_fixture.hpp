@@ -25,7 +25,7 @@ std::string test_device_spec();
 compute::program& test_program(const std::string& text);
 
 // The renderer's own program (every kernels/*.cl stage) for a mode's transport model, built once
-// per binary and mode, with the motion code (it serves moving and still inputs alike).
+// per binary and mode, with the motion and texture code (it serves every input alike).
 compute::program& renderer_program(RenderMode mode = RenderMode::Trace);
 
 template <class T>

@@ -28,6 +28,20 @@ std::string lobe_letters(unsigned lobes);
 // std::runtime_error when a file cannot be written.
 std::vector<std::string> write_knob_scenes(const std::string& folder, double scale);
 
+// The texture knob: the same spheres, every one with the Lambertian and Phong lobes, their
+// materials told apart by textures of rising cost (docs/experiments.md).
+struct TextureKnobEntry {
+  std::string name;      // plain, checker, ..., as in texture-knob-only-NAME.ray
+  std::string commands;  // the `texture` lines after the material, or none
+};
+const std::vector<TextureKnobEntry>& texture_knob_order();
+
+// Writes the images the textures show (knob-64.png, knob-1024.png, knob-1024.pfm,
+// knob-2048.png), texture-knob-1.ray ... texture-knob-8.ray (scene k: the first k entries of
+// texture_knob_order(), in equal shares) and texture-knob-only-NAME.ray (every sphere one entry).
+// Returns the paths written; throws when a file cannot be written.
+std::vector<std::string> write_texture_knob_scenes(const std::string& folder, double scale);
+
 // The number of spheres a scale gives: the side of a square grid, squared.
 int knob_grid_side(double scale);
 

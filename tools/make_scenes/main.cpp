@@ -1,5 +1,5 @@
-// clrt-make-scenes OUTDIR [--scale S] [--family large|knob]: writes the large benchmark scenes or
-// the material knob (README.md).
+// clrt-make-scenes OUTDIR [--scale S] [--family large|knob|texture-knob]: writes the large
+// benchmark scenes, the material knob or the texture knob (README.md).
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <exception>
@@ -23,13 +23,15 @@ int main(int argc, char** argv) {
       ->check(clrt::positive_decimal_number())
       ->capture_default_str();
   app.add_option("--family", family,
-                 "large: the large scenes; knob: 1 to 16 materials of rising shading cost")
-      ->check(CLI::IsMember({"large", "knob"}))
+                 "large: the large scenes; knob: 1 to 16 materials of rising shading cost; "
+                 "texture-knob: 1 to 8 materials of rising texture cost")
+      ->check(CLI::IsMember({"large", "knob", "texture-knob"}))
       ->capture_default_str();
   if (const auto status = clrt::parse_tool_arguments(app, argc, argv)) return *status;
   try {
-    const auto paths = family == "knob" ? clrt::scenes::write_knob_scenes(folder, scale)
-                                        : clrt::scenes::write_large_scenes(folder, scale);
+    const auto paths = family == "knob"           ? clrt::scenes::write_knob_scenes(folder, scale)
+                       : family == "texture-knob" ? clrt::scenes::write_texture_knob_scenes(folder, scale)
+                                                  : clrt::scenes::write_large_scenes(folder, scale);
     for (const std::string& path : paths)
       std::printf("%s\n", path.c_str());
   } catch (const std::exception& e) {

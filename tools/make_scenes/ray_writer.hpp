@@ -41,6 +41,8 @@ class RayWriter {
   void sphere(const Vec3& centre, double radius);
   // `mesh` is the model's file name, relative to the scene's folder.
   void mesh_instance(const std::string& mesh, const Placement& placement);
+  // Any other command lines, as written (no line end needed).
+  void line(const std::string& text) { out_.print("%s\n", text.c_str()); }
   void close() { out_.close(); }
 
  private:

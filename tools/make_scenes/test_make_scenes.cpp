@@ -195,3 +195,54 @@ TEST_CASE("knob scene k spreads the k cheapest lobe subsets in equal shares over
       if (i.shape == clrt::ShapeKind::Sphere) CHECK(lobes_of(scene.materials.at(i.material)) == lobes);
   }
 }
+
+TEST_CASE("texture knob scene k spreads the first k textured materials in equal shares over one grid") {
+  const fs::path folder = fs::path(CLRT_BINARY_DIR) / "make-scenes-test" / "texture-knob";
+  fs::remove_all(folder);
+  const std::vector<clrt::scenes::TextureKnobEntry>& order = clrt::scenes::texture_knob_order();
+  REQUIRE(order.size() == 8);
+  const std::vector<std::string> files = clrt::scenes::write_texture_knob_scenes(folder.string(), 0.05);
+  CHECK(files.size() == 4 + 2 * order.size());  // the images, then the scenes
+  const std::vector<clrt::Vec3> grid = sphere_centres(load(folder, "texture-knob-1.ray"));
+  REQUIRE(grid.size() == 36);
+  // A material's textures as the kinds and image sizes they show, which tell the entries apart.
+  const auto signature = [](const clrt::Scene& scene, const clrt::MaterialSpec& m) {
+    std::string s;
+    for (int t : m.textures) {
+      if (t < 0) continue;
+      const clrt::TextureSpec& spec = scene.textures.at(static_cast<std::size_t>(t));
+      s += std::to_string(static_cast<int>(spec.kind)) + "/" + std::to_string(spec.octaves);
+      if (spec.image >= 0) {
+        const clrt::TextureImage& image = scene.texture_images.at(static_cast<std::size_t>(spec.image));
+        s += "/" + std::to_string(image.width) + (image.linear ? "f" : "b");
+      }
+      s += ";";
+    }
+    return s;
+  };
+  std::vector<std::string> signatures;
+  for (const clrt::scenes::TextureKnobEntry& e : order) {
+    const clrt::Scene only = load(folder, "texture-knob-only-" + e.name + ".ray");
+    CHECK(sphere_centres(only) == grid);
+    std::set<std::string> seen;
+    for (const clrt::InstanceSpec& i : only.instances)
+      if (i.shape == clrt::ShapeKind::Sphere) seen.insert(signature(only, only.materials.at(i.material)));
+    REQUIRE(seen.size() == 1);
+    signatures.push_back(*seen.begin());
+  }
+  CHECK(std::set<std::string>(signatures.begin(), signatures.end()).size() == order.size());
+  CHECK(signatures.front().empty());  // the plain material
+  for (std::size_t k = 1; k <= order.size(); ++k) {
+    INFO("texture-knob-" << k);
+    const clrt::Scene scene = load(folder, "texture-knob-" + std::to_string(k) + ".ray");
+    CHECK(sphere_centres(scene) == grid);
+    std::map<std::string, int> spheres_of;
+    for (const clrt::InstanceSpec& i : scene.instances)
+      if (i.shape == clrt::ShapeKind::Sphere) ++spheres_of[signature(scene, scene.materials.at(i.material))];
+    CHECK(spheres_of.size() == k);
+    for (std::size_t m = 0; m < k; ++m) {
+      CHECK(spheres_of[signatures[m]] >= static_cast<int>(36 / k));
+      CHECK(spheres_of[signatures[m]] <= static_cast<int>((36 + k - 1) / k));
+    }
+  }
+}

@@ -46,7 +46,7 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "clrt on %s; Embree %s, %d threads, build quality %s, scene flags %s\n",
                  device.name().c_str(), RTC_VERSION_STRING, options.threads, quality.c_str(),
                  robust ? "robust" : "none");
-    const clrt::compute::program program = clrt::build_renderer_program(device, clrt::RenderMode::Trace, clrt::SceneMotion::Still);
+    const clrt::compute::program program = clrt::build_renderer_program(device, clrt::RenderMode::Trace, clrt::SceneFeatures{});
     std::vector<clrt::compare::SceneResult> results;
     for (const std::string& scene : scenes)
       results.push_back(clrt::compare::compare_scene(scene, device, program, options));

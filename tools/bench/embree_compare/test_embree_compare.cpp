@@ -135,7 +135,7 @@ TEST_CASE("Embree's hits carry each surface's world normal and material") {
 
 TEST_CASE("clrt's kernels answer the hand-computed hits") {
   clrt::DeviceContext device(clrt::select_devices("cpu").front());
-  const auto program = clrt::build_renderer_program(device, clrt::RenderMode::Trace, clrt::SceneMotion::Still);
+  const auto program = clrt::build_renderer_program(device, clrt::RenderMode::Trace, clrt::SceneFeatures{});
   const clrt::Scene scene = hand_scene();
   clrt::compare::ClrtTracer clrt(device, program, clrt::build_geometry(scene));
 
