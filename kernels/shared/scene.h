@@ -37,8 +37,8 @@ typedef struct Material {
   float ka, kd, ks, shininess;
   float kr, kt, ior, pad;
   f4 emission; /* rgb radiance leaving the front side (the normal's); w 1 if any channel is not 0 */
-  u32 textures[CLRT_TEXTURE_SLOTS]; /* per CLRT_TEXTURE_SLOT_*: a row of the texture table whose
-                                       value multiplies that term, or CLRT_NO_TEXTURE */
+  u32 textures[CLRT_TEXTURE_SLOTS]; /* per CLRT_TEXTURE_SLOT_*: the row of the texture table
+                                       whose value multiplies that term, or CLRT_NO_TEXTURE (0) */
 } Material;
 CLRT_CHECK_SIZE(Material, 80);
 

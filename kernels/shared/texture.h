@@ -17,8 +17,9 @@ CLRT_SHARED_BEGIN
 #define CLRT_SCENE_TEXTURED 1
 #endif
 
-/* Material.textures: no texture in that slot. */
-#define CLRT_NO_TEXTURE 0xffffffffu
+/* Material.textures: no texture in that slot. Row 0 of the texture table is never read, so a
+ * Material whose fields were zeroed has no textures. */
+#define CLRT_NO_TEXTURE 0u
 
 /* The slots of Material.textures: what a texture's value multiplies. */
 #define CLRT_TEXTURE_SLOT_COLOR 0u /* the colour C (rgb) */

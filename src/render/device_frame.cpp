@@ -1,6 +1,5 @@
 #include "render/device_frame.hpp"
 
-#include <algorithm>
 #include <vector>
 
 #include "device/transfer.hpp"
@@ -19,12 +18,12 @@ DeviceFrame::DeviceFrame(DeviceContext& device, const FrameData& frame,
   const std::vector<unsigned char> table = light_table_bytes(frame, geometry.tables());
   lights = Global<const dev::Light>(device.allocate_copy(table.data(), table.size(), "light table"));
   bytes += table.size();
-  // A buffer may not be empty: a scene without textures still has the sRGB table's words, and
-  // its texture table gets one unread record.
+  // Neither table is ever empty (a buffer may not be): the texture table starts with its unread
+  // row, the texels with the sRGB table.
   const TextureTable& t = *frame.textures;
-  textures = upload(device, t.records.empty() ? std::vector<dev::Texture>(1) : t.records, "texture table");
+  textures = upload(device, t.records, "texture table");
   texels = upload(device, t.texels, "texel table");
-  bytes += sizeof(dev::Texture) * std::max<std::size_t>(t.records.size(), 1) + sizeof(cl_uint) * t.texels.size();
+  bytes += sizeof(dev::Texture) * t.records.size() + sizeof(cl_uint) * t.texels.size();
 }
 
 void DeviceFrame::set_camera(DeviceContext& device, const dev::Camera& new_camera) {

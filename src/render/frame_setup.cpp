@@ -75,7 +75,7 @@ std::vector<dev::Material> make_materials(const Scene& scene) {
     d.kt = static_cast<float>(m.kt);
     d.ior = static_cast<float>(m.ior);
     for (std::size_t slot = 0; slot < CLRT_TEXTURE_SLOTS; ++slot)
-      d.textures[slot] = m.textures[slot] < 0 ? CLRT_NO_TEXTURE : static_cast<dev::u32>(m.textures[slot]);
+      d.textures[slot] = m.textures[slot] < 0 ? CLRT_NO_TEXTURE : texture_row(m.textures[slot]);
     out.push_back(d);
   }
   return out;

@@ -204,7 +204,7 @@ Renderer::Renderer(const Scene& scene, GeometryData geometry, const RenderSetup&
   setup_stats_.geometry_bytes = tables->device_bytes();
   setup_stats_.bvh_bytes = tables->nodes.size() * sizeof(dev::BvhNode);
   const FrameData frame = make_frame(scene, *tables, options_);
-  const SceneFeatures features{!tables->motions.empty(), !frame.textures->records.empty()};
+  const SceneFeatures features{!tables->motions.empty(), has_textures(*frame.textures)};
 
   if (progress) progress->phase("building the kernels");
   const auto start = Clock::now();

@@ -87,6 +87,7 @@ float srgb_code_value(std::uint32_t code) { return srgb_to_linear(static_cast<st
 
 TextureTable make_texture_table(const Scene& scene) {
   TextureTable table;
+  table.records.push_back(dev::Texture{});
   for (std::uint32_t code = 0; code < CLRT_SRGB_TABLE_WORDS; ++code)
     table.texels.push_back(float_word(srgb_code_value(code)));
   struct Placed {

@@ -11,7 +11,7 @@
 namespace clrt {
 
 struct TextureTable {
-  std::vector<dev::Texture> records;  // Scene::textures in order
+  std::vector<dev::Texture> records;  // row 0 unread (CLRT_NO_TEXTURE), then Scene::textures
   DeviceTable<dev::u32> texels;
 };
 
@@ -19,6 +19,12 @@ struct TextureTable {
 // 2x2 block of level k (the last row or column of an odd size with itself), in linear values;
 // an 8-bit image's levels stay 8-bit, each texel the sRGB code whose value is nearest.
 TextureTable make_texture_table(const Scene& scene);
+
+// The row of Scene::textures[index] in the table.
+inline dev::u32 texture_row(int index) { return static_cast<dev::u32>(index) + 1; }
+
+// Whether the scene's table holds any texture.
+inline bool has_textures(const TextureTable& table) { return table.records.size() > 1; }
 
 // The linear value of each 8-bit sRGB code, as the table's first words hold it.
 float srgb_code_value(std::uint32_t code);

@@ -27,7 +27,7 @@ __kernel void lobe_rows(__global uint* out) {
 }
 
 /* The material's lobes with lobe k drawn every time. */
-CLRT_INLINE PathLobes only_lobe(__global const Material* m, uint k) {
+CLRT_INLINE PathLobes only_lobe(const Material* m, uint k) {
   PathLobes l = path_lobes(m);
   for (uint j = 0; j < CLRT_LOBE_COUNT; ++j) l.choice[j] = j == k ? 1.0f : 0.0f;
   return l;
@@ -38,11 +38,11 @@ __kernel void lobe_draws(uint k, __global const Material* material, float4 norma
                          uint count, __global float4* out) {
   const uint i = get_global_id(0);
   if (i >= count) return;
-  const PathLobes l = only_lobe(material, k);
-  const ShadePoint sp = point_facing(normal, wo);
+  const ShadePoint sp = point_facing(normal, wo, material);
+  const PathLobes l = only_lobe(&sp.material, k);
   const uint stream = hash_u32(i * 2654435761u + 977u);
   LobeSample s = smooth_sample((float3)(0.0f));
-  const bool drawn = draw_lobe(&l, k, material, &sp, -wo.xyz, jitter2(stream, 0u),
+  const bool drawn = draw_lobe(&l, k, &sp.material, &sp, -wo.xyz, jitter2(stream, 0u),
                                jitter2(stream, 1u).x, &s);
   out[i] = (float4)(s.dir, drawn ? (s.smooth ? 1.0f : 2.0f) : 0.0f);
 }
@@ -52,9 +52,10 @@ __kernel void lobe_densities(uint k, __global const Material* material, float4 n
                              uint count, __global const float4* wi, __global float* density) {
   const uint i = get_global_id(0);
   if (i >= count) return;
-  const PathLobes l = only_lobe(material, k);
+  const Material m = *material;
+  const PathLobes l = only_lobe(&m, k);
   float pdf;
-  smooth_lobes(&l, material, normal.xyz, wo.xyz, wi[i].xyz, &pdf);
+  smooth_lobes(&l, &m, normal.xyz, wo.xyz, wi[i].xyz, &pdf);
   density[i] = pdf;
 }
 )CL";

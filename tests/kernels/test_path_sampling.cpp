@@ -27,7 +27,7 @@ __kernel void draw_continuations(__global const Material* material, float4 norma
                            __global float4* directions, __global float4* weights) {
   const uint i = get_global_id(0);
   if (i >= count) return;
-  const ShadePoint sp = point_facing(normal, wo);
+  const ShadePoint sp = point_facing(normal, wo, material);
   Ray ray;
   vstore3((float3)(0.0f), 0, ray.origin);
   ray.radiance_scale = 1.0f;
@@ -39,11 +39,11 @@ __kernel void draw_continuations(__global const Material* material, float4 norma
   ray.depth_kind = CLRT_DEPTH_KIND(1u, CLRT_RAY_REFLECTION);
   ray.path = hash_u32(i * 2654435761u + 12345u);
   ray.time = 0.0f;
-  const PathLobes lobes = path_lobes(material);
+  const PathLobes lobes = path_lobes(&sp.material);
   LobeSample s = smooth_sample((float3)(0.0f)); /* what a path that ends before a draw shows */
   float pdf;
   const float2 choice = path_sample(&ray, CLRT_PATH_CHOICE);
-  const bool goes_on = sample_lobes(&lobes, material, &sp, -wo.xyz,
+  const bool goes_on = sample_lobes(&lobes, &sp.material, &sp, -wo.xyz,
                                     path_sample(&ray, CLRT_PATH_DIRECTION), choice.x, &s, &pdf);
   /* A path that ends still shows the direction its lobe drew (below the surface, say). */
   directions[i] = (float4)(s.dir, goes_on ? (float)s.kind : -1.0f);

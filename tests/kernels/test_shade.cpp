@@ -187,6 +187,9 @@ ShadeOutput shade(const ShadeInput& in, std::uint32_t first = 0, std::uint32_t c
   ShadeArgs args;
   args.in.params = test::upload(std::vector<dev::RenderParams>{params});
   args.in.materials = test::upload(make_materials(in.scene));
+  const TextureTable textures = make_texture_table(in.scene);
+  args.in.textures = test::upload(textures.records);
+  args.in.texels = test::upload(std::vector<cl_uint>(textures.texels.begin(), textures.texels.end()));
   args.in.lights = test::upload(light_table);
   args.in.rays = test::upload(in.rays);
   args.in.hits = test::upload(in.hits);

@@ -53,7 +53,7 @@ std::vector<Rgb> device_values(const Scene& scene, const std::vector<Query>& que
   std::vector<cl_uint> which;
   std::vector<dev::f4> q;
   for (const Query& x : queries) {
-    which.push_back(x.texture);
+    which.push_back(texture_row(static_cast<int>(x.texture)));
     q.push_back({x.u, x.v, x.width, 0});
   }
   const auto count = static_cast<cl_uint>(queries.size());

@@ -15,6 +15,7 @@ such static images over the shutter, which render_reference.py estimates by rend
 sub-render at its own time.
 """
 import argparse
+import functools
 import json
 import os
 import pathlib
@@ -152,9 +153,9 @@ def needs_plugins(material):
 class DumpedScene:
     """The scene as clrt read it (`clrt --dump-scene`, docs/scene-json.md), in the form the
     Mitsuba scene is built from: spheres, planes, cubes and cylinders with their placements,
-    triangles in world space, lights. What the comparison cannot match is refused with the
-    object's FILE:LINE:COLUMN. Moving objects stand at their poses at `time` (by default the
-    middle of the shutter: one instant, not the blurred image)."""
+    triangles in world space with their corners' (u, v), lights. What the comparison cannot
+    match is refused with the object's FILE:LINE:COLUMN. Moving objects stand at their poses at
+    `time` (by default the middle of the shutter: one instant, not the blurred image)."""
 
     def __init__(self, dump, time=None):
         if dump.get("format") != "clrt-scene" or dump.get("version") != SCENE_JSON_VERSION:
@@ -174,7 +175,8 @@ class DumpedScene:
                                        m["emission"], {slot: dump["textures"][i] for slot, i in m["textures"].items()})
                               for m in dump["materials"]]
         self.spheres, self.triangles, self.lights, self.planes, self.cubes = [], [], [], [], []
-        # The (u, v) of each triangle's corners, beside `triangles` (which subclasses extend).
+        # The (u, v) of each triangle's corners, in step with `triangles`, whose (material, corners)
+        # pairs the Cycles converter reads too.
         self.triangle_uvs = []
         self.cylinders = []
         self.meshes = dump["meshes"]
@@ -189,7 +191,8 @@ class DumpedScene:
         # Loose triangles and lights have no place in the dump: their errors name the file.
         try:
             for triangle in dump["triangles"]:
-                self.place_triangle(self.all_materials[triangle["material"]], np.array(triangle["corners"], dtype=float),
+                self.place_triangle(self.all_materials[triangle["material"]],
+                                    np.array(triangle["corners"], dtype=float),
                                     np.array(triangle.get("uv", DEFAULT_UV), dtype=float))
             for light in dump["lights"]:
                 self.add_light(light)
@@ -228,6 +231,7 @@ class DumpedScene:
             raise SceneError(f"`{shape}` has no Mitsuba shape, so the Mitsuba comparison does not read it")
 
     def place_triangle(self, material, corners, uv):
+        """A triangle and its corners' (u, v); add_triangle is the step subclasses refine."""
         check_texture(material)
         self.add_triangle(material, corners)
         self.triangle_uvs.append(uv)
@@ -370,22 +374,24 @@ def check_texture(material):
     if texture["kind"] != "image":
         raise SceneError(f"`{texture['kind']}` textures have no Mitsuba counterpart; the comparison reads images")
     if material.diffuse.tolist() != [1.0, 1.0, 1.0] or max(material.glossy, material.mirror, material.glass) > 0:
-        raise SceneError("a textured colour is compared on a white Lambertian material only (colour 1 1 1, "
-                         "kd 1, no ks, kr or kt; in an MTL, Kd 1 1 1 and illum 1): Mitsuba's bitmap takes no weight")
-    check_image(texture)
+        raise SceneError("a textured colour is compared on a white Lambertian material only (colour 1 1 1 and "
+                         "kd 1, or an MTL's Kd 1 1 1, with no ks, kr or kt): Mitsuba's bitmap takes no weight")
+    check_image(texture["file"], texture["linear"])
 
 
-def check_image(texture):
+# Once per image, not per triangle.
+@functools.lru_cache(maxsize=None)
+def check_image(path, linear):
     """Refuses an image that Mitsuba would not read as clrt does: clrt reads PNG and PPM as 8-bit
     sRGB (a 16-bit one too, Mitsuba all 16 bits); a linear texel above 1 makes clrt scale the
     lobe down, as for any weight above 1, where Mitsuba's `diffuse` reflects more than it gets."""
     import mitsuba as mi
-    image = mi.Bitmap(texture["file"])
-    if texture["linear"]:
+    image = mi.Bitmap(path)
+    if linear:
         if np.array(image).max() > 1:
-            raise SceneError(f"{texture['file']}: a texel above 1 (clrt scales such a lobe down, Mitsuba does not)")
+            raise SceneError(f"{path}: a texel above 1 (clrt scales such a lobe down, Mitsuba does not)")
     elif image.component_format() != mi.Struct.Type.UInt8 or not image.srgb_gamma():
-        raise SceneError(f"{texture['file']}: not 8-bit sRGB to Mitsuba, which would decode it otherwise than clrt")
+        raise SceneError(f"{path}: not 8-bit sRGB to Mitsuba, which would decode it otherwise than clrt")
 
 
 def dump_scene(clrt, path):

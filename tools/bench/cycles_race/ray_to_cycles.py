@@ -80,6 +80,8 @@ class CyclesScene(rtm.DumpedScene):
 
 
 def check_material(material):
+    if material.textures:
+        raise SceneError("textured materials (`texture`, MTL maps) are not mapped to Cycles yet")
     if material.emission.max() > 0:
         raise SceneError("glowing materials (`emission`) are not mapped to Cycles yet")
     lobes = [("a Phong lobe (ks)", material.glossy), ("a mirror lobe (kr)", material.mirror),
