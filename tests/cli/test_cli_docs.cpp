@@ -146,7 +146,7 @@ TEST_CASE("every program's completion completes its commands and the words of it
   CHECK(completions("clrt-experiment", "--mode \"\"") == "trace cast path\n");
   CHECK(completions("clrt-experiment", "--device \"\"") == "cpu gpu all\n");
   CHECK(completions("clrt-experiment", "--integrator \"\"") == "wavefront megakernel\n");
-  CHECK(completions("clrt-make-scenes", "--family \"\"") == "large knob\n");
+  CHECK(completions("clrt-make-scenes", "--family \"\"") == "large knob texture-knob\n");
   for (const Program& program : programs())
     if (program.name == "clrt-mpi") {
       CHECK(completions("clrt-mpi", "--ti") == "--tile\n");

@@ -174,7 +174,9 @@ TEST_CASE("the checked buffer sizes are the ones the renderer allocates", "[limi
     const FrameData frame = make_frame(scene, geometry, o);
     std::uint64_t expected = geometry.device_bytes() + sizeof(dev::Camera) +
                              sizeof(dev::RenderParams) + sizeof(dev::Material) * frame.materials.size() +
-                             sizeof(dev::Light) * frame.lights.size();
+                             sizeof(dev::Light) * frame.lights.size() +
+                             sizeof(dev::Texture) * frame.textures->records.size() +
+                             sizeof(dev::u32) * frame.textures->texels.size();
     // Every lane has buffers of its own.
     const WaveSizes sizes = wave_sizes(c.wavefront, 4, frame.params.shadow_samples);
     for (const DeviceBuffer& b : integrator_entry(c.integrator).buffers(sizes))

@@ -101,19 +101,29 @@ TEST_CASE("an OBJ's map_Kd shows the right way up, Kd times the texel, in every 
   }
 }
 
-TEST_CASE("every shape's (u, v) shows an image the right way up from its front", "[render][texture]") {
+TEST_CASE("every shape's (u, v) shows an image the right way up from outside", "[render][texture]") {
   ScratchDir dir;
   write_quadrants(dir, "q.png");
-  // Seen from +z (the plane from +y, with -z up), each shape's middle is at (u, v) = (0.5, 0.5),
+  // Seen from +z (the plane from +y, with -z up; each other face of the cube from outside, with
+  // +y up or, for the top and bottom, -z and +z), each shape's middle is at (u, v) = (0.5, 0.5),
   // where the quadrants meet: up and left of it is the image's top left. The pixels read are 5
   // from the middle, a texel or more from the quadrants' border, where bilinear blending would
   // mix two colours.
   const std::string lit = "resolution 64 64\nfov 40\nbackground 0 0 0\nlight 1 1 1 ambient\n"
                           "material 1 1 1 1 0 0 1 0 0\ntexture color image q.png\n";
   const std::string front = "eye 0 0 6\nlookat 0 0 0\nup 0 1 0\n" + lit;
-  const std::array<std::pair<const char*, std::string>, 6> shapes = {{
+  const auto from = [&](const char* eye, const char* up) {
+    return std::string("eye ") + eye + "\nlookat 0 0 0\nup " + up + "\n" + lit;
+  };
+  const std::array<std::pair<const char*, std::string>, 12> shapes = {{
       {"sphere", front + "sphere\n"},
       {"cube", front + "cube\n"},
+      {"cube from +x", from("6 0 0", "0 1 0") + "cube\n"},
+      {"cube from -x", from("-6 0 0", "0 1 0") + "cube\n"},
+      {"cube from -z", from("0 0 -6", "0 1 0") + "cube\n"},
+      {"cube from +y", from("0 6 0", "0 0 -1") + "cube\n"},
+      {"cube from -y", from("0 -6 0", "0 0 1") + "cube\n"},
+      {"cylinder's top cap", from("0 6 0", "0 0 -1") + "cylinder\n"},
       {"cylinder", front + "cylinder\n"},
       {"cone", front + "cone 1 0.6\n"},
       {"triangle", front + "triangle -1 -1 0 0 0  1 -1 0 1 0  1 1 0 1 1\ntriangle -1 -1 0 0 0  1 1 0 1 1  -1 1 0 0 1\n"},

@@ -109,7 +109,7 @@ TEST_CASE("a missing, malformed or oversized image is an error at the word namin
   CHECK_THAT(error_of("texture color image wide.png"), Catch::Contains("at most 16384"));
 }
 
-TEST_CASE("an MTL map_Kd and map_Ks become textures of their material; a bump map is a warning",
+TEST_CASE("an MTL map_Kd and map_Ks become textures of their material, and a bump map is a warning",
           "[scene][texture][mtl]") {
   ScratchDir dir;
   write_png(dir, "maps/paint.png");
