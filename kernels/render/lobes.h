@@ -29,7 +29,7 @@ typedef struct PathLobes {
 
 /* The lobes' albedos, scaled down together when their largest sum exceeds 1 (energy
  * conservation), and the probabilities of drawing from them, in proportion to their albedos. */
-CLRT_INLINE PathLobes path_lobes(const Material* m) {
+CLRT_INLINE PathLobes path_lobes(MaterialRef m) {
   PathLobes l;
   const float share = local_share(m);
   float most = 0.0f;
@@ -55,7 +55,7 @@ CLRT_INLINE PathLobes path_lobes(const Material* m) {
  * (only the dielectric, a delta lobe, transmits), and in *pdf the solid-angle density with which
  * the lobes, as chosen by their probabilities, draw wi: the density multiple importance sampling
  * weighs light samples against. */
-CLRT_INLINE float3 smooth_lobes(const PathLobes* l, const Material* m, float3 n, float3 wo,
+CLRT_INLINE float3 smooth_lobes(const PathLobes* l, MaterialRef m, float3 n, float3 wo,
                                 float3 wi, float* pdf) {
   const float cos_i = dot3(n, wi);
   *pdf = 0.0f;
@@ -88,7 +88,7 @@ CLRT_INLINE uint choose_lobe(const PathLobes* l, float x, float* y) {
 
 /* A direction drawn from lobe k alone, with the pair u, and y in [0, 1) for a choice within the
  * lobe (the dielectric's between reflection and refraction); false when it draws none. */
-CLRT_INLINE bool draw_lobe(const PathLobes* l, uint k, const Material* m, const ShadePoint* sp,
+CLRT_INLINE bool draw_lobe(const PathLobes* l, uint k, MaterialRef m, const ShadePoint* sp,
                            float3 d, float2 u, float y, LobeSample* s) {
   switch (k) {
 #define CLRT_LOBE_DRAW(LOBE, name)                                                                  \
@@ -124,7 +124,7 @@ CLRT_INLINE bool has_smooth_lobes(const PathLobes* l) {
 /* A direction drawn from the mixture with the pair u and x in [0, 1) for the lobe: false when
  * the path ends here. A smooth lobe's direction is weighed by the whole mixture's value and
  * density (f cos / pdf, and *pdf for MIS); a delta lobe's by itself (*pdf = 0). */
-CLRT_INLINE bool sample_lobes(const PathLobes* l, const Material* m, const ShadePoint* sp,
+CLRT_INLINE bool sample_lobes(const PathLobes* l, MaterialRef m, const ShadePoint* sp,
                               float3 d, float2 u, float x, LobeSample* s, float* pdf) {
   *pdf = 0.0f;
   float y = 0.0f;

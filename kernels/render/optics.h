@@ -39,6 +39,6 @@ CLRT_INLINE float fresnel_dielectric(float cos_i, float eta, float* cos_t) {
 }
 
 /* The share of the local colour: 1 - kr - kt, clamped to >= 0. */
-CLRT_INLINE float local_share(const Material* m) { return fmax(0.0f, 1.0f - m->kr - m->kt); }
+CLRT_INLINE float local_share(MaterialRef m) { return fmax(0.0f, 1.0f - m->kr - m->kt); }
 
 #endif

@@ -95,7 +95,7 @@ CLRT_INLINE float2 transport_light_pair(const TransportVertex* v, uint use) { re
 CLRT_INLINE float3 transport_light_term(const TransportVertex* v, __global const Light* light,
                                         const LightSample* ls) {
   float pdf;
-  const float3 f = smooth_lobes(&v->lobes, &v->sp.material, v->sp.n, v->sp.v, ls->to_light, &pdf);
+  const float3 f = smooth_lobes(&v->lobes, POINT_MATERIAL(&v->sp), v->sp.n, v->sp.v, ls->to_light, &pdf);
   float3 estimate = (float3)(0.0f);
   if (!all(f == (float3)(0.0f)) && ls->geometry != 0.0f) {
     /* A light that paths can hit as well shares this direction with the BSDF's samples. */
@@ -119,14 +119,14 @@ CLRT_INLINE float3 path_step(const Ray* ray, const Hit* hit, __global const Mate
   if (CLRT_RAY_DEPTH(*ray) > params->max_depth) return c;
   TransportVertex vertex;
   vertex.sp = shade_point(ray, hit, materials, TEXTURE_ARGS, params);
-  vertex.lobes = path_lobes(&vertex.sp.material);
+  vertex.lobes = path_lobes(POINT_MATERIAL(&vertex.sp));
   vertex.ray = ray;
   if (has_smooth_lobes(&vertex.lobes))
     gather_light_samples(&vertex, &vertex.sp, lights, params, true, owner, ray->time, sink, &c);
   const float2 choice = path_sample(ray, CLRT_PATH_CHOICE);
   LobeSample s;
   float pdf;
-  if (!sample_lobes(&vertex.lobes, &vertex.sp.material, &vertex.sp, vload3(0, ray->dir),
+  if (!sample_lobes(&vertex.lobes, POINT_MATERIAL(&vertex.sp), &vertex.sp, vload3(0, ray->dir),
                     path_sample(ray, CLRT_PATH_DIRECTION), choice.x, &s, &pdf))
     return c;
   float3 throughput = vload3(0, ray->weight) * s.weight;

@@ -25,8 +25,19 @@ typedef struct ShadePoint {
   float3 base;  /* the ray's weight times the material's local share */
   bool front;   /* the ray arrived on the side the surface's normal points to */
   float cone_width; /* the ray's cone's width there, where its children's cones start */
+#if CLRT_SCENE_TEXTURED
   Material material; /* the hit's material, textured */
+#else
+  __global const Material* material; /* the hit's row of the material table */
+#endif
 } ShadePoint;
+
+/* The material `s` shades with (MaterialRef). */
+#if CLRT_SCENE_TEXTURED
+#define POINT_MATERIAL(s) (&(s)->material)
+#else
+#define POINT_MATERIAL(s) ((s)->material)
+#endif
 
 /* The textures' tables, which every transport step passes on. */
 #define TEXTURE_PARAMS __global const Texture* textures, __global const uint* texels
@@ -36,7 +47,11 @@ CLRT_INLINE ShadePoint shade_point(const Ray* ray, const Hit* hit, __global cons
                                    TEXTURE_PARAMS, __global const RenderParams* params) {
   ShadePoint s;
   s.cone_width = CLRT_SCENE_TEXTURED ? cone_width_at_hit(ray, hit, params->cone_spread) : 0.0f;
+#if CLRT_SCENE_TEXTURED
   s.material = surface_material(materials, TEXTURE_ARGS, ray, hit, s.cone_width);
+#else
+  s.material = &materials[hit->material];
+#endif
   const float3 d = vload3(0, ray->dir);
   s.p = vload3(0, ray->origin) + hit->geometric_normal.w * d;
   s.front = dot3(xyz(hit->geometric_normal), d) < 0.0f;
@@ -46,7 +61,7 @@ CLRT_INLINE ShadePoint shade_point(const Ray* ray, const Hit* hit, __global cons
   const float3 ns = xyz(hit->shading_normal);
   s.n = dot3(ns, s.ng) < 0.0f ? -ns : ns;
   s.v = -d;
-  s.base = vload3(0, ray->weight) * local_share(&s.material);
+  s.base = vload3(0, ray->weight) * local_share(POINT_MATERIAL(&s));
   return s;
 }
 

@@ -56,8 +56,7 @@ CLRT_INLINE Material surface_material(__global const Material* materials,
                                       __global const Texture* textures, __global const uint* texels,
                                       const Ray* ray, const Hit* hit, float cone_width) {
   Material m = materials[hit->material];
-  if (!CLRT_SCENE_TEXTURED || (m.textures[0] | m.textures[1] | m.textures[2] | m.textures[3]) == 0u)
-    return m;
+  if ((m.textures[0] | m.textures[1] | m.textures[2] | m.textures[3]) == 0u) return m;
   const float width = uv_footprint(ray, hit, cone_width);
   for (u32 slot = 0; slot < CLRT_TEXTURE_SLOTS; ++slot) {
     if (m.textures[slot] == CLRT_NO_TEXTURE) continue;

@@ -17,7 +17,7 @@
 /* kd * Ld * C * (N.L) + ks * Ld * max(0, R.V)^n, where R is L mirrored about N; zero when
  * N.L <= 0. 0^0 is 1 as the contract asks. R.V is held to at most 1, where rounding can leave
  * it: a little above 1 a large exponent (the reader accepts up to 1e12) overflows. */
-CLRT_INLINE float3 direct_term(const Material* m, float3 n, float3 v, float3 l, float3 ld) {
+CLRT_INLINE float3 direct_term(MaterialRef m, float3 n, float3 v, float3 l, float3 ld) {
   const float nl = dot3(n, l);
   if (nl <= 0.0f) return (float3)(0.0f);
   const float3 r = mirror_about(l, n);
@@ -25,7 +25,7 @@ CLRT_INLINE float3 direct_term(const Material* m, float3 n, float3 v, float3 l, 
   return m->kd * ld * xyz(m->color) * nl + m->ks * ld * highlight;
 }
 
-CLRT_INLINE float3 ambient_colour(const ShadePoint* s, const Material* m,
+CLRT_INLINE float3 ambient_colour(const ShadePoint* s, MaterialRef m,
                                   __global const RenderParams* params) {
   return s->base * m->ka * xyz(params->ambient) * xyz(m->color);
 }
@@ -40,7 +40,7 @@ CLRT_INLINE float2 transport_light_pair(const TransportVertex* v, uint use) { re
 
 CLRT_INLINE float3 transport_light_term(const TransportVertex* v, __global const Light* light,
                                         const LightSample* ls) {
-  return v->sp.base * direct_term(&v->sp.material, v->sp.n, v->sp.v, ls->to_light, ls->intensity);
+  return v->sp.base * direct_term(POINT_MATERIAL(&v->sp), v->sp.n, v->sp.v, ls->to_light, ls->intensity);
 }
 
 
@@ -48,7 +48,7 @@ CLRT_INLINE float3 transport_light_term(const TransportVertex* v, __global const
  * Total internal reflection sends the kt share along the reflection ray. With `glossy` the
  * reflection ray's direction is drawn from the normalised Phong lobe of the material's exponent
  * about the mirror direction (Cook et al. 1984), and a direction below the surface spawns none. */
-CLRT_INLINE uint spawn_children(const Ray* ray, const ShadePoint* s, const Material* m,
+CLRT_INLINE uint spawn_children(const Ray* ray, const ShadePoint* s, MaterialRef m,
                                 float epsilon, bool glossy, Ray* reflected, Ray* refracted) {
   const float3 d = vload3(0, ray->dir);
   const float3 r = glossy ? sample_phong(s->n, s->v, m->shininess, jitter2(ray->path, CLRT_GLOSSY_DIRECTION))
@@ -82,11 +82,11 @@ CLRT_INLINE float3 whitted_step(const Ray* ray, const Hit* hit, __global const M
   TransportVertex vertex;
   vertex.sp = shade_point(ray, hit, materials, TEXTURE_ARGS, params);
   vertex.path = ray->path;
-  float3 c = ambient_colour(&vertex.sp, &vertex.sp.material, params) + emitted(ray, hit, materials);
+  float3 c = ambient_colour(&vertex.sp, POINT_MATERIAL(&vertex.sp), params) + emitted(ray, hit, materials);
   gather_light_samples(&vertex, &vertex.sp, lights, params, tracing, owner, ray->time, sink, &c);
   if (!tracing || CLRT_RAY_DEPTH(*ray) >= params->max_depth) return c;
   Ray reflected, refracted;
-  const uint spawned = spawn_children(ray, &vertex.sp, &vertex.sp.material, params->epsilon,
+  const uint spawned = spawn_children(ray, &vertex.sp, POINT_MATERIAL(&vertex.sp), params->epsilon,
                                       params->glossy != 0u, &reflected, &refracted);
   if (spawned & CLRT_SPAWN_REFRACTION) sink_child(sink, CLRT_SPAWN_REFRACTION, &refracted);
   if (spawned & CLRT_SPAWN_REFLECTION) sink_child(sink, CLRT_SPAWN_REFLECTION, &reflected);

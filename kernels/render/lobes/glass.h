@@ -5,7 +5,7 @@
 
 #include "../lobe_sample.h"
 
-CLRT_INLINE float3 glass_lobe_albedo(const Material* m, float share) {
+CLRT_INLINE float3 glass_lobe_albedo(MaterialRef m, float share) {
   return (float3)(fmax(0.0f, m->kt));
 }
 
@@ -13,13 +13,13 @@ CLRT_INLINE bool glass_lobe_is_smooth(void) { return false; }
 
 CLRT_INLINE float glass_lobe_choice_weight(float3 albedo) { return albedo.x; }
 
-CLRT_INLINE float3 glass_lobe_value(float3 albedo, float choice, const Material* m,
+CLRT_INLINE float3 glass_lobe_value(float3 albedo, float choice, MaterialRef m,
                                     float3 n, float3 wo, float3 wi, float cos_i, float* pdf) {
   return (float3)(0.0f);
 }
 
 /* y in [0, 1) chooses between reflection (y below the Fresnel reflectance) and refraction. */
-CLRT_INLINE bool glass_lobe_sample(float3 albedo, float choice, const Material* m,
+CLRT_INLINE bool glass_lobe_sample(float3 albedo, float choice, MaterialRef m,
                                    const ShadePoint* sp, float3 d, float2 u, float y, LobeSample* s) {
   const float cos_i = -dot3(d, sp->n);
   const float eta = sp->front ? 1.0f / m->ior : m->ior;

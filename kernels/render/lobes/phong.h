@@ -32,7 +32,7 @@ CLRT_INLINE float phong_pdf(float cos_i, float exponent, float phong) {
   return (exponent + 1.0f) * CLRT_INV_TWO_PI * phong;
 }
 
-CLRT_INLINE float3 phong_lobe_albedo(const Material* m, float share) {
+CLRT_INLINE float3 phong_lobe_albedo(MaterialRef m, float share) {
   return (float3)(share * m->ks);
 }
 
@@ -40,7 +40,7 @@ CLRT_INLINE bool phong_lobe_is_smooth(void) { return true; }
 
 CLRT_INLINE float phong_lobe_choice_weight(float3 albedo) { return albedo.x; }
 
-CLRT_INLINE float3 phong_lobe_value(float3 albedo, float choice, const Material* m,
+CLRT_INLINE float3 phong_lobe_value(float3 albedo, float choice, MaterialRef m,
                                     float3 n, float3 wo, float3 wi, float cos_i, float* pdf) {
   const float exponent = m->shininess;
   const float phong = albedo.x == 0.0f ? 0.0f : phong_factor(n, wo, wi, exponent);
@@ -57,7 +57,7 @@ CLRT_INLINE float3 sample_phong(float3 n, float3 wo, float exponent, float2 u) {
   return around_axis(mirror_about(wo, n), 1.0f - delta, sqrt(delta * (2.0f - delta)), u.y);
 }
 
-CLRT_INLINE bool phong_lobe_sample(float3 albedo, float choice, const Material* m,
+CLRT_INLINE bool phong_lobe_sample(float3 albedo, float choice, MaterialRef m,
                                    const ShadePoint* sp, float3 d, float2 u, float y, LobeSample* s) {
   *s = smooth_sample(sample_phong(sp->n, sp->v, m->shininess, u));
   return true;
