@@ -6,12 +6,26 @@
 #include <cstring>
 #include <stdexcept>
 
+#include "math/parallel_for.hpp"
 #include "scene/scene_image.hpp"
 
 namespace clrt {
 namespace {
 
 using Rgb = std::array<double, 3>;
+
+constexpr std::size_t kRowsPerTask = 64;  // small images take one task
+
+// The linear value of each 8-bit code, worked out once: a texel's channel is looked up, never
+// recomputed (std::pow for each of a 2048x2048 image's channels took seconds).
+const std::array<float, 256>& srgb_values() {
+  static const std::array<float, 256> values = [] {
+    std::array<float, 256> v{};
+    for (std::uint32_t code = 0; code < 256; ++code) v[code] = srgb_to_linear(static_cast<std::uint8_t>(code));
+    return v;
+  }();
+  return values;
+}
 
 // One mip level in linear values, rows from t = 0 (the image's bottom row) up.
 struct Level {
@@ -24,13 +38,14 @@ Level first_level(const TextureImage& image) {
   level.width = static_cast<std::size_t>(image.width);
   level.height = static_cast<std::size_t>(image.height);
   level.texels.resize(level.width * level.height);
-  for (std::size_t y = 0; y < level.height; ++y)
+  parallel_for(level.height, kRowsPerTask, [&](std::size_t y) {
     for (std::size_t x = 0; x < level.width; ++x) {
       const std::size_t from = 3 * ((level.height - 1 - y) * level.width + x);
       Rgb& t = level.texels[y * level.width + x];
       for (std::size_t c = 0; c < 3; ++c)
-        t[c] = image.linear ? image.rgb[from + c] : srgb_code_value(image.srgb[from + c]);
+        t[c] = image.linear ? image.rgb[from + c] : srgb_values()[image.srgb[from + c]];
     }
+  });
   return level;
 }
 
@@ -39,7 +54,7 @@ Level next_level(const Level& fine) {
   coarse.width = std::max<std::size_t>(fine.width / 2, 1);
   coarse.height = std::max<std::size_t>(fine.height / 2, 1);
   coarse.texels.resize(coarse.width * coarse.height);
-  for (std::size_t y = 0; y < coarse.height; ++y)
+  parallel_for(coarse.height, kRowsPerTask, [&](std::size_t y) {
     for (std::size_t x = 0; x < coarse.width; ++x) {
       const std::size_t xs[2] = {2 * x, std::min(2 * x + 1, fine.width - 1)};
       const std::size_t ys[2] = {2 * y, std::min(2 * y + 1, fine.height - 1)};
@@ -49,19 +64,18 @@ Level next_level(const Level& fine) {
           for (std::size_t c = 0; c < 3; ++c) sum[c] += fine.texels[fy * fine.width + fx][c];
       for (std::size_t c = 0; c < 3; ++c) coarse.texels[y * coarse.width + x][c] = sum[c] / 4;
     }
+  });
   return coarse;
 }
 
 // The sRGB code whose linear value is nearest `value`.
 std::uint32_t nearest_code(double value) {
-  std::uint32_t lo = 0, hi = 255;
-  while (lo < hi) {
-    const std::uint32_t mid = (lo + hi) / 2;
-    if (srgb_code_value(mid) < value) lo = mid + 1;
-    else hi = mid;
-  }
-  if (lo > 0 && value - srgb_code_value(lo - 1) <= srgb_code_value(lo) - value) return lo - 1;
-  return lo;
+  const std::array<float, 256>& v = srgb_values();
+  const auto above = std::lower_bound(v.begin(), v.end(), value);
+  if (above == v.end()) return 255;
+  const auto code = static_cast<std::uint32_t>(above - v.begin());
+  if (code > 0 && value - v[code - 1] <= *above - value) return code - 1;
+  return code;
 }
 
 dev::u32 float_word(double value) {
@@ -72,18 +86,22 @@ dev::u32 float_word(double value) {
 }
 
 void append_level(const Level& level, bool linear, DeviceTable<dev::u32>& words) {
-  for (const Rgb& t : level.texels) {
+  const std::size_t first = words.size(), per_texel = linear ? 3 : 1;
+  words.resize(first + per_texel * level.texels.size());
+  parallel_for(level.texels.size(), kRowsPerTask * level.width, [&](std::size_t i) {
+    const Rgb& t = level.texels[i];
+    dev::u32* out = &words[first + per_texel * i];
     if (linear) {
-      for (double c : t) words.push_back(float_word(c));
+      for (std::size_t c = 0; c < 3; ++c) out[c] = float_word(t[c]);
     } else {
-      words.push_back(nearest_code(t[0]) | nearest_code(t[1]) << 8 | nearest_code(t[2]) << 16);
+      *out = nearest_code(t[0]) | nearest_code(t[1]) << 8 | nearest_code(t[2]) << 16;
     }
-  }
+  });
 }
 
 }  // namespace
 
-float srgb_code_value(std::uint32_t code) { return srgb_to_linear(static_cast<std::uint8_t>(code)); }
+float srgb_code_value(std::uint32_t code) { return srgb_values().at(code); }
 
 TextureTable make_texture_table(const Scene& scene) {
   TextureTable table;

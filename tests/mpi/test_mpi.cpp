@@ -49,7 +49,10 @@ TEST_CASE("N ranks write the bytes clrt writes", "[mpi]") {
                         // Each sample's time depends on its pixel and index alone.
                         Case{"path/motion.ray", "--mode path --spp 4", "16x16", "pfm"},
                         // The MTL library reaches the ranks with its OBJ file.
-                        Case{"path/mtl.ray", "--mode path --spp 2", "16x16", "pfm"}}) {
+                        Case{"path/mtl.ray", "--mode path --spp 2", "16x16", "pfm"},
+                        // The texture images reach the ranks from rank 0, the map_Kd's with its
+                        // MTL library.
+                        Case{"path/textured.ray", "--mode path --spp 2", "16x16", "pfm"}}) {
     const std::string args = quoted(test_scene(c.scene)) + " -q --resolution 64x48 " + c.options;
     const std::string single = dir.file("single." + c.extension);
     REQUIRE(run_clrt(args + " -o " + single).exit_code == 0);

@@ -2,7 +2,8 @@
 """The material knob's plot and table: python3 plot_knob.py RUNS.csv OUT.png
 
 RUNS.csv is the runs.csv of a clrt-experiment run over the knob scenes of clrt-make-scenes
---family knob (knob-01.ray ... knob-16.ray), with the integrators wavefront and megakernel and
+--family knob (knob-01.ray ... knob-16.ray) or --family texture-knob (texture-knob-1.ray ...
+texture-knob-8.ray), with the integrators wavefront and megakernel and
 the variants queue and by-class. Draws, per device, Mrays/s and Msamples/s against the number of
 materials (medians over repeats, bars from the slowest to the fastest run) and prints a Markdown
 table of the medians with the point from which the wavefront stays ahead of the megakernel. The
@@ -36,7 +37,7 @@ def read_runs(path):
     devices = []
     with open(path, newline="") as f:
         for row in csv.DictReader(f):
-            match = re.match(r"knob-(\d+)\.ray$", os.path.basename(row["scene"]))
+            match = re.match(r"(?:texture-)?knob-(\d+)\.ray$", os.path.basename(row["scene"]))
             if not match or row["exit_code"] != "0" or row["flagged"] == "true":
                 continue
             if row["device"] not in devices:
