@@ -60,55 +60,60 @@ TEST_CASE("renders that share one context and program keep their bits, render af
   }
 }
 
-// Devices are prepared before the scene is read, with the program for still scenes; a scene with
-// moving objects must get the program that places them (a still program leaves every object at
-// its first pose, which this scene's spinning cube and rolling ball are not for most of the
-// shutter).
+namespace repeated_renders_test {
+
+// Devices are prepared before the scene is read, with the program for still scenes without
+// textures. Renders `scene` at 40x30, 4 samples per pixel, in trace mode (the mode render_on's
+// programs are for) on a device so prepared, checks that it gets the bits of its own program,
+// and returns them with the setup and the prepared device.
+struct PreparedRender {
+  RenderSetup setup;
+  std::vector<PreparedDevice> prepared;
+  FloatImage expected;
+};
+
+PreparedRender render_on_prepared(const Scene& scene) {
+  PreparedRender r;
+  r.setup.options = RenderOptions::from_scene(scene);
+  r.setup.options.width = 40;
+  r.setup.options.height = 30;
+  r.setup.options.samples = 4;
+  r.setup.options.mode = RenderMode::Trace;
+  r.setup.devices = select_devices(test_device_spec());
+  r.prepared = prepare_devices(r.setup.devices, r.setup.options.mode);
+  REQUIRE(r.prepared.size() == 1);
+  REQUIRE(r.prepared.front().features == SceneFeatures{});
+  Renderer own_program(scene, build_geometry(scene), r.setup);
+  r.expected = std::get<FloatImage>(own_program.render(render_region(r.setup.options), false));
+  CHECK(same_bits(render_on(scene, r.setup, r.prepared.front()), r.expected));
+  return r;
+}
+
+// A scene with moving objects must get the program that places them (a still program leaves
+// every object at its first pose, which this scene's spinning cube and rolling ball are not for
+// most of the shutter).
 TEST_CASE("a program prepared for still scenes is replaced for a scene with motion",
           "[render][repeated][motion]") {
   const Scene scene = load_scene(std::string(CLRT_SOURCE_DIR) + "/scenes/motion.ray");
-  RenderSetup setup;
-  setup.options = RenderOptions::from_scene(scene);
-  setup.options.width = 40;
-  setup.options.height = 30;
-  setup.options.samples = 4;
-  setup.options.mode = RenderMode::Trace;  // the mode render_on's programs are for
-  setup.devices = select_devices(test_device_spec());
-  const std::vector<PreparedDevice> prepared = prepare_devices(setup.devices, setup.options.mode);
-  REQUIRE(prepared.size() == 1);
-  REQUIRE(prepared.front().features == SceneFeatures{});
-  Renderer own_program(scene, build_geometry(scene), setup);
-  const FloatImage expected = std::get<FloatImage>(own_program.render(render_region(setup.options), false));
-  CHECK(same_bits(render_on(scene, setup, prepared.front()), expected));
-
+  const PreparedRender r = render_on_prepared(scene);
   // What the still program renders of this scene is not that image.
   Scene first_pose = scene;
   first_pose.end_transforms.clear();
   for (InstanceSpec& instance : first_pose.instances) instance.motion = -1;
-  CHECK_FALSE(same_bits(render_on(first_pose, setup, prepared.front()), expected));
+  CHECK_FALSE(same_bits(render_on(first_pose, r.setup, r.prepared.front()), r.expected));
 }
 
 // Likewise a scene with textures must get the program that reads them: the prepared program
-// (for scenes without textures) would render every material plain.
+// would render every material plain.
 TEST_CASE("a program prepared for scenes without textures is replaced for a textured scene",
           "[render][repeated][texture]") {
   const Scene scene = load_scene(std::string(CLRT_SOURCE_DIR) + "/scenes/textures.ray");
-  RenderSetup setup;
-  setup.options = RenderOptions::from_scene(scene);
-  setup.options.width = 48;
-  setup.options.height = 30;
-  setup.options.mode = RenderMode::Trace;
-  setup.devices = select_devices(test_device_spec());
-  const std::vector<PreparedDevice> prepared = prepare_devices(setup.devices, setup.options.mode);
-  REQUIRE(prepared.size() == 1);
-  REQUIRE(prepared.front().features == SceneFeatures{});
-  Renderer own_program(scene, build_geometry(scene), setup);
-  const FloatImage expected = std::get<FloatImage>(own_program.render(render_region(setup.options), false));
-  CHECK(same_bits(render_on(scene, setup, prepared.front()), expected));
-
+  const PreparedRender r = render_on_prepared(scene);
   // Without its textures the scene is another image.
   Scene plain = scene;
   for (MaterialSpec& m : plain.materials) m.textures = {-1, -1, -1, -1};
   plain.textures.clear();
-  CHECK_FALSE(same_bits(render_on(plain, setup, prepared.front()), expected));
+  CHECK_FALSE(same_bits(render_on(plain, r.setup, r.prepared.front()), r.expected));
 }
+
+}  // namespace repeated_renders_test
