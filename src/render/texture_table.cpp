@@ -16,17 +16,6 @@ using Rgb = std::array<double, 3>;
 
 constexpr std::size_t kRowsPerTask = 64;  // small images take one task
 
-// The linear value of each 8-bit code, worked out once: a texel's channel is looked up, never
-// recomputed (std::pow for each of a 2048x2048 image's channels took seconds).
-const std::array<float, 256>& srgb_values() {
-  static const std::array<float, 256> values = [] {
-    std::array<float, 256> v{};
-    for (std::uint32_t code = 0; code < 256; ++code) v[code] = srgb_to_linear(static_cast<std::uint8_t>(code));
-    return v;
-  }();
-  return values;
-}
-
 // One mip level in linear values, rows from t = 0 (the image's bottom row) up.
 struct Level {
   std::size_t width = 0, height = 0;
@@ -43,7 +32,7 @@ Level first_level(const TextureImage& image) {
       const std::size_t from = 3 * ((level.height - 1 - y) * level.width + x);
       Rgb& t = level.texels[y * level.width + x];
       for (std::size_t c = 0; c < 3; ++c)
-        t[c] = image.linear ? image.rgb[from + c] : srgb_values()[image.srgb[from + c]];
+        t[c] = image.linear ? image.rgb[from + c] : srgb_to_linear(image.srgb[from + c]);
     }
   });
   return level;
@@ -70,7 +59,7 @@ Level next_level(const Level& fine) {
 
 // The sRGB code whose linear value is nearest `value`.
 std::uint32_t nearest_code(double value) {
-  const std::array<float, 256>& v = srgb_values();
+  const std::array<float, 256>& v = srgb_linear_values();
   const auto above = std::lower_bound(v.begin(), v.end(), value);
   if (above == v.end()) return 255;
   const auto code = static_cast<std::uint32_t>(above - v.begin());
@@ -101,13 +90,11 @@ void append_level(const Level& level, bool linear, DeviceTable<dev::u32>& words)
 
 }  // namespace
 
-float srgb_code_value(std::uint32_t code) { return srgb_values().at(code); }
-
 TextureTable make_texture_table(const Scene& scene) {
   TextureTable table;
   table.records.push_back(dev::Texture{});
-  for (std::uint32_t code = 0; code < CLRT_SRGB_TABLE_WORDS; ++code)
-    table.texels.push_back(float_word(srgb_code_value(code)));
+  static_assert(CLRT_SRGB_TABLE_WORDS == 256);
+  for (float value : srgb_linear_values()) table.texels.push_back(float_word(value));
   struct Placed {
     dev::u32 first_word = 0, levels = 0;
   };

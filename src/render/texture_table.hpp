@@ -26,7 +26,4 @@ inline dev::u32 texture_row(int index) { return static_cast<dev::u32>(index) + 1
 // Whether the scene's table holds any texture.
 inline bool has_textures(const TextureTable& table) { return table.records.size() > 1; }
 
-// The linear value of each 8-bit sRGB code, as the table's first words hold it.
-float srgb_code_value(std::uint32_t code);
-
 }  // namespace clrt

@@ -78,8 +78,6 @@ MemoryLimit memory_left(const LoaderState& s) {
   return {s.memory.bytes > used ? s.memory.bytes - used : 0, s.memory.source};
 }
 
-// The materials of the mesh's `usemtl` names join the scene's (whether or not an instance takes
-// them: a mesh file is read once, and `mtl` may differ between its instances).
 // A map_Kd or map_Ks as a texture of the scene: its index into Scene::textures.
 int map_texture(LoaderState& s, const MtlTextureRef& map) {
   TextureSpec t;
@@ -93,6 +91,8 @@ int map_texture(LoaderState& s, const MtlTextureRef& map) {
   return static_cast<int>(s.scene.textures.size()) - 1;
 }
 
+// The materials of the mesh's `usemtl` names join the scene's (whether or not an instance takes
+// them: a mesh file is read once, and `mtl` may differ between its instances).
 void add_mesh_materials(LoaderState& s, MeshData& mesh) {
   MeshMaterials found = load_mesh_materials(mesh, *s.files);
   for (std::size_t i = 0; i < found.by_name.size(); ++i) {

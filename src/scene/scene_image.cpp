@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <array>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
@@ -58,9 +59,18 @@ AnyImage read_scene_image(const FileSource& files, const std::string& path, std:
 }
 
 
-float srgb_to_linear(std::uint8_t code) {
-  const double c = code / 255.0;
-  return static_cast<float>(c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4));
+const std::array<float, 256>& srgb_linear_values() {
+  static const std::array<float, 256> values = [] {
+    std::array<float, 256> v{};
+    for (std::size_t code = 0; code < v.size(); ++code) {
+      const double c = static_cast<double>(code) / 255.0;
+      v[code] = static_cast<float>(c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4));
+    }
+    return v;
+  }();
+  return values;
 }
+
+float srgb_to_linear(std::uint8_t code) { return srgb_linear_values()[code]; }
 
 }  // namespace clrt

@@ -1,6 +1,7 @@
 // Images a scene names (an environment, a texture), read through the scene's FileSource.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <string>
@@ -17,7 +18,10 @@ namespace clrt {
 AnyImage read_scene_image(const FileSource& files, const std::string& path, std::uint64_t max_bytes,
                           const std::function<void(const ImageInfo&)>& check_header = {});
 
-// The linear value of an 8-bit sRGB code (PNG and PPM hold sRGB; the renderer wants linear).
+// The linear value of an 8-bit sRGB code (PNG and PPM hold sRGB; the renderer wants linear),
+// from a table worked out once: a 2048x2048 image's channels through std::pow took seconds.
 float srgb_to_linear(std::uint8_t code);
+// That table, increasing with the code.
+const std::array<float, 256>& srgb_linear_values();
 
 }  // namespace clrt

@@ -22,9 +22,13 @@ std::uint64_t texture_device_bytes(std::int64_t width, std::int64_t height, bool
   return texels * (linear ? 12 : 4);
 }
 
+std::uint64_t texture_image_bytes(std::int64_t width, std::int64_t height, bool linear) {
+  const auto texels = static_cast<std::uint64_t>(width) * static_cast<std::uint64_t>(height);
+  return texels * (linear ? 12 : 3) + texture_device_bytes(width, height, linear);
+}
+
 std::uint64_t texture_image_bytes(const TextureImage& image) {
-  return image.srgb.size() + image.rgb.size() * sizeof(float) +
-         texture_device_bytes(image.width, image.height, image.linear);
+  return texture_image_bytes(image.width, image.height, image.linear);
 }
 
 namespace {
@@ -61,10 +65,7 @@ int texture_image(LoaderState& s, const std::string& path, const SourceLocation&
       throw std::runtime_error("it is " + std::to_string(info.width) + "x" + std::to_string(info.height) +
                                " texels; a texture may have at most " + std::to_string(kMaxTextureSide) +
                                " on a side");
-    const bool linear = holds_floats(info.format);
-    const std::uint64_t needed =
-        used + static_cast<std::uint64_t>(info.width) * static_cast<std::uint64_t>(info.height) * (linear ? 12 : 3) +
-        texture_device_bytes(info.width, info.height, linear);
+    const std::uint64_t needed = used + texture_image_bytes(info.width, info.height, holds_floats(info.format));
     if (needed > s.memory.bytes)
       throw std::runtime_error("the scene with it would need " + mebibytes(needed) + ", " +
                                mebibytes(s.memory.bytes) + " available (" + s.memory.source + ")");

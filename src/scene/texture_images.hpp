@@ -18,7 +18,9 @@ constexpr std::int64_t kMaxTextureSide = 16384;
 // most a quarter of the one before): 4 per texel for 8-bit images, 12 for linear ones.
 std::uint64_t texture_device_bytes(std::int64_t width, std::int64_t height, bool linear);
 
-// The bytes `image` takes from its load to its render: its texels on the host and on the device.
+// The bytes an image of width x height texels takes from its load to its render: its texels on
+// the host (3 bytes each for 8-bit images, 12 for linear ones) and on the device.
+std::uint64_t texture_image_bytes(std::int64_t width, std::int64_t height, bool linear);
 std::uint64_t texture_image_bytes(const TextureImage& image);
 
 // The index into s.scene.texture_images of the image at `path` (as resolved), read on its first
