@@ -83,13 +83,13 @@ CLRT_INLINE void hit_record_resolve(const HitRecord* r, float3 o, float3 d, floa
     object_normal = triangle_normal(v0, v1, v2);
     geometric = bvh_world_normal(&frame, object_normal, (float3)(0.0f, 1.0f, 0.0f));
     shading = geometric;
-    if (mesh->has_normals) {
-      __global const float* n = triangle_normals[triangle].n;
+    hit->primitive = triangle - mesh->first_triangle;
+    if (mesh->normals != CLRT_NO_NORMALS) {
+      __global const float* n = triangle_normals[mesh->normals + hit->primitive].n;
       const float3 interpolated = (1.0f - r->u - r->v) * (float3)(n[0], n[1], n[2]) +
                                   r->u * (float3)(n[3], n[4], n[5]) + r->v * (float3)(n[6], n[7], n[8]);
       shading = bvh_world_normal(&frame, interpolated, geometric);
     }
-    hit->primitive = triangle - mesh->first_triangle;
     coords = triangle_coords(triangle_texcoords,
                              mesh->texcoords == CLRT_NO_TEXCOORDS ? CLRT_NO_TEXCOORDS
                                                                   : mesh->texcoords + hit->primitive,

@@ -159,15 +159,20 @@ CLRT_CHECK_SIZE(InstanceMotion, 144);
 
 /* A bottom-level model in its own object space; shared by all the instances that use it. */
 typedef struct Mesh {
-  u32 first_triangle; /* into the triangle normal table */
+  u32 first_triangle; /* its triangles' numbers, as BVH packets name them, start here */
   u32 triangle_count;
   u32 root_node;      /* root of its bottom-level BVH in the node table */
-  u32 has_normals;    /* nonzero: triangle_normals holds interpolable vertex normals */
+  u32 normals;        /* CLRT_NO_NORMALS, or where its triangles' rows of triangle_normals start
+                         (in the order Hit.primitive counts) */
   u32 texcoords;      /* CLRT_NO_TEXCOORDS, or where its triangles' rows of triangle_texcoords
                          start (in the order Hit.primitive counts) */
   u32 pad[3];
 } Mesh;
 CLRT_CHECK_SIZE(Mesh, 32);
+
+/* Mesh.normals of a mesh without vertex normals: it is shaded with its faces' normals, and has
+ * no rows in triangle_normals (36 bytes a triangle that a mesh without normals would not read). */
+#define CLRT_NO_NORMALS 0xffffffffu
 
 /* Mesh.texcoords of a mesh whose triangles have no texture coordinates of their own: each takes
  * (0, 0), (1, 0) and (0, 1) at its corners. */

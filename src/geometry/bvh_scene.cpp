@@ -20,22 +20,26 @@ std::vector<BvhTree> build_mesh_bvhs(const std::vector<TriangleSource>& sources,
   parallel_for(trees.size(), 1, [&](std::size_t m) {
     trees[m] = build_bvh(triangle_boxes(sources[m]), BvhBuildSettings{});
   });
-  std::size_t triangles = 0, material_rows = 0, texcoord_rows = 0;
+  std::size_t triangles = 0, normal_rows = 0, material_rows = 0, texcoord_rows = 0;
   for (std::size_t m = 0; m < sources.size(); ++m) {
     triangles += sources[m].size();
     if (sources[m].has_materials()) material_rows += sources[m].size();
+    if (sources[m].has_normals()) {
+      geometry.meshes[m].normals = static_cast<dev::u32>(normal_rows);
+      normal_rows += sources[m].size();
+    }
     if (sources[m].has_texcoords()) {
       geometry.meshes[m].texcoords = static_cast<dev::u32>(texcoord_rows);
       texcoord_rows += sources[m].size();
     }
   }
-  geometry.triangle_normals.resize(triangles);
+  geometry.triangle_normals.resize(normal_rows);
   geometry.triangle_materials.resize(material_rows);
   geometry.triangle_texcoords.resize(texcoord_rows);
   geometry.triangle_source.resize(triangles);
   parallel_for(trees.size(), 1, [&](std::size_t m) {
-    write_triangle_rows(sources[m], trees[m].order, geometry.meshes[m].first_triangle,
-                        geometry.mesh_material_rows.at(m), geometry.meshes[m].texcoords, geometry);
+    write_triangle_rows(sources[m], trees[m].order, geometry.meshes[m], geometry.mesh_material_rows.at(m),
+                        geometry);
     if (rows_written) rows_written(m);
   });
   return trees;

@@ -72,6 +72,12 @@ GeometryData build_tables(const Scene& scene, const std::function<void(std::size
 
 }  // namespace
 
+std::size_t GeometryData::triangle_count() const {
+  std::size_t count = 0;
+  for (const dev::Mesh& mesh : meshes) count += mesh.triangle_count;
+  return count;
+}
+
 std::size_t GeometryData::device_bytes() const {
   return bytes(instances) + bytes(motions) + bytes(meshes) + bytes(triangle_normals) + bytes(triangle_materials) + bytes(triangle_texcoords) +
          bytes(nodes);

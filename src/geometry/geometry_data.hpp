@@ -20,7 +20,8 @@ struct GeometryData {
   DeviceTable<dev::Mesh> meshes;  // the scene's mesh files, then one mesh of the loose triangles
   // Per triangle, each mesh's triangles in the order of its BVH leaves, which is the order
   // Hit.primitive counts in (triangle_source maps them back to the file's order):
-  DeviceTable<dev::TriangleNormals> triangle_normals;  // zero without normals
+  DeviceTable<dev::TriangleNormals> triangle_normals;  // rows of the meshes with vertex normals
+                                                       // (Mesh.normals)
   DeviceTable<dev::u32> triangle_materials;  // rows of the meshes whose triangles have
                                              // materials of their own (Instance.material_rows)
   DeviceTable<dev::TriangleTexcoords> triangle_texcoords;  // rows of the meshes whose triangles
@@ -40,7 +41,7 @@ struct GeometryData {
   std::vector<dev::u32> mesh_material_rows;  // per mesh: where its triangle_materials rows
                                              // start, or CLRT_NO_MATERIAL_ROWS
 
-  std::size_t triangle_count() const { return triangle_normals.size(); }
+  std::size_t triangle_count() const;
   std::size_t device_bytes() const;
 };
 

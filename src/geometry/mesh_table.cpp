@@ -76,7 +76,6 @@ std::vector<std::array<float, 3>> TriangleSource::unit_normals() const {
 // A vertex normal that cannot be normalised is replaced by the face normal, so that every
 // triangle of a mesh with normals interpolates valid unit vectors.
 dev::TriangleNormals TriangleSource::normals(std::size_t t, const std::vector<std::array<float, 3>>& unit) const {
-  if (!has_normals_) return {};
   const std::uint32_t* c = &mesh_->corners[3 * t];
   const std::uint32_t* n = &mesh_->corner_normals[3 * t];
   dev::TriangleNormals out{};
@@ -124,21 +123,20 @@ dev::Mesh device_mesh(const TriangleSource& source, dev::u32 first_triangle) {
   dev::Mesh mesh{};
   mesh.first_triangle = first_triangle;
   mesh.triangle_count = static_cast<dev::u32>(source.size());
-  mesh.has_normals = source.has_normals() ? 1u : 0u;
-  mesh.texcoords = CLRT_NO_TEXCOORDS;  // its rows are placed with the other meshes'
+  mesh.normals = CLRT_NO_NORMALS;  // its rows, as its texture coordinates', are placed with the
+  mesh.texcoords = CLRT_NO_TEXCOORDS;  // other meshes'
   return mesh;
 }
 
 void write_triangle_rows(const TriangleSource& source, const std::vector<std::uint32_t>& order,
-                         std::size_t first, dev::u32 material_rows, dev::u32 texcoord_rows,
-                         GeometryData& out) {
+                         const dev::Mesh& mesh, dev::u32 material_rows, GeometryData& out) {
   const std::vector<std::array<float, 3>> unit = source.unit_normals();
   parallel_for(order.size(), kChunk, [&](std::size_t i) {
     const std::uint32_t t = order[i];
-    out.triangle_normals[first + i] = source.normals(t, unit);
+    if (source.has_normals()) out.triangle_normals[mesh.normals + i] = source.normals(t, unit);
     if (source.has_materials()) out.triangle_materials[material_rows + i] = source.material(t);
-    if (source.has_texcoords()) out.triangle_texcoords[texcoord_rows + i] = source.texcoords(t);
-    out.triangle_source[first + i] = t;
+    if (source.has_texcoords()) out.triangle_texcoords[mesh.texcoords + i] = source.texcoords(t);
+    out.triangle_source[mesh.first_triangle + i] = t;
   });
 }
 

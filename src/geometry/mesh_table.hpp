@@ -35,7 +35,7 @@ class TriangleSource {
   // triangles, so it is normalised once rather than at each of its corners.
   std::vector<std::array<float, 3>> unit_normals() const;
   // Triangle t's unit vertex normals, read from `unit` (unit_normals()); a corner whose normal
-  // could not be normalised gets the face normal. All zero without normals.
+  // could not be normalised gets the face normal. Only for a source that has_normals().
   dev::TriangleNormals normals(std::size_t t, const std::vector<std::array<float, 3>>& unit) const;
   // Whether it holds the scene's loose triangles.
   bool loose() const { return loose_ != nullptr; }
@@ -66,11 +66,11 @@ std::vector<Box> triangle_boxes(const TriangleSource& source);
 // tables (its BVH root is set later).
 dev::Mesh device_mesh(const TriangleSource& source, dev::u32 first_triangle);
 
-// Writes the per-triangle rows first + i = source triangle order[i] (normals, source index) and,
-// for a source with materials, material_rows + i, and for one with texture coordinates,
-// texcoord_rows + i, on every core; the tables must already hold them.
+// Writes the per-triangle rows of `mesh` (its device record, rows placed) for source triangle
+// order[i], on every core: triangle_source at mesh.first_triangle + i, and where the source has
+// them, normals at mesh.normals + i, materials at material_rows + i and texture coordinates at
+// mesh.texcoords + i. The tables must already hold those rows.
 void write_triangle_rows(const TriangleSource& source, const std::vector<std::uint32_t>& order,
-                         std::size_t first, dev::u32 material_rows, dev::u32 texcoord_rows,
-                         GeometryData& out);
+                         const dev::Mesh& mesh, dev::u32 material_rows, GeometryData& out);
 
 }  // namespace clrt

@@ -161,11 +161,12 @@ TEST_CASE("geometry tables: planes first, one mesh per model, loose triangles la
   CHECK(g.instances[0].shape == CLRT_SHAPE_PLANE);
   for (std::size_t i = 1; i < g.instances.size(); ++i) CHECK(g.instances[i].shape != CLRT_SHAPE_PLANE);
   REQUIRE(g.meshes.size() == 2);
-  CHECK(g.meshes[0].has_normals == 1);
-  CHECK(g.meshes[1].has_normals == 0);
+  // Only the model, which has vertex normals, has rows of them.
+  CHECK(g.meshes[0].normals == 0);
+  CHECK(g.meshes[1].normals == CLRT_NO_NORMALS);
   CHECK(g.meshes[1].triangle_count == 30);
   CHECK(g.triangle_count() == scene.meshes[0].corners.size() / 3 + 30);
-  CHECK(g.triangle_normals.size() == g.triangle_count());
+  CHECK(g.triangle_normals.size() == g.meshes[0].triangle_count);
   CHECK(g.triangle_materials.size() == 30);  // the loose triangles' only
   int loose_instances = 0;
   for (std::size_t i = 0; i < g.instances.size(); ++i) {
@@ -191,10 +192,11 @@ TEST_CASE("geometry tables: planes first, one mesh per model, loose triangles la
     sources.insert(g.triangle_source[t]);
   }
   CHECK(sources.size() == scene.triangles.size());
-  // Per triangle the device holds its normals (36 bytes), and a loose one its material (4); no
-  // triangle table: the BVH's leaf packets carry the vertices. No triangle has (u, v) of its own.
+  // Per triangle with vertex normals the device holds them (36 bytes), and per loose triangle
+  // its material (4); no triangle table: the BVH's leaf packets carry the vertices. No triangle
+  // has (u, v) of its own.
   CHECK(g.triangle_texcoords.empty());
-  CHECK(g.device_bytes() == g.instances.size() * 128 + g.meshes.size() * 32 + g.triangle_count() * 36 +
+  CHECK(g.device_bytes() == g.instances.size() * 128 + g.meshes.size() * 32 + g.meshes[0].triangle_count * 36 +
                                 30 * 4 + g.nodes.size() * sizeof(dev::BvhNode));
 }
 

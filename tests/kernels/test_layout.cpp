@@ -35,7 +35,7 @@ namespace {
   X(offsetof(Light, edge_v)) X(offsetof(Light, kind)) X(offsetof(Light, first_sample))       \
   X(offsetof(Light, spot_exponent)) X(sizeof(Instance)) X(offsetof(Instance, normal_to_world)) \
   X(offsetof(Instance, shape)) X(offsetof(Instance, cone_r0)) X(sizeof(Mesh))                \
-  X(offsetof(Mesh, has_normals)) X(sizeof(Triangle)) X(offsetof(Triangle, v2))               \
+  X(offsetof(Mesh, normals)) X(sizeof(Triangle)) X(offsetof(Triangle, v2))               \
   X(sizeof(TriangleNormals)) X(sizeof(RenderParams)) X(offsetof(RenderParams, ambient))      \
   X(offsetof(RenderParams, light_count)) X(offsetof(RenderParams, epsilon))                  \
   X(offsetof(RenderParams, environment)) X(offsetof(RenderParams, glossy))                     \
