@@ -84,15 +84,16 @@ CLRT_INLINE void to_object_rows(u32 motion, __global const f4* still,
   }
 }
 
-/* The maps an instance that does not move holds itself. */
+/* The maps an instance that does not move holds itself; the normals' map is the transpose of
+ * M^-1's upper 3x3, as for a moving one. */
 CLRT_INLINE InstanceFrame still_frame(__global const Instance* inst) {
   InstanceFrame f; /* row by row, as in to_object_rows */
   f.to_object[0] = inst->world_to_object[0];
   f.to_object[1] = inst->world_to_object[1];
   f.to_object[2] = inst->world_to_object[2];
-  f.normal_to_world[0] = inst->normal_to_world[0];
-  f.normal_to_world[1] = inst->normal_to_world[1];
-  f.normal_to_world[2] = inst->normal_to_world[2];
+  f.normal_to_world[0] = (float4)(f.to_object[0].x, f.to_object[1].x, f.to_object[2].x, 0.0f);
+  f.normal_to_world[1] = (float4)(f.to_object[0].y, f.to_object[1].y, f.to_object[2].y, 0.0f);
+  f.normal_to_world[2] = (float4)(f.to_object[0].z, f.to_object[1].z, f.to_object[2].z, 0.0f);
   return f;
 }
 

@@ -137,45 +137,44 @@ dev::BvhSpherePacket sphere_packet(const TopLevelItems& top, std::uint32_t first
   for (std::uint32_t k = 0; k < kPacket; ++k) {
     p.instance[k] = k < count ? top.first_instance + first + k : CLRT_NO_HIT;
     if (k >= count) continue;
-    const WorldSphere& s = *top.items.at(first + k).sphere;
-    set_lane(p.center_x, k, static_cast<float>(s.center.x));
-    set_lane(p.center_y, k, static_cast<float>(s.center.y));
-    set_lane(p.center_z, k, static_cast<float>(s.center.z));
-    set_lane(p.radius, k, static_cast<float>(s.radius));
+    const SphereLane& s = top.spheres.at(first + k);
+    set_lane(p.center_x, k, s.center[0]);
+    set_lane(p.center_y, k, s.center[1]);
+    set_lane(p.center_z, k, s.center[2]);
+    set_lane(p.radius, k, s.radius);
   }
   return p;
 }
 
 dev::BvhMeshInstancePacket mesh_instance_packet(const TopLevelItems& top, std::uint32_t item) {
-  const TopLevelItem& it = top.items.at(item);
+  const dev::Instance& inst = top.instance(item);
   dev::BvhMeshInstancePacket p{};
-  for (int r = 0; r < 3; ++r) p.world_to_object[r] = it.world_to_object[r];
-  p.root = static_cast<std::uint32_t>(it.mesh_root);
+  for (int r = 0; r < 3; ++r) p.world_to_object[r] = inst.world_to_object[r];
+  p.root = top.meshes[inst.mesh].root_node;
   p.instance = top.first_instance + item;
-  p.motion = it.motion;
+  p.motion = inst.motion;
   return p;
 }
 
 // The blocks of packets a top-level leaf needs.
 std::size_t packet_blocks(const TopLevelItems& top, const BvhLane& leaf) {
-  const TopLevelItem& first = top.items.at(leaf.first);
-  if (first.sphere) return packets_for(leaf.count) * std::size_t{CLRT_BVH_SPHERE_BLOCKS};
-  return first.mesh_root >= 0 && !first.merged ? CLRT_BVH_MESH_INSTANCE_BLOCKS : 0;
+  if (top.spheres.at(leaf.first)) return packets_for(leaf.count) * std::size_t{CLRT_BVH_SPHERE_BLOCKS};
+  return top.is_mesh(leaf.first) && !top.merged(leaf.first) ? CLRT_BVH_MESH_INSTANCE_BLOCKS : 0;
 }
 
 // Writes the packets of a top-level leaf from `block` on; returns its reference.
 LeafRef write_top_leaf(const TopLevelItems& top, const BvhLane& leaf, std::size_t block,
                        BvhTable& table) {
-  const TopLevelItem& first = top.items.at(leaf.first);
   const auto ref = ~static_cast<dev::i32>(checked_block(block));
-  if (first.sphere) {
+  if (top.spheres.at(leaf.first)) {
     for (std::uint32_t done = 0; done < leaf.count; done += kPacket, block += CLRT_BVH_SPHERE_BLOCKS)
       write_packet(table, block, sphere_packet(top, leaf.first + done, std::min(kPacket, leaf.count - done)));
     return {ref, CLRT_BVH_SPHERE_LEAF | packets_for(leaf.count)};
   }
   if (leaf.count != 1) throw std::logic_error("BVH: a top-level leaf of several instances that are not spheres");
-  if (first.mesh_root >= 0 && first.merged) return {static_cast<dev::i32>(first.mesh_root), 0};
-  if (first.mesh_root >= 0) {
+  if (top.merged(leaf.first))
+    return {static_cast<dev::i32>(top.meshes[top.instance(leaf.first).mesh].root_node), 0};
+  if (top.is_mesh(leaf.first)) {
     write_packet(table, block, mesh_instance_packet(top, leaf.first));
     return {ref, CLRT_BVH_MESH_LEAF};
   }
@@ -183,6 +182,13 @@ LeafRef write_top_leaf(const TopLevelItems& top, const BvhLane& leaf, std::size_
 }
 
 }  // namespace
+
+SphereLane SphereLane::of(const std::optional<WorldSphere>& sphere) {
+  if (!sphere) return {};
+  return {{static_cast<float>(sphere->center.x), static_cast<float>(sphere->center.y),
+           static_cast<float>(sphere->center.z)},
+          static_cast<float>(sphere->radius)};
+}
 
 std::size_t top_level_slots(const BvhTree& tree, const TopLevelItems& top) {
   std::size_t blocks = 0;

@@ -1,6 +1,7 @@
 #include "geometry/bvh_scene.hpp"
 
 #include <chrono>
+#include <unordered_map>
 
 #include "geometry/bvh_builder.hpp"
 #include "geometry/bvh_layout.hpp"
@@ -62,45 +63,58 @@ std::vector<std::size_t> meshes_in_layout_order(const GeometryData& geometry, bo
   return order;
 }
 
+// Instance indices at or after `first`, renumbered for the reorder of the table from `first` on
+// by `order` (entry i became the old entry first + order[i]); CLRT_NO_HIT stays.
+void follow_reorder(std::vector<dev::u32>& indices, std::size_t first, const std::vector<std::uint32_t>& order) {
+  std::unordered_map<dev::u32, dev::u32> moved;
+  for (dev::u32 i : indices)
+    if (i != CLRT_NO_HIT) moved.emplace(i, CLRT_NO_HIT);
+  if (moved.empty()) return;
+  for (std::size_t i = 0; i < order.size(); ++i) {
+    const auto it = moved.find(static_cast<dev::u32>(first + order[i]));
+    if (it != moved.end()) it->second = static_cast<dev::u32>(first + i);
+  }
+  for (dev::u32& i : indices)
+    if (i != CLRT_NO_HIT) i = moved.at(i);
+}
+
+// `items` rearranged so that entry i is the old entry order[i]; the old table is freed.
 template <class T>
-std::vector<T> in_order(const std::vector<T>& items, const std::vector<std::uint32_t>& order) {
-  std::vector<T> out;
-  for (std::uint32_t i : order) out.push_back(items[i]);
+std::vector<T> in_order(std::vector<T> items, const std::vector<std::uint32_t>& order) {
+  std::vector<T> out(order.size());
+  parallel_for(order.size(), 4096, [&](std::size_t i) { out[i] = items[order[i]]; });
   return out;
 }
 
 }  // namespace
 
 void build_scene_bvh(const Scene& scene, const std::vector<TriangleSource>& sources, GeometryData& out,
-                     const std::function<void(std::size_t)>& rows_written) {
+                     const SceneReleaseHooks& hooks) {
   const auto start = std::chrono::steady_clock::now();
-  const std::vector<BvhTree> mesh_trees = build_mesh_bvhs(sources, out, rows_written);
+  const std::vector<BvhTree> mesh_trees = build_mesh_bvhs(sources, out, hooks.rows_written);
 
-  const TopItems items = top_items(scene, out, mesh_trees);
+  TopItems items = top_items(scene, out, mesh_trees);
+  std::vector<dev::u32> only = identity_only_instances(scene, out);
+  if (hooks.instances_read) hooks.instances_read();
   BvhBuildSettings top_settings;
   top_settings.max_leaf_size = CLRT_BVH_MAX_SPHERES;
   const BvhTree top_tree = build_bvh(items.boxes, top_settings, items.alone);
+  std::vector<Box>().swap(items.boxes);
   reorder(out.instances, out.plane_count, top_tree.order);
   reorder(out.instance_source, out.plane_count, top_tree.order);
+  follow_reorder(only, out.plane_count, top_tree.order);
 
-  const std::vector<dev::u32> only = identity_only_instances(scene, out);
-  TopLevelItems top = top_level_items(out, only, in_order(items.spheres, top_tree.order));
+  const TopLevelItems top = top_level_items(out, std::move(only), in_order(std::move(items.spheres), top_tree.order));
   // A top level of just one mesh that it would lead straight into is that mesh's level, whose
   // root then is the table's: every ray is spared a node (the loose triangles of tetra-6, one
   // model placed as it is).
-  const bool mesh_only = top.items.size() == 1 && top.items[0].merged;
+  const bool mesh_only = top.size() == 1 && top.merged(0);
   out.nodes.assign(mesh_only ? 0 : top_level_slots(top_tree, top), dev::BvhNode{});
   for (std::size_t m : meshes_in_layout_order(out, mesh_only)) {
     dev::Mesh& mesh = out.meshes[m];
-    mesh.root_node = append_mesh_level(mesh_trees[m], sources[m], mesh.first_triangle, only[m], out.nodes);
+    mesh.root_node = append_mesh_level(mesh_trees[m], sources[m], mesh.first_triangle, top.only[m], out.nodes);
   }
-  if (!mesh_only) {
-    for (std::size_t i = 0; i < top.items.size(); ++i) {
-      const dev::Instance& inst = out.instances[top.first_instance + i];
-      if (inst.shape == CLRT_SHAPE_MESH) top.items[i].mesh_root = out.meshes[inst.mesh].root_node;
-    }
-    write_top_level(top_tree, top, out.nodes);
-  }
+  if (!mesh_only) write_top_level(top_tree, top, out.nodes);
   out.build_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 

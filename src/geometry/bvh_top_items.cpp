@@ -50,10 +50,11 @@ TopItems top_items(const Scene& scene, const GeometryData& geometry, const std::
       items.boxes[item] = transformed_box(mesh_boxes[inst.mesh], m);
     } else {
       items.boxes[item] = shape_world_box(scene.instances[source]);
-      items.spheres[item] = world_sphere(scene.instances[source]);
+      items.spheres[item] = SphereLane::of(world_sphere(scene.instances[source]));
     }
   });
-  for (const std::optional<WorldSphere>& sphere : items.spheres) items.alone.push_back(!sphere);
+  items.alone.reserve(count);
+  for (const SphereLane& sphere : items.spheres) items.alone.push_back(!sphere);
   return items;
 }
 
@@ -73,23 +74,14 @@ std::vector<dev::u32> identity_only_instances(const Scene& scene, const Geometry
   return only;
 }
 
-TopLevelItems top_level_items(const GeometryData& geometry, const std::vector<dev::u32>& only,
-                              const std::vector<std::optional<WorldSphere>>& spheres) {
+TopLevelItems top_level_items(const GeometryData& geometry, std::vector<dev::u32> only,
+                              std::vector<SphereLane> spheres) {
   TopLevelItems top;
   top.first_instance = geometry.plane_count;
-  for (std::size_t i = 0; i < spheres.size(); ++i) {
-    const auto index = static_cast<dev::u32>(top.first_instance + i);
-    const dev::Instance& inst = geometry.instances[index];
-    TopLevelItem item;
-    item.sphere = spheres[i];
-    if (inst.shape == CLRT_SHAPE_MESH) {
-      item.mesh_root = 0;
-      item.merged = only[inst.mesh] == index;
-      for (int r = 0; r < 3; ++r) item.world_to_object[r] = inst.world_to_object[r];
-      item.motion = inst.motion;
-    }
-    top.items.push_back(item);
-  }
+  top.instances = geometry.instances.data();
+  top.meshes = geometry.meshes.data();
+  top.only = std::move(only);
+  top.spheres = std::move(spheres);
   return top;
 }
 

@@ -17,7 +17,7 @@ namespace clrt {
 struct TopItems {
   std::vector<Box> boxes;
   std::vector<bool> alone;
-  std::vector<std::optional<WorldSphere>> spheres;
+  std::vector<SphereLane> spheres;
 };
 
 TopItems top_items(const Scene& scene, const GeometryData& geometry, const std::vector<BvhTree>& mesh_trees);
@@ -26,10 +26,9 @@ TopItems top_items(const Scene& scene, const GeometryData& geometry, const std::
 // transform (the loose triangles' mesh always); else CLRT_NO_HIT.
 std::vector<dev::u32> identity_only_instances(const Scene& scene, const GeometryData& geometry);
 
-// The top level's items as the layout takes them, for instances already in leaf order and
-// their `spheres` in that order; a mesh instance's root block is left to fill in once its mesh
-// is laid out (0 meanwhile).
-TopLevelItems top_level_items(const GeometryData& geometry, const std::vector<dev::u32>& only,
-                              const std::vector<std::optional<WorldSphere>>& spheres);
+// The top level's items as the layout takes them, over `geometry`'s instances already in leaf
+// order and their `spheres` in that order (moved in).
+TopLevelItems top_level_items(const GeometryData& geometry, std::vector<dev::u32> only,
+                              std::vector<SphereLane> spheres);
 
 }  // namespace clrt

@@ -1,6 +1,7 @@
 #include "geometry/geometry_data.hpp"
 
 #include <cstdint>
+#include <deque>
 #include <functional>
 #include <stdexcept>
 
@@ -46,11 +47,15 @@ std::vector<dev::u32> material_rows(const std::vector<TriangleSource>& sources) 
   return rows;
 }
 
-GeometryData build_tables(const Scene& scene, const std::function<void(std::size_t)>& rows_written) {
+GeometryData build_tables(const Scene& scene, const SceneReleaseHooks& hooks) {
   GeometryData out;
   std::vector<TriangleSource> sources(scene.meshes.begin(), scene.meshes.end());
   if (!scene.triangles.empty()) sources.emplace_back(scene.triangles);
   out.mesh_material_rows = material_rows(sources);
+  // Sized once: grown by doubling, a table of 3M instances (384 MB) was twice that for a moment.
+  const std::size_t instances = scene.instances.size() + (scene.triangles.empty() ? 0 : 1);
+  out.instances.reserve(instances);
+  out.instance_source.reserve(instances);
   append_instances(scene, true, out);
   out.plane_count = static_cast<dev::u32>(out.instances.size());
   append_instances(scene, false, out);
@@ -66,7 +71,7 @@ GeometryData build_tables(const Scene& scene, const std::function<void(std::size
     if (triangles > UINT32_MAX) throw std::length_error("the scene has more than 2^32 - 1 triangles");
   }
   build_emitter_table(scene, sources, out);
-  build_scene_bvh(scene, sources, out, rows_written);
+  build_scene_bvh(scene, sources, out, hooks);
   return out;
 }
 
@@ -86,14 +91,17 @@ std::size_t GeometryData::device_bytes() const {
 GeometryData build_geometry(const Scene& scene) { return build_tables(scene, {}); }
 
 GeometryData build_geometry_for_render(Scene& scene) {
-  GeometryData out = build_tables(scene, [&scene](std::size_t m) {
+  SceneReleaseHooks hooks;
+  hooks.rows_written = [&scene](std::size_t m) {
     if (m >= scene.meshes.size()) return;  // the loose triangles' mesh
     MeshData& mesh = scene.meshes[m];
     std::vector<Vec3>().swap(mesh.normals);
     std::vector<std::uint32_t>().swap(mesh.corner_normals);
     std::vector<std::array<float, 2>>().swap(mesh.texcoords);
     std::vector<std::uint32_t>().swap(mesh.corner_texcoords);
-  });
+  };
+  hooks.instances_read = [&scene] { std::deque<InstanceSpec>().swap(scene.instances); };
+  GeometryData out = build_tables(scene, hooks);
   release_mesh_data(scene);
   std::vector<int>().swap(out.instance_source);
   std::vector<dev::u32>().swap(out.triangle_source);

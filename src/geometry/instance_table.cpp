@@ -22,16 +22,12 @@ dev::u32 device_shape(ShapeKind shape) {
   throw std::logic_error("unknown shape kind");
 }
 
-// Normals go to world space by (M^-1)^T.
+// Normals go to world space by (M^-1)^T, which the device takes from the same rows.
 dev::Instance placed(const Mat4& inverse) {
-  const Mat4 normal_matrix = inverse.transposed();
   dev::Instance inst{};
   inst.glow = CLRT_NO_GLOW;  // until the emitter table says otherwise
   inst.motion = CLRT_NO_MOTION;  // until the geometry's motion table says otherwise
-  for (int r = 0; r < 3; ++r) {
-    inst.world_to_object[r] = row(inverse, r, true);
-    inst.normal_to_world[r] = row(normal_matrix, r, false);
-  }
+  for (int r = 0; r < 3; ++r) inst.world_to_object[r] = row(inverse, r, true);
   return inst;
 }
 

@@ -88,20 +88,22 @@ int run(const mpi::Session& session, const CliOptions& cli, const mpi::TileSize&
   files = mpi::share_files(session, files, report.scene_bytes_sent);
   std::optional<Renderer> renderer;
   RenderSetup setup;
+  std::optional<std::string> dark_note;
   mine = attempt([&] {
     if (!session.first()) scene = load_scene(cli.scene, MemoryFiles(files));
     files.clear();
     setup = checked_render_setup(cli, scene, mpi::rank_devices(cli.device, session.local_rank()));
     if (session.first()) check_output_space(output, FramePlan{}, render_region(setup.options));
+    // Before the build, which frees the scene's instances.
+    dark_note = dark_scene_note(scene, setup.options.mode);
     renderer.emplace(scene, built_geometry(scene, progress), setup, &progress);
   });
   if (!all_went_well(session, mine, status, progress)) return status;
 
   const PixelRect region = render_region(setup.options);
   const DisplayTransform display = display_transform(cli, setup.options.mode);
-  if (session.first() && !cli.quiet)
-    if (const auto note = dark_scene_note(scene, setup.options.mode))
-      progress.message("clrt-mpi: note: " + cli.scene + ": " + *note);
+  if (session.first() && !cli.quiet && dark_note)
+    progress.message("clrt-mpi: note: " + cli.scene + ": " + *dark_note);
   // Only rank 0 knows the output: the tiles travel in the pixels it needs.
   std::string eight_bit_flag = renders_bytes(output, display) ? "1" : "0";
   session.broadcast(eight_bit_flag);

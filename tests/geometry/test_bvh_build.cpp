@@ -196,7 +196,7 @@ TEST_CASE("geometry tables: planes first, one mesh per model, loose triangles la
   // its material (4); no triangle table: the BVH's leaf packets carry the vertices. No triangle
   // has (u, v) of its own.
   CHECK(g.triangle_texcoords.empty());
-  CHECK(g.device_bytes() == g.instances.size() * 128 + g.meshes.size() * 32 + g.meshes[0].triangle_count * 36 +
+  CHECK(g.device_bytes() == g.instances.size() * 80 + g.meshes.size() * 32 + g.meshes[0].triangle_count * 36 +
                                 30 * 4 + g.nodes.size() * sizeof(dev::BvhNode));
 }
 

@@ -63,14 +63,11 @@ dev::f4 to_f4(const Vec3& v, double w) {
 }
 
 dev::Instance instance_of(const Mat4& m, dev::u32 shape, double r0, double r1) {
-  const Mat4 inverse = m.inverse(), normal = inverse.transposed();
+  const Mat4 inverse = m.inverse();
   dev::Instance instance{};
-  for (int row = 0; row < 3; ++row) {
+  for (int row = 0; row < 3; ++row)
     instance.world_to_object[row] = to_f4({inverse.m[row][0], inverse.m[row][1], inverse.m[row][2]},
                                           inverse.m[row][3]);
-    instance.normal_to_world[row] =
-        to_f4({normal.m[row][0], normal.m[row][1], normal.m[row][2]}, 0);
-  }
   instance.shape = shape;
   instance.cone_r0 = static_cast<float>(r0);
   instance.cone_r1 = static_cast<float>(r1);

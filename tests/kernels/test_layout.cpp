@@ -33,7 +33,7 @@ namespace {
   X(sizeof(Emitter)) X(offsetof(Emitter, edge2)) X(offsetof(Emitter, radiance))              \
   X(offsetof(Hit, glow)) X(offsetof(Instance, glow)) X(offsetof(RenderParams, glow_light))   \
   X(offsetof(Light, edge_v)) X(offsetof(Light, kind)) X(offsetof(Light, first_sample))       \
-  X(offsetof(Light, spot_exponent)) X(sizeof(Instance)) X(offsetof(Instance, normal_to_world)) \
+  X(offsetof(Light, spot_exponent)) X(sizeof(Instance)) X(offsetof(Instance, material)) \
   X(offsetof(Instance, shape)) X(offsetof(Instance, cone_r0)) X(sizeof(Mesh))                \
   X(offsetof(Mesh, normals)) X(sizeof(Triangle)) X(offsetof(Triangle, v2))               \
   X(sizeof(TriangleNormals)) X(sizeof(RenderParams)) X(offsetof(RenderParams, ambient))      \
