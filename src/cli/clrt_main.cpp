@@ -2,10 +2,12 @@
 
 #include <iostream>
 #include <new>
+#include <string>
 
 #include "cli/heap_policy.hpp"
 #include "cli/options.hpp"
 #include "cli/run_clrt.hpp"
+#include "device/background_store.hpp"
 #include "image/image.hpp"
 #include "image/interrupt_cleanup.hpp"
 #include "render/render_limits.hpp"
@@ -14,6 +16,8 @@
 namespace clrt {
 
 int clrt_main(int argc, char** argv) {
+  // Started by clrt itself once an image is written (device/background_store.hpp).
+  if (argc == 3 && std::string(argv[1]) == kStoreProgramArgument) return store_program_from_request(argv[2]);
   remove_temporaries_on_signal();
   return_large_blocks_when_freed();
   const ParseResult parsed = parse_command_line(argc, argv);

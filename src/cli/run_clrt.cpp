@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "device/background_store.hpp"
 #include "device/device_select.hpp"
 #include "geometry/geometry_data.hpp"
 #include "image/fsf_animation.hpp"
@@ -210,6 +211,7 @@ int render_frames(const CliOptions& cli, Scene& scene, const FramePlan& frames,
   progress.finish("clrt: " + describe_written(output, frames) + " (" + size + ", " +
                   seconds_text(stats.total_seconds) + ")");
   print_stats(cli, stats, output);
+  start_background_stores();
   return 0;
 }
 

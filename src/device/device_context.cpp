@@ -4,6 +4,7 @@
 #include <sstream>
 #include <vector>
 
+#include "device/background_store.hpp"
 #include "device/device_profile.hpp"
 #include "device/kernel_args.hpp"
 #include "device/program_cache.hpp"
@@ -82,8 +83,8 @@ std::optional<compute::program> build_cached(const ProgramCache& cache,
 
 // PoCL keeps every kernel it compiles in a cache of its own, and asked for a program's binary it
 // compiles each of the program's kernels once more, in a form for any work-group size: 9.5 s of
-// a 14 s first render of reflect.ray, where a warm build from source costs its cache lookup
-// only, some 40 ms more than loading clrt's binary.
+// a 14 s first render of reflect.ray, where a warm build from source costs its cache lookup,
+// some 30 ms more than loading clrt's binary. So its binaries are made in the background.
 bool driver_keeps_compiled_kernels(const compute::device& device) {
   return device.platform().name() == "Portable Computing Language";
 }
@@ -95,11 +96,13 @@ compute::program DeviceContext::build(const std::string& source, const std::stri
   const std::string all_options =
       device_profile(entry_.device).program_options + (options.empty() ? "" : " " + options);
   std::optional<ProgramCache> cache;
-  if (const auto folder = ProgramCache::folder_from_environment(driver_keeps_compiled_kernels(entry_.device)))
+  if (const auto folder = ProgramCache::folder_from_environment())
     cache.emplace(*folder, program_identity(entry_.device, source, all_options));
   if (cache)
     if (auto program = build_cached(*cache, context_, entry_.device, all_options)) return *program;
-  if (compiling) compiling(cache.has_value());
+  const bool in_background = cache && driver_keeps_compiled_kernels(entry_.device) &&
+                             !ProgramCache::named_by_environment();
+  if (compiling) compiling(cache && !in_background);
   compute::program program = compute::program::create_with_source(source, context_);
   const cl_int status = clBuildProgram(program.get(), 1, &entry_.device.get(), all_options.c_str(),
                                        nullptr, nullptr);
@@ -108,7 +111,10 @@ compute::program DeviceContext::build(const std::string& source, const std::stri
                       compute::opencl_error::to_string(status) + "); build log:\n" +
                       program.build_log());
   }
-  if (cache) cache->store(cache_payload(program));
+  if (in_background)
+    defer_program_store(cache->file(), entry_.device, options, source);
+  else if (cache)
+    cache->store(cache_payload(program));
   return program;
 }
 

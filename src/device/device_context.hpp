@@ -13,7 +13,8 @@
 namespace clrt {
 
 // Told before a program is compiled from source: `first_run` when clrt's program cache was
-// asked and lacks it; false when the driver's own cache decides (PoCL's: it may be quick).
+// asked and lacks it; false when the driver's own cache decides (PoCL's: it may be quick, and the
+// entry is stored in the background afterwards).
 using CompileNotice = std::function<void(bool first_run)>;
 
 class DeviceContext {

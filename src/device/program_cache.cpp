@@ -41,14 +41,18 @@ std::optional<std::filesystem::path> environment_path(const char* name) {
 
 }  // namespace
 
-std::optional<std::filesystem::path> ProgramCache::folder_from_environment(bool keeps_compiled_kernels) {
+std::optional<std::filesystem::path> ProgramCache::folder_from_environment() {
   if (const char* own = std::getenv("CLRT_CACHE_DIR"))
     return *own == '\0' ? std::nullopt : std::optional<std::filesystem::path>(own);
-  if (keeps_compiled_kernels) return std::nullopt;
   // The XDG base directory specification: a relative path there is invalid and is ignored.
   if (auto xdg = environment_path("XDG_CACHE_HOME"); xdg && xdg->is_absolute()) return *xdg / "clrt";
   if (auto home = environment_path("HOME")) return *home / ".cache" / "clrt";
   return std::nullopt;
+}
+
+bool ProgramCache::named_by_environment() {
+  const char* own = std::getenv("CLRT_CACHE_DIR");
+  return own != nullptr && *own != '\0';
 }
 
 ProgramCache::ProgramCache(std::filesystem::path folder, const std::string& identity)

@@ -114,27 +114,28 @@ TEST_CASE("a folder that cannot be made leaves the cache empty, quietly", "[prog
 }
 
 TEST_CASE("the folder comes from CLRT_CACHE_DIR, XDG_CACHE_HOME or HOME", "[program-cache]") {
-  for (const bool driver_caches : {false, true}) {
+  {
     ScopedEnv own("CLRT_CACHE_DIR", "/somewhere/clrt");
-    CHECK(ProgramCache::folder_from_environment(driver_caches) == std::filesystem::path("/somewhere/clrt"));
+    CHECK(ProgramCache::folder_from_environment() == std::filesystem::path("/somewhere/clrt"));
+    CHECK(ProgramCache::named_by_environment());
     ScopedEnv off("CLRT_CACHE_DIR", "");
-    CHECK_FALSE(ProgramCache::folder_from_environment(driver_caches));
+    CHECK_FALSE(ProgramCache::folder_from_environment());
+    CHECK_FALSE(ProgramCache::named_by_environment());
   }
   ScopedEnv own("CLRT_CACHE_DIR", nullptr);
+  CHECK_FALSE(ProgramCache::named_by_environment());
   {
     ScopedEnv xdg("XDG_CACHE_HOME", "/xdg");
-    CHECK(ProgramCache::folder_from_environment(false) == std::filesystem::path("/xdg/clrt"));
-    CHECK_FALSE(ProgramCache::folder_from_environment(true));
+    CHECK(ProgramCache::folder_from_environment() == std::filesystem::path("/xdg/clrt"));
   }
   ScopedEnv xdg("XDG_CACHE_HOME", nullptr);
   {
     ScopedEnv home("HOME", "/home/user");
-    CHECK(ProgramCache::folder_from_environment(false) == std::filesystem::path("/home/user/.cache/clrt"));
-    CHECK_FALSE(ProgramCache::folder_from_environment(true));
+    CHECK(ProgramCache::folder_from_environment() == std::filesystem::path("/home/user/.cache/clrt"));
     // A relative XDG_CACHE_HOME is invalid by the XDG specification: HOME's cache is used.
     ScopedEnv relative("XDG_CACHE_HOME", "relative/cache");
-    CHECK(ProgramCache::folder_from_environment(false) == std::filesystem::path("/home/user/.cache/clrt"));
+    CHECK(ProgramCache::folder_from_environment() == std::filesystem::path("/home/user/.cache/clrt"));
   }
   ScopedEnv home("HOME", nullptr);
-  CHECK_FALSE(ProgramCache::folder_from_environment(false));
+  CHECK_FALSE(ProgramCache::folder_from_environment());
 }
