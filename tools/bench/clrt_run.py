@@ -5,6 +5,7 @@ The scripts in the folders beside this file import it with
     sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[1]))
 """
 
+import argparse
 import dataclasses
 import json
 import os
@@ -85,3 +86,20 @@ def pocl_threads(threads, env=None):
     POCL_CPU_MAX_CU_COUNT."""
     return {**(os.environ if env is None else env), "POCL_MAX_PTHREAD_COUNT": str(threads),
             "POCL_CPU_MAX_CU_COUNT": str(threads)}
+
+
+def versions_parser(doc, runs, runs_help):
+    """The command line of a script that runs one or more clrt binaries in turn: --clrt
+    (repeatable; the binaries, default build/clrt) and --runs (default `runs`), described by the
+    first paragraph of `doc`. The parsed arguments' `binaries` are the ones to run."""
+    parser = argparse.ArgumentParser(description=doc.split("\n\n")[0])
+    parser.add_argument("--clrt", action="append", type=pathlib.Path, dest="binaries", metavar="BIN",
+                        help="a clrt binary (repeatable; default build/clrt)")
+    parser.add_argument("--runs", type=int, default=runs, help=runs_help)
+    parser.set_defaults(binaries=None)
+    return parser
+
+
+def binaries_of(args):
+    """The binaries --clrt named, or build/clrt."""
+    return args.binaries or [CLRT]

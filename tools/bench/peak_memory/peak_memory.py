@@ -13,7 +13,6 @@ vertex normals at 3840x2160. --scale multiplies the triangle and sphere counts (
 small one). It prints each run's peak resident memory (wait4's ru_maxrss) in KiB and MB.
 """
 
-import argparse
 import math
 import pathlib
 import random
@@ -59,13 +58,10 @@ def write_spheres(folder, count):
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    parser.add_argument("--clrt", action="append", type=pathlib.Path,
-                        help="a clrt binary (repeatable; default build/clrt)")
-    parser.add_argument("--runs", type=int, default=3, help="runs of each binary on each scene")
+    parser = clrt_run.versions_parser(__doc__, 3, "runs of each binary on each scene (default 3)")
     parser.add_argument("--scale", type=float, default=1.0, help="multiplies the scenes' sizes")
     args = parser.parse_args()
-    binaries = args.clrt or [clrt_run.CLRT]
+    binaries = clrt_run.binaries_of(args)
 
     with tempfile.TemporaryDirectory(prefix="clrt-peak-memory-") as work:
         work = pathlib.Path(work)

@@ -13,7 +13,6 @@ run with the others so that the machine's drift falls on all alike:
 It prints the median, mean, best and worst wall time of each in milliseconds.
 """
 
-import argparse
 import os
 import pathlib
 import statistics
@@ -35,15 +34,12 @@ def wait_for_store(folder, timeout=600.0):
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    parser.add_argument("--clrt", action="append", type=pathlib.Path,
-                        help="a clrt binary (repeatable; default build/clrt)")
-    parser.add_argument("--runs", type=int, default=40, help="timed runs of each (default 40)")
+    parser = clrt_run.versions_parser(__doc__, 40, "timed runs of each (default 40)")
     parser.add_argument("--warmup", type=int, default=3, help="untimed runs of each (default 3)")
     parser.add_argument("--scene", type=pathlib.Path, default=clrt_run.REPO / "scenes" / "reflect.ray")
     parser.add_argument("--resolution", default="500x300")
     args = parser.parse_args()
-    binaries = args.clrt or [clrt_run.CLRT]
+    binaries = clrt_run.binaries_of(args)
 
     with tempfile.TemporaryDirectory(prefix="clrt-warm-start-") as work:
         work = pathlib.Path(work)
