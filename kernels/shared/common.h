@@ -26,7 +26,11 @@ typedef int i32;
  * emits when it inlines a function returning a structure; it does not vectorise either. */
 #define CLRT_INLINE inline
 #else
-#define CLRT_INLINE inline __attribute__((always_inline))
+/* Static, so that the front end drops each function once it is inlined everywhere: PoCL (which
+ * defines `inline` away) otherwise kept every one, its callees inlined, beside the kernels, and
+ * read that bitcode (817 KB for the renderer's program, 292 KB without them) on every warm
+ * build (docs/performance.md#what-limits-the-warm-start). */
+#define CLRT_INLINE static inline __attribute__((always_inline))
 #endif
 #define CLRT_CALLABLE inline
 #else
