@@ -1,7 +1,7 @@
 // Program binaries made after the render, in a process of their own. Asked for a program's
 // binary, PoCL compiles every kernel once more for any work-group size: seconds that a first
 // render would wait for (docs/performance.md#start-up). Yet a warm run that loads the binary
-// spares PoCL's lookup of the source in its own cache, about a third of a warm run. So for a
+// spares PoCL's lookup of the source in its own cache, about a fifth of a warm run. So for a
 // driver that keeps its compiled kernels, a program built from source is only noted here; once
 // the image is written, clrt starts itself again, detached and at low priority, to build the
 // binary and store it in the program cache (program_cache.hpp) for the runs after.
