@@ -47,7 +47,7 @@ ClrtBatch ClrtTracer::occlusion_batch(const RaySet& set) {
   std::vector<dev::ShadowRay> rays;
   rays.reserve(set.rays.size());
   for (const HostRay& r : set.rays)
-    rays.push_back({f4_of(r.origin, r.tmax), f4_of(r.dir, 0), {1, 1, 1, 0}, 0, {0, 0, 0}});
+    rays.push_back({f4_of(r.origin, r.tmax), f4_of(r.dir, 0), {1, 1, 1, 0}, 0, 0.0f, {0, 0}});
   ClrtBatch batch;
   batch.occlusion = true;
   batch.count = rays.size();
