@@ -570,10 +570,16 @@ TEST_CASE("texture coordinate rows follow each mesh's leaf order, only for meshe
   CHECK(scene.meshes[0].corner_texcoords.capacity() == 0);
 }
 
-TEST_CASE("a build for a render frees the meshes as it goes and makes the same tables", "[bvh]") {
+TEST_CASE("a build for a render frees the meshes and instances as it goes and makes the same tables", "[bvh]") {
   Scene scene;
   scene.meshes.push_back(ball_mesh(6, 8, true));   // with normals: freed after the rows
   scene.meshes.push_back(ball_mesh(5, 7, false));  // without
+  // Spheres and a cube first, so that the top level reorders the instances: mesh 0, placed alone
+  // with the identity, is entered straight from the top level, wherever its instance goes.
+  for (int i = 0; i < 40; ++i)
+    scene.instances.push_back(place_instance(ShapeKind::Sphere, Mat4::translate({0.5 * i, 2, 1.0 * (i % 3)}) *
+                                                                    Mat4::scale({0.2, 0.2, 0.2})));
+  scene.instances.push_back(place_instance(ShapeKind::Cube, Mat4::rotate(30, {0, 1, 0})));
   for (int m = 0; m < 2; ++m) {
     scene.meshes[static_cast<std::size_t>(m)].path = "ball" + std::to_string(m) + ".obj";
     scene.instances.push_back(place_instance(ShapeKind::Mesh, Mat4::translate({3.0 * m, 0, 0})));
@@ -581,6 +587,7 @@ TEST_CASE("a build for a render frees the meshes as it goes and makes the same t
   }
   scene.triangles.push_back({{0, 0, 5}, {1, 0, 5}, {0, 1, 5}, 0});
   const GeometryData kept = build_geometry(scene);
+  check_scene_bvh(scene, kept);
   const GeometryData freed = build_geometry_for_render(scene);
   const auto same_bytes = [](const auto& a, const auto& b) {
     return a.size() == b.size() && std::memcmp(a.data(), b.data(), sizeof(a[0]) * a.size()) == 0;
@@ -600,4 +607,5 @@ TEST_CASE("a build for a render frees the meshes as it goes and makes the same t
     CHECK(m.corner_normals.capacity() == 0);
   }
   CHECK(scene.triangles.size() == 1);
+  CHECK(scene.instances.empty());
 }
