@@ -67,7 +67,11 @@ TEST_CASE("a glowing mesh's rows face where (M^-1)^T turns its normals", "[geome
     INFO((mirrored ? "mirrored" : "not mirrored"));
     Scene scene;
     scene.materials.resize(1);
-    scene.meshes.push_back(MeshData{"tri.obj", {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {}, {0, 1, 2}, {}, {}, {}, {}, {}});
+    MeshData triangle;
+    triangle.path = "tri.obj";
+    triangle.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+    triangle.corners = {0, 1, 2};
+    scene.meshes.push_back(triangle);
     const Mat4 m = Mat4::translate({0, 0, -3}) * Mat4::scale({mirrored ? -2.0 : 2.0, 1, 1});
     InstanceSpec mesh = place_instance(ShapeKind::Mesh, m, glowing(scene, {0, 2, 0}));
     mesh.mesh = 0;
@@ -90,7 +94,10 @@ TEST_CASE("a mesh's faces glow by their own MTL materials where the instance kee
     scene.materials.resize(1);
     const int glow = glowing(scene, {0, 3, 0});
     // Two triangles: the first under a usemtl naming the glowing material, the second before any.
-    MeshData quad{"quad.obj", {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}}, {}, {0, 1, 2, 0, 2, 3}, {}, {}, {}, {}, {}};
+    MeshData quad;
+    quad.path = "quad.obj";
+    quad.positions = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+    quad.corners = {0, 1, 2, 0, 2, 3};
     quad.material_names = {{"lamp", {}}};
     quad.triangle_names = {0, kNoMeshMaterial};
     quad.name_materials = {glow};

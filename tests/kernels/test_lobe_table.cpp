@@ -110,7 +110,7 @@ Lobes lobe_rows() {
 }
 
 // A white material every lobe has a share of: Lambertian, Phong (exponent n), mirror and glass.
-dev::Material every_lobe(float exponent) { return {{1, 1, 1, 0}, 0, 0.5f, 0.5f, exponent, 0.2f, 0.2f, 1.5f, 0, {0, 0, 0, 0}}; }
+dev::Material every_lobe(float exponent) { return {{1, 1, 1, 0}, 0, 0.5f, 0.5f, exponent, 0.2f, 0.2f, 1.5f, 0, {0, 0, 0, 0}, {}}; }
 
 }  // namespace
 

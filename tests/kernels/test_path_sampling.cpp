@@ -76,7 +76,7 @@ struct DrawContinuationsArgs {
 
 // White, ka 0.
 dev::Material material(float kd, float ks, float n, float kr, float kt, float ior = 1.5f) {
-  return {{1, 1, 1, 0}, 0, kd, ks, n, kr, kt, ior, 0, {0, 0, 0, 0}};
+  return {{1, 1, 1, 0}, 0, kd, ks, n, kr, kt, ior, 0, {0, 0, 0, 0}, {}};
 }
 
 // The density with which the smooth lobes draw wi, as docs/path-tracing.md states it, over the

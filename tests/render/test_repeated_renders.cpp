@@ -25,7 +25,8 @@ namespace {
 // One render of `setup` on `prepared`'s context and program, through a lane of its own.
 FloatImage render_on(const Scene& scene, const RenderSetup& setup, const PreparedDevice& prepared) {
   std::vector<PreparedDevice> lane;
-  lane.push_back({std::make_unique<DeviceContext>(prepared.context->lane()), prepared.program});
+  lane.push_back({std::make_unique<DeviceContext>(prepared.context->lane()), prepared.program, prepared.mode,
+                  prepared.features});
   Renderer renderer(scene, build_geometry(scene), setup, std::move(lane));
   FloatImage image = std::get<FloatImage>(renderer.render(render_region(setup.options), false));
   RenderStats stats;
