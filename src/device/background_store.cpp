@@ -3,18 +3,16 @@
 #include <fcntl.h>
 #include <spawn.h>
 #include <sys/resource.h>
-#include <sys/stat.h>
 #include <unistd.h>
 
 #include <chrono>
 #include <cstdlib>
-#include <fstream>
-#include <iterator>
 #include <mutex>
 #include <sstream>
 #include <system_error>
 #include <vector>
 
+#include "device/cache_file.hpp"
 #include "device/device_context.hpp"
 
 extern char** environ;
@@ -74,26 +72,6 @@ bool request_under_way(const std::filesystem::path& request) {
   return !error && std::filesystem::file_time_type::clock::now() - written < kRequestLifetime;
 }
 
-// Written whole under a temporary name, then renamed into place.
-bool write_request(const std::filesystem::path& request, const std::string& text) {
-  std::error_code error;
-  std::filesystem::create_directories(request.parent_path(), error);
-  if (error) return false;
-  std::filesystem::path temporary = request;
-  temporary += "." + std::to_string(::getpid()) + ".tmp";
-  {
-    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-    out << text;
-    if (!out.flush()) {
-      std::filesystem::remove(temporary, error);
-      return false;
-    }
-  }
-  std::filesystem::rename(temporary, request, error);
-  if (error) std::filesystem::remove(temporary, error);
-  return !error;
-}
-
 bool spawn_store(const std::filesystem::path& request) {
   posix_spawn_file_actions_t actions;
   posix_spawnattr_t attributes;
@@ -119,18 +97,6 @@ bool spawn_store(const std::filesystem::path& request) {
   return started;
 }
 
-std::optional<std::string> read_request(const std::filesystem::path& request) {
-  const int fd = ::open(request.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
-  if (fd < 0) return std::nullopt;
-  struct stat st {};
-  const bool plausible = ::fstat(fd, &st) == 0 && S_ISREG(st.st_mode) &&
-                         static_cast<std::uintmax_t>(st.st_size) <= kLargestRequest;
-  ::close(fd);
-  if (!plausible) return std::nullopt;
-  std::ifstream in(request, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-}
-
 }  // namespace
 
 void defer_program_store(const std::filesystem::path& entry, const compute::device& device,
@@ -151,7 +117,7 @@ void start_background_stores() {
   }
   for (const PendingStore& store : stores) {
     const std::filesystem::path request = request_of(store.entry);
-    if (request_under_way(request) || !write_request(request, request_text(store))) continue;
+    if (request_under_way(request) || !write_cache_file(request, request_text(store))) continue;
     if (!spawn_store(request)) {
       std::error_code error;
       std::filesystem::remove(request, error);
@@ -162,7 +128,7 @@ void start_background_stores() {
 int store_program_from_request(const std::filesystem::path& request) {
   // Behind whatever the user runs next.
   ::setpriority(PRIO_PROCESS, 0, 19);
-  const std::optional<std::string> text = read_request(request);
+  const std::optional<std::string> text = read_cache_file(request, kLargestRequest);
   const std::optional<PendingStore> store = text ? parse_request(*text) : std::nullopt;
   int status = 1;
   if (store) {

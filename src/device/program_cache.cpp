@@ -1,20 +1,18 @@
 #include "device/program_cache.hpp"
 
-#include <fcntl.h>
-#include <sys/stat.h>
-#include <unistd.h>
-
-#include <cerrno>
-
 #include <cstdint>
 #include <cstdlib>
 #include <system_error>
+
+#include "device/cache_file.hpp"
 
 namespace clrt {
 namespace {
 
 constexpr const char* kMagic = "clrt program binary 2\n";
 constexpr std::uint64_t kPayloadBasis = 0x9e3779b97f4a7c15ull;
+// The most an entry may hold: programs of clrt are a few MB; anything larger is not ours.
+constexpr std::uintmax_t kLargestEntry = std::uintmax_t{256} << 20;
 
 // FNV-1a, 64 bits, from a chosen basis: two bases give two independent hashes of one text.
 std::uint64_t fnv1a(const std::string& text, std::uint64_t basis) {
@@ -60,68 +58,21 @@ ProgramCache::ProgramCache(std::filesystem::path folder, const std::string& iden
       file_(folder_ / (hex(fnv1a(identity, 0xcbf29ce484222325ull)) + ".bin")),
       check_(std::string(kMagic) + hex(fnv1a(identity, 0x84222325cbf29ce4ull)) + "\n") {}
 
-namespace {
-
-// The most an entry may hold: programs of clrt are a few MB; anything larger is not ours.
-constexpr std::uintmax_t kLargestEntry = std::uintmax_t{256} << 20;
-
-bool write_all(int fd, const std::string& bytes) {
-  std::size_t done = 0;
-  while (done < bytes.size()) {
-    const ssize_t n = ::write(fd, bytes.data() + done, bytes.size() - done);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) return false;
-    done += static_cast<std::size_t>(n);
-  }
-  return true;
-}
-
-}  // namespace
-
 std::optional<std::string> ProgramCache::load() const {
-  // Non-blocking, so a FIFO put under the entry's name cannot stall clrt; only a regular file
-  // of plausible size is read.
-  const int fd = ::open(file_.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
-  if (fd < 0) return std::nullopt;
-  struct stat st {};
-  std::string entry;
-  if (::fstat(fd, &st) == 0 && S_ISREG(st.st_mode) &&
-      static_cast<std::uintmax_t>(st.st_size) <= kLargestEntry) {
-    entry.resize(static_cast<std::size_t>(st.st_size));
-    std::size_t done = 0;
-    while (done < entry.size()) {
-      const ssize_t n = ::read(fd, entry.data() + done, entry.size() - done);
-      if (n < 0 && errno == EINTR) continue;
-      if (n <= 0) break;
-      done += static_cast<std::size_t>(n);
-    }
-    entry.resize(done);
-  }
-  ::close(fd);
+  const std::optional<std::string> entry = read_cache_file(file_, kLargestEntry);
+  if (!entry) return std::nullopt;
   // check_, then the payload's own checksum on a line, then the payload.
   const std::size_t sum_end = check_.size() + 17;
-  if (entry.size() <= sum_end || entry.compare(0, check_.size(), check_) != 0 ||
-      entry[sum_end - 1] != '\n')
+  if (entry->size() <= sum_end || entry->compare(0, check_.size(), check_) != 0 ||
+      (*entry)[sum_end - 1] != '\n')
     return std::nullopt;
-  std::string payload = entry.substr(sum_end);
-  if (entry.compare(check_.size(), 16, hex(fnv1a(payload, kPayloadBasis))) != 0) return std::nullopt;
+  std::string payload = entry->substr(sum_end);
+  if (entry->compare(check_.size(), 16, hex(fnv1a(payload, kPayloadBasis))) != 0) return std::nullopt;
   return payload;
 }
 
 void ProgramCache::store(const std::string& payload) const {
-  std::error_code error;
-  std::filesystem::create_directories(folder_, error);
-  if (error) return;
-  std::filesystem::path temporary = file_;
-  temporary += "." + std::to_string(::getpid()) + ".tmp";
-  const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
-  if (fd < 0) return;
-  // On disk before the rename: a crash must leave the old entry or the whole new one.
-  const bool written = write_all(fd, check_ + hex(fnv1a(payload, kPayloadBasis)) + "\n" + payload) &&
-                       ::fsync(fd) == 0;
-  const bool closed = ::close(fd) == 0;
-  if (written && closed) std::filesystem::rename(temporary, file_, error);
-  if (!written || !closed || error) std::filesystem::remove(temporary, error);
+  write_cache_file(file_, check_ + hex(fnv1a(payload, kPayloadBasis)) + "\n" + payload);
 }
 
 void ProgramCache::forget() const {
