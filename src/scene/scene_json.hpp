@@ -1,5 +1,5 @@
 // The scene as clrt read it, as JSON (docs/scene-json.md): what the converters to other
-// renderers (tools/mitsuba, tools/bench/cycles_race) read instead of parsing scene files again.
+// renderers (tools/mitsuba, tools/bench/path_race) read instead of parsing scene files again.
 #pragma once
 
 #include <functional>

@@ -251,6 +251,28 @@ class DumpedScene:
         reach += [np.linalg.norm(c[0] - self.eye) + np.linalg.norm(c[1] - c[0]) + c[2] for _, c in self.cylinders]
         return max(reach) or 1.0
 
+    def anything_in_front(self, origin, normal):
+        """Whether the eye or any object reaches strictly into the half-space in front of the
+        plane through `origin` facing `normal` (unit)."""
+        margin = 1e-6 * max(1.0, float(np.abs(origin).max()))
+
+        def ahead(points, reach=0.0):
+            points = np.asarray(points, dtype=float).reshape(-1, 3)
+            return points.size > 0 and float(((points - origin) @ normal + reach).max()) > margin
+
+        def plane_ahead(placement):
+            # An endless plane reaches every side but the one it is parallel to.
+            plane_normal = np.linalg.inv(placement[:3, :3]).T @ [0.0, 1.0, 0.0]
+            plane_normal /= np.linalg.norm(plane_normal)
+            return abs(float(plane_normal @ normal)) < 1 - 1e-9 or ahead(placement[:3, 3])
+
+        cube_corners = np.array([[x, y, z, 1.0] for x in (-1, 1) for y in (-1, 1) for z in (-1, 1)])
+        return (any(plane_ahead(t) for _, t in self.planes) or ahead(self.eye)
+                or any(ahead(c, r) for _, c, r in self.spheres)
+                or ahead([t for _, t in self.triangles])
+                or any(ahead((cube_corners @ t.T)[:, :3]) for _, t in self.cubes)
+                or any(ahead(c[:2], c[2]) for _, c in self.cylinders))
+
     def add_sphere(self, material, placement):
         """clrt's unit sphere placed by `placement`, which a Mitsuba sphere follows only under a
         uniform scale."""
@@ -464,8 +486,11 @@ def transform(matrix):
     return mi.ScalarTransform4f(np.asarray(matrix, dtype=float).tolist())
 
 
-def area_light_faces(color, geometry):
-    """Two one-sided emitting rectangles, back to back, for clrt's two-sided area light."""
+def area_light_faces(color, geometry, seen=lambda origin, normal: True):
+    """Two one-sided emitting rectangles, back to back, for clrt's two-sided area light; a face
+    that `seen(centre, normal)` says nothing is in front of (no object it could light, not the
+    eye) is left out: it adds nothing to the image, and Mitsuba, which picks one emitter per light
+    sample, would spend samples on it."""
     corner, u, v = geometry[0:3], geometry[3:6], geometry[6:9]
     normal = np.cross(u, v)
     if np.linalg.norm(normal) == 0:
@@ -479,6 +504,8 @@ def area_light_faces(color, geometry):
         m = np.eye(4)
         m[:3, 0], m[:3, 1], m[:3, 2] = u / 2, side * v / 2, side * normal
         m[:3, 3] = corner + (u + v) / 2 + side * gap * normal
+        if not seen(corner + (u + v) / 2, side * normal):
+            continue
         faces.append({"type": "rectangle", "to_world": transform(m),
                       # What lies behind an area light is hidden in Mitsuba (it is a surface)
                       # but seen in clrt; a black surface gives both the same image when
@@ -538,31 +565,40 @@ def triangle_mesh(material, corners, uvs):
     mesh = mi.Mesh("triangles", 3 * len(corners), len(corners), props=props,
                    has_vertex_normals=False, has_vertex_texcoords=textured)
     params = mi.traverse(mesh)
-    params["vertex_positions"] = np.concatenate(corners).ravel().tolist()
+
+    # Handed over as arrays of the parameters' own types: through Python lists, the 100k
+    # triangles of the race's knot took 2 s.
+    def array(key, values, dtype):
+        return type(params[key])(np.ascontiguousarray(values, dtype=dtype).ravel())
+
+    params["vertex_positions"] = array("vertex_positions", np.concatenate(corners), np.float32)
     if textured:
-        params["vertex_texcoords"] = np.concatenate(uvs).ravel().tolist()
-    params["faces"] = list(range(3 * len(corners)))
+        params["vertex_texcoords"] = array("vertex_texcoords", np.concatenate(uvs), np.float32)
+    params["faces"] = array("faces", np.arange(3 * len(corners)), np.uint32)
     params.update()
     mesh.set_bsdf(mi.load_dict(mitsuba_bsdf(material)))
     return mesh
 
 
-def to_mitsuba(scene, spp=None, resolution=None, seed=0):
-    """The mi.load_dict dictionary of `scene`; needs mitsuba imported with a variant set."""
+def to_mitsuba(scene, spp=None, resolution=None, seed=0, russian_roulette=False, sampler="independent"):
+    """The mi.load_dict dictionary of `scene`; needs mitsuba imported with a variant set.
+    `russian_roulette` keeps the path integrator's own (from its fifth vertex on); `sampler` is
+    the Mitsuba sampler plugin's name."""
     width, height = resolution or scene.resolution
     spp = spp or scene.samples
     max_depth = scene.maxdepth + DEPTH_OFFSET
     import mitsuba as mi
-    if any(needs_plugins(m) for m in scene.materials()):
+    if any(needs_plugins(m) for m in {id(m): m for m in scene.materials()}.values()):
         if not mi.variant().startswith("scalar"):
             raise SceneError("the Phong lobe and mixed materials (lobes.py) run in Mitsuba's scalar variants only")
         import lobes
         lobes.register()
     d = {
         "type": "scene",
-        # Russian roulette would only add noise: the expectation is the same, so it starts
-        # past the deepest path.
-        "integrator": {"type": "path", "max_depth": max_depth, "rr_depth": max_depth + 1},
+        # For a reference, Russian roulette would only add noise: the expectation is the same,
+        # so it starts past the deepest path.
+        "integrator": {"type": "path", "max_depth": max_depth,
+                       **({} if russian_roulette else {"rr_depth": max_depth + 1})},
         "sensor": {
             # Mitsuba's thin lens puts the plane in focus across the view axis, as clrt's does.
             **({"type": "thinlens", "aperture_radius": scene.lens_radius,
@@ -572,7 +608,7 @@ def to_mitsuba(scene, spp=None, resolution=None, seed=0):
             "near_clip": 1e-4, "far_clip": 1e7,
             "to_world": mi.ScalarTransform4f().look_at(origin=scene.eye.tolist(), target=scene.lookat.tolist(),
                                                        up=scene.up.tolist()),
-            "sampler": {"type": "independent", "sample_count": spp, "seed": seed},
+            "sampler": {"type": sampler, "sample_count": spp, "seed": seed},
             # clrt averages samples drawn uniformly over each pixel's square: a box filter.
             "film": {"type": "hdrfilm", "width": width, "height": height, "rfilter": {"type": "box"},
                      "pixel_format": "rgb", "component_format": "float32"},
@@ -607,7 +643,7 @@ def to_mitsuba(scene, spp=None, resolution=None, seed=0):
         elif kind == "directional":
             d[f"light_{i}"] = {"type": "directional", "direction": v[:3].tolist(), "irradiance": rgb(color)}
         else:
-            for j, face in enumerate(area_light_faces(color, v)):
+            for j, face in enumerate(area_light_faces(color, v, scene.anything_in_front)):
                 d[f"light_{i}_{j}"] = face
     return d
 

@@ -1,27 +1,31 @@
 #!/usr/bin/env python3
-"""Races clrt's path tracer (`--mode path`) against Blender Cycles (PyPI bpy 4.5) on the same
-scenes: noise at equal samples per pixel, wall-clock time, and time to equal quality.
+"""Races clrt's path tracer (`--mode path`) against a peer on the same scenes: Blender Cycles
+(PyPI bpy 4.5) or Mitsuba 3 (PyPI mitsuba, its LLVM or scalar variant): noise at equal samples
+per pixel, wall-clock time, and time to equal quality.
 
 Per scene:
  (a) a converged reference of each renderer (--ref-spp samples, cached under
-     BUILD/tools/bench/cycles_race/references, keyed by a hash of the scene, its meshes, the
+     BUILD/tools/bench/path_race/references, keyed by a hash of the scene, its meshes, the
      renderer and the settings); their image means must agree to within --tolerance (1%) in
      every channel, or the scene is not the same in both and the race stops (exit 1);
  (b) at each --spp, --seeds renders with seeds 1, 2, ... of each renderer: the per-pixel RMSE
-     against the renderer's own reference and against the other's, and clrt RMSE / Cycles RMSE;
- (c) the wall-clock time of each whole command (clrt: `clrt ... -o out.exr`; Cycles: the render
-     call, and the whole python process), clrt and Cycles alternated, median of --runs;
+     against the renderer's own reference and against the other's, and clrt RMSE / peer RMSE;
+ (c) the wall-clock time of each whole command (clrt: `clrt ... -o out.exr`; the peer: its
+     render call, and its whole python process), clrt and the peer alternated after one
+     untimed warm-up of each at that sample count, median of --runs;
  (d) efficiency 1 / (RMSE^2 time), and clrt's speed-up at equal quality, the ratio of
-     efficiencies (against Cycles' render call and against its whole process).
+     efficiencies (against the peer's render call and against its whole process).
 Prints a Markdown table and writes a JSON record (--json; default
-BUILD/tools/bench/cycles_race/race.json). README.md beside this file says why each step is so.
+BUILD/tools/bench/path_race/race-PEER.json). README.md beside this file says why each step is so.
 
-Usage (from the repository root, after tools/bench/cycles_race/install.sh build):
-    python3 tools/bench/cycles_race/race.py [--spp 16,64] [--seeds 3] [--runs 3]
-        [--resolution 128x128] [--ref-spp 2048] [--clrt PATH] [--venv PATH] [SCENE...]
+Usage (from the repository root, after install_cycles.sh or install_mitsuba.sh BUILD):
+    python3 tools/bench/path_race/race.py [--peer cycles|mitsuba-llvm|mitsuba-scalar]
+        [--spp 16,64] [--seeds 3] [--runs 3] [--resolution 128x128] [--ref-spp 2048]
+        [--clrt PATH] [--venv PATH] [SCENE...]
 SCENE is a .ray path or a name: cornell1, knot, units_point, units_area (default: cornell1 knot).
-Run by any python3, it restarts itself with the venv's python (bpy reads the EXRs).
-Exit status: 0 done, 1 the references disagree or a render failed, 2 a usage error, 77 no venv.
+Run by any python3, it restarts itself with the peer's venv python (which reads the EXRs).
+Exit status: 0 done, 1 the references disagree or a render failed, 2 a usage error, 77 the
+peer is not installed (no venv, or no LLVM 16 or newer for Mitsuba's LLVM variant).
 """
 import argparse
 import hashlib
@@ -41,6 +45,7 @@ sys.path.insert(0, str(HERE.parent))  # tools/bench: clrt_run
 sys.path.insert(0, str(HERE))
 import clrt_run  # noqa: E402
 import metrics  # noqa: E402
+import peers  # noqa: E402
 
 SCENES = {"cornell1": HERE / "scenes" / "cornell1.ray", "knot": None,
           "units_point": HERE / "scenes" / "units_point.ray",
@@ -60,7 +65,11 @@ def parse_args(argv):
     p.add_argument("scenes", nargs="*", help="scene names or .ray paths (default: cornell1 knot)")
     p.add_argument("--build", type=pathlib.Path, default=default_build(), help="the build tree (default: build)")
     p.add_argument("--clrt", type=pathlib.Path, help="clrt binary (default: $CLRT or BUILD/clrt)")
-    p.add_argument("--venv", type=pathlib.Path, help="the venv with bpy (default: BUILD/cycles-venv)")
+    p.add_argument("--peer", choices=sorted(peers.PEERS), default="cycles", help="the renderer raced (default: cycles)")
+    p.add_argument("--mitsuba-sampler", choices=("independent", "stratified", "multijitter", "orthogonal", "ldsampler"),
+                   help="Mitsuba's sampler (default: its own default, independent)")
+    p.add_argument("--venv", type=pathlib.Path,
+                   help="the peer's venv (default: BUILD/cycles-venv, or BUILD/mitsuba-venv for Mitsuba)")
     p.add_argument("--spp", default="16,64", help="samples per pixel of the raced renders, comma-separated")
     p.add_argument("--seeds", type=int, default=3, help="independent renders per renderer and spp for the RMSE")
     p.add_argument("--runs", type=int, default=3, help="timed runs per renderer and spp (median)")
@@ -72,7 +81,6 @@ def parse_args(argv):
     p.add_argument("--keep", type=pathlib.Path, help="keep every image in this folder")
     args = p.parse_args(argv)
     args.clrt = args.clrt or pathlib.Path(os.environ.get("CLRT", args.build / "clrt"))
-    args.venv = args.venv or args.build / "cycles-venv"
     try:
         args.spp = [int(s) for s in args.spp.split(",")]
         w, _, h = args.resolution.lower().partition("x")
@@ -82,26 +90,28 @@ def parse_args(argv):
     if min(args.spp) < 1 or min(args.size) < 1 or args.seeds < 1 or args.runs < 1 or args.ref_spp < 1:
         p.error("counts and sizes must be positive")
     args.scenes = args.scenes or DEFAULT_SCENES
+    if args.mitsuba_sampler and not args.peer.startswith("mitsuba"):
+        p.error("--mitsuba-sampler is for the Mitsuba peers")
+    args.peer = peers.PEERS[args.peer](args.build, args.clrt, args.threads, args.venv, args.mitsuba_sampler)
     return args
 
 
-def restart_in_venv(args):
-    """bpy reads the EXRs (and numpy does the sums): run under the venv's python."""
+def restart_in_venv(peer):
+    """The peer's modules read its EXRs (and numpy does the sums): run under its venv's python."""
     try:
-        import bpy  # noqa: F401
-        import numpy  # noqa: F401
+        for module in peer.modules:
+            __import__(module)
         return
     except ImportError:
         pass
-    python = args.venv / "bin" / "python"
-    if not python.exists():
-        print(f"race.py: no Cycles venv at {args.venv} (bash tools/bench/cycles_race/install.sh "
-              f"{args.build}); skipped", file=sys.stderr)
+    why = peer.missing()
+    if why:
+        print(f"race.py: {peer.label}: {why}; skipped", file=sys.stderr)
         sys.exit(77)
-    if os.environ.get("CYCLES_RACE_RESTARTED"):
-        sys.exit(f"race.py: {python} cannot import bpy and numpy")
-    os.environ["CYCLES_RACE_RESTARTED"] = "1"
-    os.execv(str(python), [str(python), str(pathlib.Path(__file__).resolve()), *sys.argv[1:]])
+    if os.environ.get("PATH_RACE_RESTARTED"):
+        sys.exit(f"race.py: {peer.python} cannot import {' and '.join(peer.modules)}")
+    os.environ["PATH_RACE_RESTARTED"] = "1"
+    os.execv(str(peer.python), [str(peer.python), str(pathlib.Path(__file__).resolve()), *sys.argv[1:]])
 
 
 # ---------------------------------------------------------------------------------------------
@@ -113,7 +123,7 @@ def flatten_obj(source, target):
     faces = 0
     with open(source, encoding="utf-8") as f, open(target, "w", encoding="utf-8") as out:
         out.write(f"# {pathlib.Path(source).name} of clrt-make-scenes --scale 0.1 without its vertex normals "
-                  "(flat shading), for tools/bench/cycles_race\n")
+                  "(flat shading), for tools/bench/path_race\n")
         for line in f:
             if line.startswith("v "):
                 out.write(line)
@@ -126,7 +136,7 @@ def flatten_obj(source, target):
 def prepare_knot(build):
     """The mesh scene: knot.ray copied next to the flat knot OBJ in the build tree, which
     clrt-make-scenes makes (its knot-1m.obj at --scale 0.1 has 100,014 triangles)."""
-    folder = build / "tools" / "bench" / "cycles_race" / "scenes"
+    folder = build / "tools" / "bench" / "path_race" / "scenes"
     folder.mkdir(parents=True, exist_ok=True)
     obj = folder / KNOT_OBJ
     if not obj.exists():
@@ -166,39 +176,26 @@ def scene_digest(clrt, path):
 
 
 class Renderers:
-    def __init__(self, args, workdir):
-        self.args, self.workdir = args, workdir
-        self.python = str(args.venv / "bin" / "python")
-        self.converter = HERE / "ray_to_cycles.py"
+    """clrt and its peer, each a fresh process per render."""
+
+    def __init__(self, args):
+        self.args, self.peer = args, args.peer
         self.env = clrt_run.pocl_threads(args.threads)
 
-    def clrt(self, scene, spp, seed, out, size):
+    def clrt(self, scene, spp, seed, out, size, reference=False):
         command = [self.args.clrt, scene, "--mode", "path", "--spp", spp, "--seed", seed,
                    "--resolution", f"{size[0]}x{size[1]}", "--threads", self.args.threads,
                    "--exr-pixel", "float", "-o", out, "-q"]
         run = clrt_run.run(command, self.env)
         return {"process_s": run.wall, "cpu_s": run.cpu, "peak_mib": run.peak_mib}
 
-    def cycles(self, scene, spp, seed, out, size):
-        command = [self.python, self.converter, scene, "-o", out, "--clrt", self.args.clrt, "--spp", spp, "--seed", seed,
-                   "--resolution", f"{size[0]}x{size[1]}", "--threads", self.args.threads]
-        run = clrt_run.run(command)
-        report = [line for line in run.stdout.splitlines() if line.startswith("{")]
-        if not report:
-            raise clrt_run.RunFailed(f"ray_to_cycles.py printed no report:\n{run.stdout[-2000:]}")
-        info = json.loads(report[-1])
-        return {"process_s": run.wall, "render_s": info["render_s"], "build_s": info["build_s"],
-                "cpu_s": run.cpu, "peak_mib": run.peak_mib}
-
-
-def read_image(path):
-    import ray_to_cycles
-    return ray_to_cycles.read_exr(path)
+    def render(self, name, *arguments, **options):
+        return (self.clrt if name == "clrt" else self.peer.render)(*arguments, **options)
 
 
 def reference(renderers, name, scene, args):
     """The renderer's converged image, rendered once per scene and settings."""
-    folder = args.build / "tools" / "bench" / "cycles_race" / "references"
+    folder = args.build / "tools" / "bench" / "path_race" / "references"
     folder.mkdir(parents=True, exist_ok=True)
     h = hashlib.sha256()
     h.update(scene_digest(args.clrt, scene).encode())
@@ -206,19 +203,19 @@ def reference(renderers, name, scene, args):
     if name == "clrt":
         h.update(pathlib.Path(args.clrt).read_bytes())
     else:
-        for source in (HERE / "ray_to_cycles.py", REPO / "tools" / "mitsuba" / "ray_to_mitsuba.py"):
+        for source in args.peer.reference_sources():
             h.update(source.read_bytes())
-        import bpy
-        h.update(bpy.app.version_string.encode())
-    path = folder / f"{scene.stem}-{args.size[0]}x{args.size[1]}-{name}-{h.hexdigest()[:16]}.exr"
+        h.update(args.peer.version().encode())
+    name_in_file = "clrt" if name == "clrt" else args.peer.name
+    path = folder / f"{scene.stem}-{args.size[0]}x{args.size[1]}-{name_in_file}-{h.hexdigest()[:16]}.exr"
     if not path.exists():
         print(f"race.py: rendering {name}'s reference of {scene.name} ({args.ref_spp} spp)...", file=sys.stderr)
         part = path.with_name(path.stem + ".part.exr")
         started = time.perf_counter()
-        getattr(renderers, name)(scene, args.ref_spp, REFERENCE_SEED, part, args.size)
+        renderers.render(name, scene, args.ref_spp, REFERENCE_SEED, part, args.size, reference=True)
         part.rename(path)
         print(f"race.py:   {time.perf_counter() - started:.1f} s", file=sys.stderr)
-    return path, read_image(path)
+    return path, args.peer.read_image(path)
 
 
 def flat(image):
@@ -226,41 +223,41 @@ def flat(image):
 
 
 def race_scene(renderers, label, scene, args, workdir):
-    import numpy as np
+    peer = args.peer
     record = {"scene": label, "path": str(scene)}
     refs = {}
-    for name in ("clrt", "cycles"):
+    for name in ("clrt", "peer"):
         path, image = reference(renderers, name, scene, args)
         refs[name] = image
         record[f"{name}_reference"] = {"path": str(path), "spp": args.ref_spp,
                                        "mean_rgb": image.mean(axis=(0, 1)).tolist()}
     differences = metrics.relative_differences(record["clrt_reference"]["mean_rgb"],
-                                               record["cycles_reference"]["mean_rgb"])
+                                               record["peer_reference"]["mean_rgb"])
     record["reference_mean_difference_rgb"] = differences
     record["references_agree"] = metrics.means_agree(record["clrt_reference"]["mean_rgb"],
-                                                     record["cycles_reference"]["mean_rgb"], args.tolerance)
-    print(f"race.py: {label}: clrt's reference mean differs from Cycles' by "
+                                                     record["peer_reference"]["mean_rgb"], args.tolerance)
+    print(f"race.py: {label}: clrt's reference mean differs from {peer.label}'s by "
           f"{', '.join(f'{100 * d:+.2f}%' for d in differences)} (R, G, B)", file=sys.stderr)
     if not record["references_agree"]:
         return record
 
-    # Warm-up, untimed: the scene files and meshes into the page cache, clrt's kernels into
-    # PoCL's cache, bpy's libraries into memory.
-    renderers.clrt(scene, 1, 1, workdir / "warm.exr", args.size)
-    renderers.cycles(scene, 1, 1, workdir / "warm.exr", args.size)
-
     record["spp"] = []
     for spp in args.spp:
-        runs = {"clrt": [], "cycles": []}
-        errors = {"clrt": [], "cycles": [], "clrt_vs_cycles_ref": [], "cycles_vs_clrt_ref": []}
+        # Warm-up, untimed, at the sample count timed: the scene files and meshes into the page
+        # cache, clrt's kernels into its program cache, the peer's libraries into memory, and
+        # the kernels Mitsuba's LLVM variant compiles for these settings into Dr.Jit's cache.
+        for name in ("clrt", "peer"):
+            renderers.render(name, scene, spp, 1, workdir / "warm.exr", args.size)
+        runs = {"clrt": [], "peer": []}
+        errors = {"clrt": [], "peer": [], "clrt_vs_peer_ref": [], "peer_vs_clrt_ref": []}
         for i in range(max(args.seeds, args.runs)):
             seed = i + 1
-            for name in ("clrt", "cycles"):  # alternated, so that load falls on both alike
+            for name in ("clrt", "peer"):  # alternated, so that load falls on both alike
                 out = workdir / f"{scene.stem}-{name}-{spp}-{seed}.exr"
-                runs[name].append(getattr(renderers, name)(scene, spp, seed, out, args.size))
+                runs[name].append(renderers.render(name, scene, spp, seed, out, args.size))
                 if i < args.seeds:
-                    image = flat(read_image(out))
-                    other = "cycles" if name == "clrt" else "clrt"
+                    image = flat(peer.read_image(out))
+                    other = "peer" if name == "clrt" else "clrt"
                     errors[name].append(metrics.rmse(image, flat(refs[name])))
                     errors[f"{name}_vs_{other}_ref"].append(metrics.rmse(image, flat(refs[other])))
                 if args.keep:
@@ -269,24 +266,21 @@ def race_scene(renderers, label, scene, args, workdir):
                 out.unlink()
         row = {"spp": spp, "seeds": args.seeds, "runs": args.runs, "times": runs, "rmse_per_seed": errors}
         row["clrt_rmse"] = metrics.pooled_rmse(errors["clrt"])
-        row["cycles_rmse"] = metrics.pooled_rmse(errors["cycles"])
-        row["clrt_rmse_vs_cycles_ref"] = metrics.pooled_rmse(errors["clrt_vs_cycles_ref"])
-        row["cycles_rmse_vs_clrt_ref"] = metrics.pooled_rmse(errors["cycles_vs_clrt_ref"])
-        row["rmse_ratio"] = row["clrt_rmse"] / row["cycles_rmse"]
+        row["peer_rmse"] = metrics.pooled_rmse(errors["peer"])
+        row["clrt_rmse_vs_peer_ref"] = metrics.pooled_rmse(errors["clrt_vs_peer_ref"])
+        row["peer_rmse_vs_clrt_ref"] = metrics.pooled_rmse(errors["peer_vs_clrt_ref"])
+        row["rmse_ratio"] = row["clrt_rmse"] / row["peer_rmse"]
         row["clrt_s"] = metrics.median(r["process_s"] for r in runs["clrt"][:args.runs])
-        row["cycles_render_s"] = metrics.median(r["render_s"] for r in runs["cycles"][:args.runs])
-        row["cycles_process_s"] = metrics.median(r["process_s"] for r in runs["cycles"][:args.runs])
+        for time_of in ("render", "process"):
+            seconds = metrics.median(r[f"{time_of}_s"] for r in runs["peer"][:args.runs])
+            row[f"peer_{time_of}_s"] = seconds
+            row[f"peer_efficiency_{time_of}"] = metrics.efficiency(row["peer_rmse"], seconds)
+            row[f"speedup_vs_{time_of}"] = metrics.speedup(row["clrt_rmse"], row["clrt_s"], row["peer_rmse"], seconds)
         row["clrt_efficiency"] = metrics.efficiency(row["clrt_rmse"], row["clrt_s"])
-        row["cycles_efficiency_render"] = metrics.efficiency(row["cycles_rmse"], row["cycles_render_s"])
-        row["cycles_efficiency_process"] = metrics.efficiency(row["cycles_rmse"], row["cycles_process_s"])
-        row["speedup_vs_render"] = metrics.speedup(row["clrt_rmse"], row["clrt_s"], row["cycles_rmse"],
-                                                   row["cycles_render_s"])
-        row["speedup_vs_process"] = metrics.speedup(row["clrt_rmse"], row["clrt_s"], row["cycles_rmse"],
-                                                    row["cycles_process_s"])
         record["spp"].append(row)
-        print(f"race.py: {label} {spp} spp: RMSE clrt {row['clrt_rmse']:.4g}, Cycles {row['cycles_rmse']:.4g}; "
-              f"time clrt {row['clrt_s']:.2f} s, Cycles {row['cycles_render_s']:.2f} s "
-              f"({row['cycles_process_s']:.2f} s process)", file=sys.stderr)
+        print(f"race.py: {label} {spp} spp: RMSE clrt {row['clrt_rmse']:.4g}, {peer.label} {row['peer_rmse']:.4g}; "
+              f"time clrt {row['clrt_s']:.2f} s, {peer.label} {row['peer_render_s']:.2f} s "
+              f"({row['peer_process_s']:.2f} s process)", file=sys.stderr)
     return record
 
 
@@ -316,8 +310,9 @@ def git_commit():
 
 
 def markdown(record):
-    lines = ["| scene | spp | RMSE clrt | RMSE Cycles | clrt / Cycles | clrt vs Cycles' ref | Cycles vs clrt's ref "
-             "| clrt s | Cycles render s | Cycles process s | speed-up (render) | speed-up (process) |",
+    p = record["peer"]["label"]
+    lines = [f"| scene | spp | RMSE clrt | RMSE {p} | clrt / {p} | clrt vs {p}'s ref | {p} vs clrt's ref "
+             f"| clrt s | {p} render s | {p} process s | speed-up (render) | speed-up (process) |",
              "|---|---|---|---|---|---|---|---|---|---|---|---|"]
     for scene in record["scenes"]:
         if not scene.get("references_agree"):
@@ -326,11 +321,11 @@ def markdown(record):
             continue
         for r in scene["spp"]:
             lines.append(
-                f"| {scene['scene']} | {r['spp']} | {r['clrt_rmse']:.4g} | {r['cycles_rmse']:.4g} | {r['rmse_ratio']:.2f} "
-                f"| {r['clrt_rmse_vs_cycles_ref']:.4g} | {r['cycles_rmse_vs_clrt_ref']:.4g} | {r['clrt_s']:.2f} "
-                f"| {r['cycles_render_s']:.2f} | {r['cycles_process_s']:.2f} | {r['speedup_vs_render']:.2f} "
+                f"| {scene['scene']} | {r['spp']} | {r['clrt_rmse']:.4g} | {r['peer_rmse']:.4g} | {r['rmse_ratio']:.2f} "
+                f"| {r['clrt_rmse_vs_peer_ref']:.4g} | {r['peer_rmse_vs_clrt_ref']:.4g} | {r['clrt_s']:.2f} "
+                f"| {r['peer_render_s']:.2f} | {r['peer_process_s']:.2f} | {r['speedup_vs_render']:.2f} "
                 f"| {r['speedup_vs_process']:.2f} |")
-    means = ["", "Reference means, clrt against Cycles (R, G, B): " + "; ".join(
+    means = ["", f"Reference means, clrt against {p} (R, G, B): " + "; ".join(
         f"{s['scene']} " + ", ".join(f"{100 * x:+.2f}%" for x in s["reference_mean_difference_rgb"])
         for s in record["scenes"])]
     return "\n".join(lines + means)
@@ -338,24 +333,25 @@ def markdown(record):
 
 def main(argv=None):
     args = parse_args(sys.argv[1:] if argv is None else argv)
-    restart_in_venv(args)
+    restart_in_venv(args.peer)
     if not pathlib.Path(args.clrt).exists():
         sys.exit(f"race.py: no clrt at {args.clrt} (--clrt or $CLRT)")
-    import bpy
     scenes = [(name, resolve_scene(name, args.build)) for name in args.scenes]
     head, dirty = git_commit()
     record = {
-        "tool": "tools/bench/cycles_race/race.py",
+        "tool": "tools/bench/path_race/race.py",
+        "peer": {"name": args.peer.name, "label": args.peer.label, "version": args.peer.version(),
+                 **args.peer.settings()},
         "machine": {"cpu": cpu_model(), "cores": os.cpu_count(), "load_before": list(os.getloadavg())},
-        "versions": {"bpy": bpy.app.version_string, "clrt_commit": head, "clrt_tree_dirty": dirty,
+        "versions": {"clrt_commit": head, "clrt_tree_dirty": dirty,
                      "clrt": str(args.clrt), "python": platform.python_version()},
         "settings": {"resolution": list(args.size), "spp": args.spp, "seeds": args.seeds, "runs": args.runs,
                      "ref_spp": args.ref_spp, "threads": args.threads, "tolerance": args.tolerance},
         "scenes": [],
     }
     status = 0
-    with tempfile.TemporaryDirectory(prefix="cycles_race-") as tmp:
-        renderers = Renderers(args, pathlib.Path(tmp))
+    with tempfile.TemporaryDirectory(prefix="path_race-") as tmp:
+        renderers = Renderers(args)
         try:
             for label, scene in scenes:
                 result = race_scene(renderers, label, scene, args, pathlib.Path(tmp))
@@ -370,13 +366,13 @@ def main(argv=None):
             record["error"] = str(e)
             status = 1
     record["machine"]["load_after"] = list(os.getloadavg())
-    out = args.json or args.build / "tools" / "bench" / "cycles_race" / "race.json"
+    out = args.json or args.build / "tools" / "bench" / "path_race" / f"race-{args.peer.name}.json"
     out.parent.mkdir(parents=True, exist_ok=True)
     out.write_text(json.dumps(record, indent=1) + "\n", encoding="utf-8")
     print(markdown(record))
     print(f"\nrecord: {out}; machine: {record['machine']['cpu']}, {record['machine']['cores']} cores, load "
           f"{record['machine']['load_before'][0]:.2f} before, {record['machine']['load_after'][0]:.2f} after; "
-          f"bpy {record['versions']['bpy']}, clrt {head}{' (tree with uncommitted changes)' if dirty else ''}")
+          f"{record['peer']['version']}{', sampler ' + record['peer']['sampler'] if 'sampler' in record['peer'] else ''}, clrt {head}{' (tree with uncommitted changes)' if dirty else ''}")
     return status
 
 

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Unit tests of metrics.py, the race's arithmetic: plain Python, no bpy or numpy.
-Run: python3 tools/bench/cycles_race/test_metrics.py"""
+Run: python3 tools/bench/path_race/test_metrics.py"""
 import math
 import pathlib
 import sys
