@@ -140,7 +140,8 @@ class Mitsuba(Peer):
 
     @staticmethod
     def build_seconds(info):
-        return info["load_s"]
+        # The scene's dictionary: as building the scene in bpy is for Cycles.
+        return info["build_s"]
 
     def version(self):
         import mitsuba

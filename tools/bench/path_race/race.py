@@ -76,6 +76,8 @@ def parse_args(argv):
     p.add_argument("--resolution", default="128x128", help="WxH")
     p.add_argument("--ref-spp", type=int, default=2048, help="samples per pixel of the references")
     p.add_argument("--threads", type=int, default=2, help="CPU threads of each renderer")
+    p.add_argument("--device", help="clrt's --device for the raced renders (default: clrt's own, PoCL's CPU "
+                                    "device); the references are the same bytes on every implementation")
     p.add_argument("--tolerance", type=float, default=0.01, help="largest relative difference of the references' means")
     p.add_argument("--json", type=pathlib.Path, help="where to write the record")
     p.add_argument("--keep", type=pathlib.Path, help="keep every image in this folder")
@@ -186,6 +188,8 @@ class Renderers:
         command = [self.args.clrt, scene, "--mode", "path", "--spp", spp, "--seed", seed,
                    "--resolution", f"{size[0]}x{size[1]}", "--threads", self.args.threads,
                    "--exr-pixel", "float", "-o", out, "-q"]
+        if self.args.device and not reference:
+            command += ["--device", self.args.device]
         run = clrt_run.run(command, self.env)
         return {"process_s": run.wall, "cpu_s": run.cpu, "peak_mib": run.peak_mib}
 
@@ -346,7 +350,8 @@ def main(argv=None):
         "versions": {"clrt_commit": head, "clrt_tree_dirty": dirty,
                      "clrt": str(args.clrt), "python": platform.python_version()},
         "settings": {"resolution": list(args.size), "spp": args.spp, "seeds": args.seeds, "runs": args.runs,
-                     "ref_spp": args.ref_spp, "threads": args.threads, "tolerance": args.tolerance},
+                     "ref_spp": args.ref_spp, "threads": args.threads, "tolerance": args.tolerance,
+                     "clrt_device": args.device or "default"},
         "scenes": [],
     }
     status = 0

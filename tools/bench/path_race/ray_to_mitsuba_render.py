@@ -12,10 +12,12 @@ native `diffuse` BSDF; scenes that need its Python plugins (Phong, mixed lobes) 
 the LLVM variant, and race.py's scenes need none.
 
 Run with the Mitsuba venv's python (tools/mitsuba/install.sh); the LLVM variant needs LLVM 16
-or newer, found through DRJIT_LIBLLVM_PATH (race.py sets it). Prints one JSON line: `load_s`
-(converting the dump and mi.load_dict, which builds the BVH), `render_s` (mi.render and its
-evaluation: for the LLVM variant, tracing and compiling the kernels, or finding them in Dr.Jit's
-kernel cache, and running them), `write_s` (the EXR) and the settings used.
+or newer, found through DRJIT_LIBLLVM_PATH (race.py sets it). Prints one JSON line: `build_s`
+(the scene's dictionary, meshes included, from the dump the converter read: what a Mitsuba
+user's scene file holds), `load_s` (mi.load_dict: the plugins and the BVH), `render_s`
+(mi.render and its evaluation: for the LLVM variant, tracing and compiling the kernels, or
+finding them in Dr.Jit's kernel cache, and running them), `write_s` (the EXR) and the settings
+used. Reading the dump (`clrt --dump-scene` and the converter's parse) is in none of them.
 """
 import argparse
 import json
@@ -50,10 +52,12 @@ def main():
     mi.set_variant(args.variant)
     dr.set_thread_count(args.threads)
     try:
-        started = time.perf_counter()
         scene = rtm.read_scene(args.clrt, args.scene)
-        loaded = mi.load_dict(rtm.to_mitsuba(scene, args.spp, rtm.parse_resolution(args.resolution), args.seed,
-                                             russian_roulette=True, sampler=args.sampler))
+        started = time.perf_counter()
+        description = rtm.to_mitsuba(scene, args.spp, rtm.parse_resolution(args.resolution), args.seed,
+                                     russian_roulette=True, sampler=args.sampler)
+        built_at = time.perf_counter()
+        loaded = mi.load_dict(description)
         loaded_at = time.perf_counter()
         image = mi.render(loaded, seed=args.seed)
         dr.eval(image)
@@ -65,7 +69,7 @@ def main():
     mi.Bitmap(image).write(str(args.output))
     written_at = time.perf_counter()
     sensor = loaded.sensors()[0]
-    print(json.dumps({"load_s": loaded_at - started, "render_s": rendered_at - loaded_at,
+    print(json.dumps({"build_s": built_at - started, "load_s": loaded_at - built_at, "render_s": rendered_at - loaded_at,
                       "write_s": written_at - rendered_at, "mitsuba": mi.__version__, "variant": args.variant, "sampler": args.sampler,
                       "spp": sensor.sampler().sample_count(), "seed": args.seed, "threads": dr.thread_count(),
                       "resolution": list(sensor.film().crop_size())}))
