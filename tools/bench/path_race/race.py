@@ -22,7 +22,8 @@ Usage (from the repository root, after install_cycles.sh or install_mitsuba.sh B
     python3 tools/bench/path_race/race.py [--peer cycles|mitsuba-llvm|mitsuba-scalar]
         [--spp 16,64] [--seeds 3] [--runs 3] [--resolution 128x128] [--ref-spp 2048]
         [--clrt PATH] [--venv PATH] [SCENE...]
-SCENE is a .ray path or a name: cornell1, knot, units_point, units_area (default: cornell1 knot).
+SCENE is a .ray path or a name: cornell1, knot, knob4, units_point, units_area (default:
+cornell1 knot).
 Run by any python3, it restarts itself with the peer's venv python (which reads the EXRs).
 Exit status: 0 done, 1 the references disagree or a render failed, 2 a usage error, 77 the
 peer is not installed (no venv, or no LLVM 16 or newer for Mitsuba's LLVM variant).
@@ -47,11 +48,14 @@ import clrt_run  # noqa: E402
 import metrics  # noqa: E402
 import peers  # noqa: E402
 
-SCENES = {"cornell1": HERE / "scenes" / "cornell1.ray", "knot": None,
+SCENES = {"cornell1": HERE / "scenes" / "cornell1.ray", "knot": None, "knob4": None,
           "units_point": HERE / "scenes" / "units_point.ray",
           "units_area": HERE / "scenes" / "units_area.ray"}
 DEFAULT_SCENES = ["cornell1", "knot"]
 KNOT_OBJ = "knot-100k-flat.obj"
+# The material knob's lobe subsets that every peer's converter maps to a native BSDF of
+# Mitsuba's LLVM variant: Lambertian, mirror, glass, and the black absorber.
+KNOB_SUBSETS = ("d", "m", "t", "none")
 REFERENCE_SEED = 1000003  # far from the race's seeds 1, 2, ...
 
 
@@ -135,18 +139,68 @@ def flatten_obj(source, target):
     return faces
 
 
+def make_scenes(build, arguments):
+    """Runs clrt-make-scenes ARGUMENTS... into a new temporary folder, which it returns."""
+    maker = build / "tools" / "make_scenes" / "clrt-make-scenes"
+    if not maker.exists():
+        sys.exit(f"race.py: {maker} is missing (cmake --build {build}); it makes the race's large scenes")
+    folder = tempfile.TemporaryDirectory()
+    subprocess.run([str(maker), *arguments, folder.name], check=True, stdout=subprocess.DEVNULL)
+    return folder
+
+
+def race_folder(build):
+    folder = build / "tools" / "bench" / "path_race" / "scenes"
+    folder.mkdir(parents=True, exist_ok=True)
+    return folder
+
+
+def knob_lines(text):
+    """A knob-lobes scene of clrt-make-scenes: its lines before the spheres' material, that
+    material's line, and the sphere lines."""
+    lines = text.splitlines()
+    first_sphere = next(i for i, line in enumerate(lines) if line.startswith("sphere "))
+    return lines[:first_sphere - 1], lines[first_sphere - 1], lines[first_sphere:]
+
+
+def prepare_knob(build):
+    """The material knob (clrt-make-scenes --family knob: 576 spheres on a floor under one area
+    light) with its spheres spread evenly and at random (a fixed seed) over the lobe subsets
+    KNOB_SUBSETS, the materials of its knob-lobes-*.ray scenes; the area light takes 1 shadow
+    ray, as the peers take one light sample a vertex; and the sky is black: Mitsuba's emitters
+    are opaque, and under the knob's grey-blue sky they hid 1.6-3% of the light that clrt and
+    Cycles see through the light."""
+    import random
+    scene = race_folder(build) / "knob4.ray"
+    with make_scenes(build, ["--family", "knob"]) as tmp:
+        parts = {s: knob_lines((pathlib.Path(tmp) / f"knob-lobes-{s}.ray").read_text(encoding="utf-8"))
+                 for s in KNOB_SUBSETS}
+    head, _, spheres = parts["d"]
+    subsets = [KNOB_SUBSETS[i % len(KNOB_SUBSETS)] for i in range(len(spheres))]
+    random.Random(4).shuffle(subsets)
+    out = [f"# knob4.ray, written by tools/bench/path_race/race.py from clrt-make-scenes --family knob: "
+           f"{len(spheres)} spheres, each Lambertian, mirror, glass or black ({', '.join(KNOB_SUBSETS)})"]
+    for line in head:
+        if line.startswith("#"):
+            continue
+        if line.startswith("background "):
+            line = "background 0 0 0"
+        elif line.startswith("light ") and " area " in line:
+            line = " ".join(line.split()[:-1] + ["1"])
+        out.append(line)
+    for subset, sphere in zip(subsets, spheres):
+        out += [parts[subset][1], sphere]
+    scene.write_text("\n".join(out) + "\n", encoding="utf-8")
+    return scene
+
+
 def prepare_knot(build):
     """The mesh scene: knot.ray copied next to the flat knot OBJ in the build tree, which
     clrt-make-scenes makes (its knot-1m.obj at --scale 0.1 has 100,014 triangles)."""
-    folder = build / "tools" / "bench" / "path_race" / "scenes"
-    folder.mkdir(parents=True, exist_ok=True)
+    folder = race_folder(build)
     obj = folder / KNOT_OBJ
     if not obj.exists():
-        maker = build / "tools" / "make_scenes" / "clrt-make-scenes"
-        if not maker.exists():
-            sys.exit(f"race.py: {maker} is missing (cmake --build {build}); it makes the knot mesh")
-        with tempfile.TemporaryDirectory() as tmp:
-            subprocess.run([str(maker), "--scale", "0.1", tmp], check=True, stdout=subprocess.DEVNULL)
+        with make_scenes(build, ["--scale", "0.1"]) as tmp:
             part = obj.with_suffix(".part")
             faces = flatten_obj(pathlib.Path(tmp) / "knot-1m.obj", part)
             part.rename(obj)
@@ -159,6 +213,8 @@ def prepare_knot(build):
 def resolve_scene(name, build):
     if name == "knot":
         return prepare_knot(build)
+    if name == "knob4":
+        return prepare_knob(build)
     if name in SCENES:
         return SCENES[name]
     path = pathlib.Path(name)
