@@ -12,6 +12,8 @@ import sys
 import tempfile
 
 HERE = pathlib.Path(__file__).resolve().parent
+sys.path.insert(0, str(HERE))
+import checks  # noqa: E402
 
 
 def main():
@@ -31,11 +33,7 @@ def main():
             print(f"FAIL: race.py exited with {done.returncode}")
             return 1
         record = json.loads(out.read_text())
-    failures = []
-
-    def check(condition, what):
-        if not condition:
-            failures.append(what)
+    check = checks.Checks()
 
     for key in ("machine", "peer", "versions", "settings", "scenes"):
         check(key in record, f"the record has no `{key}`")
@@ -63,10 +61,7 @@ def main():
             # More samples, less noise, for both.
             check(rows[1]["clrt_rmse"] < rows[0]["clrt_rmse"], f"{name}: clrt's RMSE falls with spp")
             check(rows[1]["peer_rmse"] < rows[0]["peer_rmse"], f"{name}: {peer}'s RMSE falls with spp")
-    for f in failures:
-        print("FAIL:", f)
-    print("PASS" if not failures else f"{len(failures)} failures")
-    return 1 if failures else 0
+    return check.report()
 
 
 if __name__ == "__main__":

@@ -9,6 +9,7 @@ import sys
 
 HERE = pathlib.Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE))
+import checks  # noqa: E402
 import race  # noqa: E402
 
 
@@ -16,11 +17,7 @@ def main():
     if len(sys.argv) != 2:
         sys.exit("usage: test_scenes.py BUILD_DIR")
     build = pathlib.Path(sys.argv[1])
-    failures = []
-
-    def check(condition, what):
-        if not condition:
-            failures.append(what)
+    check = checks.Checks()
 
     scene = race.prepare_knob(build)
     first = scene.read_text(encoding="utf-8")
@@ -39,10 +36,7 @@ def main():
     check("background 0 0 0" in lines, "knob4.ray: a black sky")
     lights = [line for line in lines if line.startswith("light ")]
     check(len(lights) == 1 and lights[0].endswith(" 1") and " area " in lights[0], f"knob4.ray: one area light of 1 sample: {lights}")
-    for f in failures:
-        print("FAIL:", f)
-    print("PASS" if not failures else f"{len(failures)} failures")
-    return 1 if failures else 0
+    return check.report()
 
 
 if __name__ == "__main__":
