@@ -25,6 +25,18 @@ def rmse(values, reference):
     return math.sqrt(mse(values, reference))
 
 
+def noise_rmse(renders):
+    """The noise of one render, per pixel channel, from several independent renders of the same
+    image (seeds): the difference of two has twice a render's variance, so the root of half
+    their mean squared difference, over every pair. Unlike the error against a reference, it
+    holds none of the reference's own noise."""
+    renders = [list(r) for r in renders]
+    if len(renders) < 2:
+        raise ValueError("the noise needs two renders or more")
+    pairs = [(a, b) for i, a in enumerate(renders) for b in renders[i + 1:]]
+    return math.sqrt(math.fsum(mse(a, b) for a, b in pairs) / len(pairs) / 2)
+
+
 def pooled_rmse(errors):
     """One RMSE for several independent renders (seeds): the root of their mean MSE."""
     errors = list(errors)

@@ -8,12 +8,13 @@ Per scene:
      BUILD/tools/bench/path_race/references, keyed by a hash of the scene, its meshes, the
      renderer and the settings); their image means must agree to within --tolerance (1%) in
      every channel, or the scene is not the same in both and the race stops (exit 1);
- (b) at each --spp, --seeds renders with seeds 1, 2, ... of each renderer: the per-pixel RMSE
-     against the renderer's own reference and against the other's, and clrt RMSE / peer RMSE;
+ (b) at each --spp, --seeds (at least 2) renders with seeds 1, 2, ... of each renderer: its
+     noise, the per-pixel RMS difference between renders of different seeds over the square
+     root of 2, and clrt's noise / the peer's; the RMSE against each reference is reported too;
  (c) the wall-clock time of each whole command (clrt: `clrt ... -o out.exr`; the peer: its
      render call, and its whole python process), clrt and the peer alternated after one
      untimed warm-up of each at that sample count, median of --runs;
- (d) efficiency 1 / (RMSE^2 time), and clrt's speed-up at equal quality, the ratio of
+ (d) efficiency 1 / (noise^2 time), and clrt's speed-up at equal quality, the ratio of
      efficiencies (against the peer's render call and against its whole process).
 Prints a Markdown table and writes a JSON record (--json; default
 BUILD/tools/bench/path_race/race-PEER.json). README.md beside this file says why each step is so.
@@ -93,8 +94,10 @@ def parse_args(argv):
         args.size = (int(w), int(h))
     except ValueError:
         p.error("--spp takes numbers separated by commas, --resolution WxH")
-    if min(args.spp) < 1 or min(args.size) < 1 or args.seeds < 1 or args.runs < 1 or args.ref_spp < 1:
+    if min(args.spp) < 1 or min(args.size) < 1 or args.runs < 1 or args.ref_spp < 1:
         p.error("counts and sizes must be positive")
+    if args.seeds < 2:
+        p.error("--seeds must be 2 or more: the noise is measured between renders of different seeds")
     args.scenes = args.scenes or DEFAULT_SCENES
     if args.mitsuba_sampler and not args.peer.startswith("mitsuba"):
         p.error("--mitsuba-sampler is for the Mitsuba peers")
@@ -310,6 +313,7 @@ def race_scene(renderers, label, scene, args, workdir):
             renderers.render(name, scene, spp, 1, workdir / "warm.exr", args.size)
         runs = {"clrt": [], "peer": []}
         errors = {"clrt": [], "peer": [], "clrt_vs_peer_ref": [], "peer_vs_clrt_ref": []}
+        images = {"clrt": [], "peer": []}
         for i in range(max(args.seeds, args.runs)):
             seed = i + 1
             for name in ("clrt", "peer"):  # alternated, so that load falls on both alike
@@ -317,6 +321,7 @@ def race_scene(renderers, label, scene, args, workdir):
                 runs[name].append(renderers.render(name, scene, spp, seed, out, args.size))
                 if i < args.seeds:
                     image = flat(peer.read_image(out))
+                    images[name].append(image)
                     other = "peer" if name == "clrt" else "clrt"
                     errors[name].append(metrics.rmse(image, flat(refs[name])))
                     errors[f"{name}_vs_{other}_ref"].append(metrics.rmse(image, flat(refs[other])))
@@ -325,8 +330,13 @@ def race_scene(renderers, label, scene, args, workdir):
                     shutil.copyfile(out, args.keep / out.name)
                 out.unlink()
         row = {"spp": spp, "seeds": args.seeds, "runs": args.runs, "times": runs, "rmse_per_seed": errors}
-        row["clrt_rmse"] = metrics.pooled_rmse(errors["clrt"])
-        row["peer_rmse"] = metrics.pooled_rmse(errors["peer"])
+        # The noise, from the seeds' renders among themselves: against a reference it would
+        # hold the reference's own noise too, which for a peer whose reference sampler is
+        # noisier than its raced one was a third of its error at 64 spp.
+        row["clrt_rmse"] = metrics.noise_rmse(images["clrt"])
+        row["peer_rmse"] = metrics.noise_rmse(images["peer"])
+        row["clrt_rmse_vs_own_ref"] = metrics.pooled_rmse(errors["clrt"])
+        row["peer_rmse_vs_own_ref"] = metrics.pooled_rmse(errors["peer"])
         row["clrt_rmse_vs_peer_ref"] = metrics.pooled_rmse(errors["clrt_vs_peer_ref"])
         row["peer_rmse_vs_clrt_ref"] = metrics.pooled_rmse(errors["peer_vs_clrt_ref"])
         row["rmse_ratio"] = row["clrt_rmse"] / row["peer_rmse"]
@@ -371,18 +381,19 @@ def git_commit():
 
 def markdown(record):
     p = record["peer"]["label"]
-    lines = [f"| scene | spp | RMSE clrt | RMSE {p} | clrt / {p} | clrt vs {p}'s ref | {p} vs clrt's ref "
-             f"| clrt s | {p} render s | {p} process s | speed-up (render) | speed-up (process) |",
-             "|---|---|---|---|---|---|---|---|---|---|---|---|"]
+    lines = [f"| scene | spp | noise clrt | noise {p} | clrt / {p} | clrt vs own ref | {p} vs own ref "
+             f"| clrt vs {p}'s ref | {p} vs clrt's ref | clrt s | {p} render s | {p} process s "
+             "| speed-up (render) | speed-up (process) |",
+             "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
     for scene in record["scenes"]:
         if not scene.get("references_agree"):
             d = ", ".join(f"{100 * x:+.2f}%" for x in scene["reference_mean_difference_rgb"])
-            lines.append(f"| {scene['scene']} | references disagree: {d} |" + " |" * 10)
+            lines.append(f"| {scene['scene']} | references disagree: {d} |" + " |" * 12)
             continue
         for r in scene["spp"]:
             lines.append(
                 f"| {scene['scene']} | {r['spp']} | {r['clrt_rmse']:.4g} | {r['peer_rmse']:.4g} | {r['rmse_ratio']:.2f} "
-                f"| {r['clrt_rmse_vs_peer_ref']:.4g} | {r['peer_rmse_vs_clrt_ref']:.4g} | {r['clrt_s']:.2f} "
+                f"| {r['clrt_rmse_vs_own_ref']:.4g} | {r['peer_rmse_vs_own_ref']:.4g} | {r['clrt_rmse_vs_peer_ref']:.4g} | {r['peer_rmse_vs_clrt_ref']:.4g} | {r['clrt_s']:.2f} "
                 f"| {r['peer_render_s']:.2f} | {r['peer_process_s']:.2f} | {r['speedup_vs_render']:.2f} "
                 f"| {r['speedup_vs_process']:.2f} |")
     means = ["", f"Reference means, clrt against {p} (R, G, B): " + "; ".join(

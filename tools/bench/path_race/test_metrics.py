@@ -21,6 +21,15 @@ class Metrics(unittest.TestCase):
         with self.assertRaises(ValueError):
             metrics.rmse([], [])
 
+    def test_noise(self):
+        # Two renders 2 apart in every channel: each is sqrt(2) from their mean, the variance 1.
+        self.assertAlmostEqual(metrics.noise_rmse([[1, 1], [3, 3]]), math.sqrt(2))
+        # Three renders: the mean of the three pairs' squared differences (4, 16, 4) over 2.
+        self.assertAlmostEqual(metrics.noise_rmse([[0], [2], [4]]), math.sqrt(8 / 2))
+        self.assertEqual(metrics.noise_rmse([[5, 6], [5, 6]]), 0.0)
+        with self.assertRaises(ValueError):
+            metrics.noise_rmse([[1, 2]])
+
     def test_pooled(self):
         # The root of the mean MSE, not the mean of the roots.
         self.assertAlmostEqual(metrics.pooled_rmse([3, 4]), math.sqrt(12.5))

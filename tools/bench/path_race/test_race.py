@@ -48,7 +48,7 @@ def main():
         check(all(abs(d) <= 0.01 for d in s.get("reference_mean_difference_rgb", [1])), f"{name}: mean difference")
         check([r["spp"] for r in s.get("spp", [])] == [4, 16], f"{name}: rows for 4 and 16 spp")
         for r in s.get("spp", []):
-            for key in ("clrt_rmse", "peer_rmse", "clrt_rmse_vs_peer_ref", "peer_rmse_vs_clrt_ref", "rmse_ratio",
+            for key in ("clrt_rmse", "peer_rmse", "clrt_rmse_vs_own_ref", "peer_rmse_vs_own_ref", "clrt_rmse_vs_peer_ref", "peer_rmse_vs_clrt_ref", "rmse_ratio",
                         "clrt_s", "peer_render_s", "peer_process_s", "clrt_efficiency",
                         "peer_efficiency_render", "peer_efficiency_process", "speedup_vs_render",
                         "speedup_vs_process"):
