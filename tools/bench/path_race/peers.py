@@ -16,6 +16,9 @@ import clrt_run  # noqa: E402
 # Dr.Jit's LLVM back end aborts with Debian 12's LLVM 14 and 15.
 OLDEST_LLVM = 16
 
+# Mitsuba's samplers, its own default first.
+MITSUBA_SAMPLERS = ("independent", "stratified", "multijitter", "orthogonal", "ldsampler")
+
 
 def llvm_library(environ=None):
     """The LLVM shared library for Dr.Jit: $DRJIT_LIBLLVM_PATH when it names a file, else the
@@ -123,7 +126,7 @@ class Mitsuba(Peer):
     # Mitsuba's own default; race.py --mitsuba-sampler names another for the raced renders. The
     # references always take it: any sampler converges to the same image, and it takes any
     # sample count, where the stratified ones round theirs to a square or a prime's square.
-    default_sampler = "independent"
+    default_sampler = MITSUBA_SAMPLERS[0]
 
     def settings(self):
         return {"sampler": self.sampler or self.default_sampler, "reference_sampler": self.default_sampler}

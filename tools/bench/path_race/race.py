@@ -49,9 +49,6 @@ import clrt_run  # noqa: E402
 import metrics  # noqa: E402
 import peers  # noqa: E402
 
-SCENES = {"cornell1": HERE / "scenes" / "cornell1.ray", "knot": None, "knob4": None,
-          "units_point": HERE / "scenes" / "units_point.ray",
-          "units_area": HERE / "scenes" / "units_area.ray"}
 DEFAULT_SCENES = ["cornell1", "knot"]
 KNOT_OBJ = "knot-100k-flat.obj"
 # The material knob's lobe subsets that every peer's converter maps to a native BSDF of
@@ -71,12 +68,12 @@ def parse_args(argv):
     p.add_argument("--build", type=pathlib.Path, default=default_build(), help="the build tree (default: build)")
     p.add_argument("--clrt", type=pathlib.Path, help="clrt binary (default: $CLRT or BUILD/clrt)")
     p.add_argument("--peer", choices=sorted(peers.PEERS), default="cycles", help="the renderer raced (default: cycles)")
-    p.add_argument("--mitsuba-sampler", choices=("independent", "stratified", "multijitter", "orthogonal", "ldsampler"),
-                   help="Mitsuba's sampler (default: its own default, independent)")
+    p.add_argument("--mitsuba-sampler", choices=peers.MITSUBA_SAMPLERS,
+                   help=f"Mitsuba's sampler (default: its own default, {peers.MITSUBA_SAMPLERS[0]})")
     p.add_argument("--venv", type=pathlib.Path,
                    help="the peer's venv (default: BUILD/cycles-venv, or BUILD/mitsuba-venv for Mitsuba)")
     p.add_argument("--spp", default="16,64", help="samples per pixel of the raced renders, comma-separated")
-    p.add_argument("--seeds", type=int, default=3, help="independent renders per renderer and spp for the RMSE")
+    p.add_argument("--seeds", type=int, default=3, help="independent renders per renderer and spp, between which the noise is measured")
     p.add_argument("--runs", type=int, default=3, help="timed runs per renderer and spp (median)")
     p.add_argument("--resolution", default="128x128", help="WxH")
     p.add_argument("--ref-spp", type=int, default=2048, help="samples per pixel of the references")
@@ -213,13 +210,16 @@ def prepare_knot(build):
     return scene
 
 
+# A scene name's file, or the function that writes it into the build tree.
+SCENES = {"cornell1": HERE / "scenes" / "cornell1.ray", "knot": prepare_knot, "knob4": prepare_knob,
+          "units_point": HERE / "scenes" / "units_point.ray",
+          "units_area": HERE / "scenes" / "units_area.ray"}
+
+
 def resolve_scene(name, build):
-    if name == "knot":
-        return prepare_knot(build)
-    if name == "knob4":
-        return prepare_knob(build)
     if name in SCENES:
-        return SCENES[name]
+        scene = SCENES[name]
+        return scene(build) if callable(scene) else scene
     path = pathlib.Path(name)
     if not path.exists():
         sys.exit(f"race.py: no scene {name} (names: {', '.join(SCENES)})")
@@ -348,7 +348,7 @@ def race_scene(renderers, label, scene, args, workdir):
             row[f"speedup_vs_{time_of}"] = metrics.speedup(row["clrt_rmse"], row["clrt_s"], row["peer_rmse"], seconds)
         row["clrt_efficiency"] = metrics.efficiency(row["clrt_rmse"], row["clrt_s"])
         record["spp"].append(row)
-        print(f"race.py: {label} {spp} spp: RMSE clrt {row['clrt_rmse']:.4g}, {peer.label} {row['peer_rmse']:.4g}; "
+        print(f"race.py: {label} {spp} spp: noise clrt {row['clrt_rmse']:.4g}, {peer.label} {row['peer_rmse']:.4g}; "
               f"time clrt {row['clrt_s']:.2f} s, {peer.label} {row['peer_render_s']:.2f} s "
               f"({row['peer_process_s']:.2f} s process)", file=sys.stderr)
     return record

@@ -28,10 +28,9 @@ import time
 HERE = pathlib.Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE.parents[1] / "mitsuba"))
 import ray_to_mitsuba as rtm  # noqa: E402
+from peers import MITSUBA_SAMPLERS  # noqa: E402
 
 VARIANTS = ("llvm_ad_rgb", "scalar_rgb")
-# Mitsuba's samplers; `independent` is its default.
-SAMPLERS = ("independent", "stratified", "multijitter", "orthogonal", "ldsampler")
 
 
 def main():
@@ -44,7 +43,7 @@ def main():
     parser.add_argument("--resolution", help="WxH (default: the scene's)")
     parser.add_argument("--seed", type=int, default=0)
     parser.add_argument("--threads", type=int, default=2)
-    parser.add_argument("--sampler", choices=SAMPLERS, default="independent")
+    parser.add_argument("--sampler", choices=MITSUBA_SAMPLERS, default=MITSUBA_SAMPLERS[0])
     args = parser.parse_args()
 
     import drjit as dr
