@@ -1,6 +1,7 @@
 #include "geometry/bvh_builder.hpp"
 
 #include <algorithm>
+#include <array>
 #include <future>
 #include <stdexcept>
 #include <utility>
@@ -80,34 +81,42 @@ class Builder {
     return p;
   }
 
+  // A node's children while it is opened: up to kWidth, held in place (a node is opened for
+  // every eight or so items of the tree, too often for a heap allocation each).
+  struct Children {
+    std::array<Child, kWidth> kid;
+    int count = 0;
+  };
+
   // The child to split next: while depth is tight, the largest by count of those that must
   // split; else the largest by area (the one rays are most likely to enter) of those the SAH
   // splits. A child planned as a leaf stays one even when lanes are free: splitting it further
   // (Embree's way) made smaller leaves that cost more to visit than the packets saved (9%
   // fewer rays per second over the SPD scenes, 40% on shells-5). -1 when none is.
-  static int next_to_split(const std::vector<Child>& kids) {
-    const bool tight = std::any_of(kids.begin(), kids.end(), [](const Child& c) {
+  static int next_to_split(const Children& kids) {
+    const auto end = kids.kid.begin() + kids.count;
+    const bool tight = std::any_of(kids.kid.begin(), end, [](const Child& c) {
       return !c.plan.leaf && c.plan.forced;
     });
     const auto key = [tight](const Child& c) {
       return tight ? static_cast<float>(c.range.size()) : c.range.bounds.half_area();
     };
     int best = -1;
-    for (int k = 0; k < static_cast<int>(kids.size()); ++k)
-      if (!kids[k].plan.leaf && (best < 0 || key(kids[k]) > key(kids[best]))) best = k;
+    for (int k = 0; k < kids.count; ++k)
+      if (!kids.kid[k].plan.leaf && (best < 0 || key(kids.kid[k]) > key(kids.kid[best]))) best = k;
     return best;
   }
 
-  std::vector<Child> open_node(const Child& node, int depth) {
-    std::vector<Child> kids{node};
-    while (static_cast<int>(kids.size()) < kWidth) {
+  void open_node(const Child& node, int depth, Children& kids) {
+    kids.kid[0] = node;
+    kids.count = 1;
+    while (kids.count < kWidth) {
       const int k = next_to_split(kids);
       if (k < 0) break;
-      const Split split = kids[k].plan.split;
-      kids[k] = {split.left, plan(split.left, depth)};
-      kids.push_back({split.right, plan(split.right, depth)});
+      const Split split = kids.kid[k].plan.split;
+      kids.kid[k] = {split.left, plan(split.left, depth)};
+      kids.kid[kids.count++] = {split.right, plan(split.right, depth)};
     }
-    return kids;
   }
 
   // `node.plan` was made for the level above, where a node one level deeper could be forced
@@ -118,18 +127,19 @@ class Builder {
     nodes_.emplace_back();
     if (node.range.size() == 0) return index;
     const bool keep = node.plan.forced == must_force(node.range, depth);
-    const std::vector<Child> kids = open_node(keep ? node : Child{node.range, plan(node.range, depth)}, depth);
+    Children kids;
+    open_node(keep ? node : Child{node.range, plan(node.range, depth)}, depth, kids);
     // Subtrees work on disjoint slices of the items, so they can be built side by side.
     const bool parallel = depth == 0 && node.range.size() >= kParallelItems && parallel_threads() > 1;
-    std::vector<std::future<Builder>> subtrees(kids.size());
-    for (std::size_t k = 0; parallel && k < kids.size(); ++k)
-      if (!kids[k].plan.leaf) subtrees[k] = std::async(std::launch::async, [this, &kids, k, depth] {
+    std::array<std::future<Builder>, kWidth> subtrees;
+    for (int k = 0; parallel && k < kids.count; ++k)
+      if (!kids.kid[k].plan.leaf) subtrees[k] = std::async(std::launch::async, [this, &kids, k, depth] {
         Builder sub(items_, settings_, sure_leaf_size_);
-        sub.build_node(kids[k], depth + 1);
+        sub.build_node(kids.kid[k], depth + 1);
         return sub;
       });
-    for (std::size_t k = 0; k < kids.size(); ++k) {
-      const Child& kid = kids[k];
+    for (int k = 0; k < kids.count; ++k) {
+      const Child& kid = kids.kid[k];
       BvhLane lane;
       lane.box = kid.range.bounds;
       if (kid.plan.leaf) {

@@ -318,18 +318,23 @@ Range side(std::uint32_t begin, std::uint32_t end, const Occupied& bins, bool le
   return {begin, end, to_box(all.lo, all.hi), centres.box(), all.alone};
 }
 
-// The box of the centres of items [first, first + count), on every core.
-CentreBox centre_box(const BuildItem* first, std::size_t count) {
-  const std::size_t blocks = (count + kParallelBlock - 1) / kParallelBlock;
-  std::vector<CentreBox> parts(blocks);
-  parallel_for(blocks, 1, [&](std::size_t b) {
-    const std::size_t end = std::min(count, (b + 1) * kParallelBlock);
-    for (std::size_t i = b * kParallelBlock; i < end; ++i) parts[b].grow(centers(first[i]));
-  });
-  CentreBox all;
-  for (const CentreBox& part : parts) all.grow(part);
-  return all;
-}
+// The boxes of the centres of the items a partition sends left and right.
+// (Apart, not indexed by side: kept in registers.)
+struct SideCentres {
+  CentreBox left, right;
+
+  void add(const BuildItem& item, bool goes_left) {
+    const V4 c = centers(item);
+    if (goes_left)
+      left.grow(c);
+    else
+      right.grow(c);
+  }
+  void merge(const SideCentres& s) {
+    left.grow(s.left);
+    right.grow(s.right);
+  }
+};
 
 }  // namespace
 
@@ -404,11 +409,12 @@ std::optional<Split> split_sah(BuildItems& items, const Range& range, const SahC
     BuildItem* const last = items.data() + range.end;
     const auto goes_left = [&](V4 c) { return binning.bin(c[best.axis], best.axis) <= best.last_left_bin; };
     if (on_every_core) {
+      SideCentres seen;
       BuildItem* const middle =
-          partition_like_std(first, last, [&](const BuildItem& item) { return goes_left(centers(item)); });
+          partition_like_std(first, last, [&](const BuildItem& item) { return goes_left(centers(item)); }, seen);
       mid = range.begin + static_cast<std::uint32_t>(middle - first);
-      centres[0] = centre_box(first, mid - range.begin);
-      centres[1] = centre_box(middle, range.end - mid);
+      centres[0] = seen.left;
+      centres[1] = seen.right;
     } else {
       // Each item's centre joins its side's box as the partition tests it (more than once does
       // no harm to a box).

@@ -416,20 +416,51 @@ TEST_CASE("the BVH and its tables are the same on any number of threads", "[bvh]
   check_scene_bvh(scene, one);
 }
 
+// What a partition saw: how many items went each way, and the largest value each way.
+struct SeenSides {
+  std::size_t count[2] = {0, 0};
+  std::uint32_t largest[2] = {0, 0};
+  void add(std::uint32_t v, bool left) {
+    ++count[left ? 0 : 1];
+    largest[left ? 0 : 1] = std::max(largest[left ? 0 : 1], v);
+  }
+  void merge(const SeenSides& s) {
+    for (int k = 0; k < 2; ++k) {
+      count[k] += s.count[k];
+      largest[k] = std::max(largest[k], s.largest[k]);
+    }
+  }
+};
+
 TEST_CASE("a large range is partitioned in exactly std::partition's order", "[bvh]") {
   std::mt19937 rng(5);
   for (std::size_t n : {std::size_t{0}, std::size_t{1}, std::size_t{7}, 2 * kParallelBlock - 1,
-                        2 * kParallelBlock, std::size_t{100001}}) {
-    for (unsigned percent_left : {0u, 10u, 50u, 100u}) {
-      std::vector<std::uint32_t> values(n);
-      for (std::uint32_t& v : values) v = static_cast<std::uint32_t>(rng() % 100) | static_cast<std::uint32_t>(rng()) << 8;
-      std::vector<std::uint32_t> expected = values;
+                        2 * kParallelBlock, std::size_t{100001}, 5 * kParallelBlock + 3}) {
+    for (unsigned percent_left : {0u, 1u, 10u, 50u, 99u, 100u}) {
+      std::vector<std::uint32_t> input(n);
+      for (std::uint32_t& v : input) v = static_cast<std::uint32_t>(rng() % 100) | static_cast<std::uint32_t>(rng()) << 8;
+      std::vector<std::uint32_t> expected = input;
       const auto left = [percent_left](std::uint32_t v) { return (v & 0xff) < percent_left; };
       const auto expected_middle = std::partition(expected.begin(), expected.end(), left) - expected.begin();
-      const auto middle = partition_like_std(values.data(), values.data() + n, left) - values.data();
-      INFO(n << " items, " << percent_left << "% to the left");
-      CHECK(middle == expected_middle);
-      CHECK(values == expected);
+      SeenSides expected_seen;
+      for (std::uint32_t v : input) expected_seen.add(v, left(v));
+      for (unsigned threads : {1u, 2u, 7u}) {
+        INFO(n << " items, " << percent_left << "% to the left, " << threads << " threads");
+        parallel_thread_limit = threads;
+        std::vector<std::uint32_t> values = input;
+        SeenSides seen;
+        const auto middle = partition_like_std(values.data(), values.data() + n, left, seen) - values.data();
+        parallel_thread_limit = 0;
+        CHECK(middle == expected_middle);
+        CHECK(values == expected);
+        // Each item is seen once when the range is partitioned in blocks.
+        if (n >= 2 * kParallelBlock) {
+          CHECK(seen.count[0] == expected_seen.count[0]);
+          CHECK(seen.count[1] == expected_seen.count[1]);
+        }
+        CHECK(seen.largest[0] == expected_seen.largest[0]);
+        CHECK(seen.largest[1] == expected_seen.largest[1]);
+      }
     }
   }
 }
