@@ -354,3 +354,29 @@ TEST_CASE("redirected, clrt prints its device in 80 columns and a line per image
   CHECK(turn.output.find("clrt: wrote " + dir.file("turn-0002.png") + " (20x12, ") != std::string::npos);
   CHECK(turn.output.find("clrt: wrote 2 frames as ") != std::string::npos);
 }
+
+TEST_CASE("clrt-bench load times each scene once in a fresh process beside the best of its runs",
+          "[cli][usage]") {
+  const std::string mesh = std::string(CLRT_SOURCE_DIR) + "/scenes/mesh.ray", spheres = test_scene("reflect.ray");
+  const CommandResult r = run_program(CLRT_BENCH_EXE, "load " + quoted(mesh) + " " + quoted(spheres) + " --runs 2");
+  REQUIRE(r.exit_code == 0);
+  CHECK(r.output.find("| load + build Mtris/s | fresh process: load + build ms |\n") != std::string::npos);
+  // A row per scene, in their order: the path, its triangles, six figures of the best runs and
+  // the fresh run's load and build.
+  const std::regex row(R"(\| ([^|]+) \| (\d+) \|( [0-9.]+ \|){6} ([0-9.]+) \+ ([0-9.]+) \|\n)");
+  std::vector<std::smatch> rows;
+  for (auto it = std::sregex_iterator(r.output.begin(), r.output.end(), row); it != std::sregex_iterator(); ++it)
+    rows.push_back(*it);
+  REQUIRE(rows.size() == 2);
+  CHECK(rows[0][1].str() == mesh);
+  CHECK(std::stoul(rows[0][2].str()) > 0);
+  CHECK(rows[1][1].str() == spheres);
+  CHECK(rows[1][2].str() == "0");
+  for (const std::smatch& m : rows) CHECK(std::stod(m[4].str()) > 0);
+
+  // A scene that fails fails in the fresh process first, with its own message.
+  const CommandResult missing = run_program(CLRT_BENCH_EXE, "load /nonexistent/none.ray --runs 1");
+  CHECK(missing.exit_code == 1);
+  CHECK(missing.output.find("/nonexistent/none.ray: error: cannot read the scene file") != std::string::npos);
+  CHECK(missing.output.find("clrt-bench: error: the fresh run of /nonexistent/none.ray failed\n") != std::string::npos);
+}
