@@ -16,49 +16,46 @@ namespace clrt {
 // Ranges at least this large are partitioned in blocks of this many items on every core.
 constexpr std::size_t kParallelBlock = 16384;
 
-// What a partition may gather about the items as it tests them: `add(item, left)` for each item
-// (possibly more than once for one item), and `merge` of what two parts of the range gathered.
-struct SeenNothing {
-  template <class Item>
-  void add(const Item&, bool) {}
-  void merge(const SeenNothing&) {}
-};
+// A partition's test is an object that may gather what it sees: test(item) says whether the item
+// goes left (it may be asked more than once for one item), test.part() is the same test having
+// seen nothing, and test.merge(part) adds what a part saw.
 
-// Moves the items of [first, last) for which `left(item)` holds before the others, as
+// std::partition, on one core. (Flattened: left a call, std::partition kept the test's boxes in
+// memory, and a one-core build took 3% longer.)
+template <class Item, class Test>
+[[gnu::flatten]] Item* partition_testing(Item* first, Item* last, Test& test) {
+  return std::partition(first, last, [&test](const Item& item) { return test(item); });
+}
+
+// Moves the items of [first, last) for which `test(item)` holds before the others, as
 // std::partition does (libstdc++'s bidirectional algorithm, which it uses for random-access
 // iterators too): its scans from both ends swap the k-th item from the front that belongs on the
 // right with the k-th item from the back that belongs on the left. The same swaps are made here
-// by blocks: one pass tests every item, a second makes each block's swaps. `seen` gathers what
-// the tests saw. Returns the first item of the right side.
-template <class Item, class Left, class Seen>
-Item* partition_like_std(Item* first, Item* last, const Left& left, Seen& seen) {
+// by blocks: one pass tests every item, a second makes each block's swaps. Returns the first item
+// of the right side.
+template <class Item, class Test>
+Item* partition_like_std(Item* first, Item* last, Test& test) {
   const auto n = static_cast<std::size_t>(last - first);
-  if (n < 2 * kParallelBlock)
-    return std::partition(first, last, [&](const Item& item) {
-      const bool l = left(item);
-      seen.add(item, l);
-      return l;
-    });
+  if (n < 2 * kParallelBlock) return partition_testing(first, last, test);
   const std::size_t blocks = (n + kParallelBlock - 1) / kParallelBlock;
   const auto block_begin = [](std::size_t b) { return b * kParallelBlock; };
   const auto block_end = [n](std::size_t b) { return std::min(n, (b + 1) * kParallelBlock); };
   std::vector<std::uint8_t> goes_left(n);
   std::vector<std::size_t> lefts(blocks, 0);
-  std::vector<Seen> seen_in(blocks);
+  std::vector<Test> parts(blocks, test.part());
   parallel_for(blocks, 1, [&](std::size_t b) {
     // Gathered apart from the shared vectors: neighbouring blocks' entries share cache lines.
     std::size_t count = 0;
-    Seen block_seen;
+    Test part = test.part();
     for (std::size_t i = block_begin(b); i < block_end(b); ++i) {
-      const bool l = left(first[i]);
+      const bool l = part(first[i]);
       goes_left[i] = l ? 1 : 0;
       count += l;
-      block_seen.add(first[i], l);
     }
     lefts[b] = count;
-    seen_in[b] = block_seen;
+    parts[b] = part;
   });
-  for (const Seen& s : seen_in) seen.merge(s);
+  for (const Test& part : parts) test.merge(part);
   std::size_t middle = 0;
   for (std::size_t c : lefts) middle += c;
 
@@ -105,12 +102,6 @@ Item* partition_like_std(Item* first, Item* last, const Left& left, Seen& seen) 
     }
   });
   return first + middle;
-}
-
-template <class Item, class Left>
-Item* partition_like_std(Item* first, Item* last, const Left& left) {
-  SeenNothing nothing;
-  return partition_like_std(first, last, left, nothing);
 }
 
 }  // namespace clrt

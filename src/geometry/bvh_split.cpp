@@ -318,19 +318,24 @@ Range side(std::uint32_t begin, std::uint32_t end, const Occupied& bins, bool le
   return {begin, end, to_box(all.lo, all.hi), centres.box(), all.alone};
 }
 
-// The boxes of the centres of the items a partition sends left and right.
-// (Apart, not indexed by side: kept in registers.)
-struct SideCentres {
+// A split's test of an item (bvh_partition.hpp), gathering the boxes of the centres of the items
+// it sends left and right (apart, not indexed by side: kept in registers).
+struct SplitTest {
+  const Binning* binning;
+  int axis, last_left_bin;
   CentreBox left, right;
 
-  void add(const BuildItem& item, bool goes_left) {
+  bool operator()(const BuildItem& item) {
     const V4 c = centers(item);
+    const bool goes_left = binning->bin(c[axis], axis) <= last_left_bin;
     if (goes_left)
       left.grow(c);
     else
       right.grow(c);
+    return goes_left;
   }
-  void merge(const SideCentres& s) {
+  SplitTest part() const { return {binning, axis, last_left_bin, {}, {}}; }
+  void merge(const SplitTest& s) {
     left.grow(s.left);
     right.grow(s.right);
   }
@@ -407,31 +412,13 @@ std::optional<Split> split_sah(BuildItems& items, const Range& range, const SahC
   } else {
     BuildItem* const first = items.data() + range.begin;
     BuildItem* const last = items.data() + range.end;
-    const auto goes_left = [&](V4 c) { return binning.bin(c[best.axis], best.axis) <= best.last_left_bin; };
-    if (on_every_core) {
-      SideCentres seen;
-      BuildItem* const middle =
-          partition_like_std(first, last, [&](const BuildItem& item) { return goes_left(centers(item)); }, seen);
-      mid = range.begin + static_cast<std::uint32_t>(middle - first);
-      centres[0] = seen.left;
-      centres[1] = seen.right;
-    } else {
-      // Each item's centre joins its side's box as the partition tests it (more than once does
-      // no harm to a box).
-      CentreBox left_box, right_box;  // apart, not indexed: kept in registers
-      const auto left = [&](const BuildItem& item) {
-        const V4 c = centers(item);
-        const bool l = goes_left(c);
-        if (l)
-          left_box.grow(c);
-        else
-          right_box.grow(c);
-        return l;
-      };
-      mid = range.begin + static_cast<std::uint32_t>(std::partition(first, last, left) - first);
-      centres[0] = left_box;
-      centres[1] = right_box;
-    }
+    // Each item's centre joins its side's box as the partition tests it.
+    SplitTest test = SplitTest{&binning, best.axis, best.last_left_bin, {}, {}};
+    BuildItem* const middle =
+        on_every_core ? partition_like_std(first, last, test) : partition_testing(first, last, test);
+    mid = range.begin + static_cast<std::uint32_t>(middle - first);
+    centres[0] = test.left;
+    centres[1] = test.right;
   }
   Split split;
   // The sides' boxes are the bins' unions: no pass over the items to measure them again.

@@ -416,14 +416,18 @@ TEST_CASE("the BVH and its tables are the same on any number of threads", "[bvh]
   check_scene_bvh(scene, one);
 }
 
-// What a partition saw: how many items went each way, and the largest value each way.
+// A partition's test that counts how many items went each way and the largest value each way.
 struct SeenSides {
+  unsigned percent_left;
   std::size_t count[2] = {0, 0};
   std::uint32_t largest[2] = {0, 0};
-  void add(std::uint32_t v, bool left) {
+  bool operator()(std::uint32_t v) {
+    const bool left = (v & 0xff) < percent_left;
     ++count[left ? 0 : 1];
     largest[left ? 0 : 1] = std::max(largest[left ? 0 : 1], v);
+    return left;
   }
+  SeenSides part() const { return {percent_left}; }
   void merge(const SeenSides& s) {
     for (int k = 0; k < 2; ++k) {
       count[k] += s.count[k];
@@ -442,14 +446,14 @@ TEST_CASE("a large range is partitioned in exactly std::partition's order", "[bv
       std::vector<std::uint32_t> expected = input;
       const auto left = [percent_left](std::uint32_t v) { return (v & 0xff) < percent_left; };
       const auto expected_middle = std::partition(expected.begin(), expected.end(), left) - expected.begin();
-      SeenSides expected_seen;
-      for (std::uint32_t v : input) expected_seen.add(v, left(v));
+      SeenSides expected_seen{percent_left};
+      for (std::uint32_t v : input) expected_seen(v);
       for (unsigned threads : {1u, 2u, 7u}) {
         INFO(n << " items, " << percent_left << "% to the left, " << threads << " threads");
         parallel_thread_limit = threads;
         std::vector<std::uint32_t> values = input;
-        SeenSides seen;
-        const auto middle = partition_like_std(values.data(), values.data() + n, left, seen) - values.data();
+        SeenSides seen{percent_left};
+        const auto middle = partition_like_std(values.data(), values.data() + n, seen) - values.data();
         parallel_thread_limit = 0;
         CHECK(middle == expected_middle);
         CHECK(values == expected);
