@@ -240,6 +240,7 @@ class Parser {
       out_.warnings.push_back(scene_warning(m.where, "material " + quoted(m.name) + " is defined again (first at line " +
                                                          std::to_string(first->second) +
                                                          "); this later definition counts"));
+    out_.last_definition[m.name] = out_.materials.size();
     out_.materials.push_back(std::move(m));
   }
 
@@ -321,9 +322,8 @@ class Parser {
 }  // namespace
 
 const MtlMaterial* MtlLibrary::find(std::string_view name) const {
-  const auto found = std::find_if(materials.rbegin(), materials.rend(),
-                                  [name](const MtlMaterial& m) { return m.name == name; });
-  return found == materials.rend() ? nullptr : &*found;
+  const auto found = last_definition.find(std::string(name));
+  return found == last_definition.end() ? nullptr : &materials[found->second];
 }
 
 MtlLibrary parse_mtl(std::string_view text, const std::string& file) {

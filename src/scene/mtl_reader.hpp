@@ -4,6 +4,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <unordered_map>
 #include <vector>
 
 #include "math/vec3.hpp"
@@ -36,6 +37,9 @@ struct MtlLibrary {
   // "FILE:LINE:COLUMN: warning: ..." for what clrt does not render, once per keyword or map
   // option, and for each repeated material name.
   std::vector<std::string> warnings;
+  // Each name's last definition: its index in `materials`. An OBJ file may name a material per
+  // face, so looking each name up among all of them would load such a file in quadratic time.
+  std::unordered_map<std::string, std::size_t> last_definition;
 
   // The last material called `name`, or null.
   const MtlMaterial* find(std::string_view name) const;

@@ -145,6 +145,26 @@ TEST_CASE("a usemtl in force carries across the slices of a large file", "[scene
   }
 }
 
+TEST_CASE("an OBJ naming a material per face finds each in its library", "[scene][mesh][mtl]") {
+  // 200000 materials: looked up one by one among all of them, this took minutes.
+  const int count = 200000;
+  std::string mtl, obj = "mtllib box.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\n";
+  for (int i = count - 1; i >= 0; --i) mtl += "newmtl m" + std::to_string(i) + "\nKd " + std::to_string(i) + " 0 0\n";
+  for (int i = 0; i < count; ++i) obj += "usemtl m" + std::to_string(i) + "\nf 1 2 3\n";
+  const Scene scene = load(obj, mtl, "mesh box.obj\n");
+  REQUIRE(scene.meshes.size() == 1);
+  const clrt::MeshData& mesh = scene.meshes[0];
+  REQUIRE(mesh.triangle_names.size() == static_cast<std::size_t>(count));
+  REQUIRE(mesh.name_materials.size() == static_cast<std::size_t>(count));
+  for (int i = 0; i < count; ++i) {
+    INFO("face " << i);
+    const int m = mesh.name_materials.at(mesh.triangle_names[i]);
+    REQUIRE(m >= 0);
+    REQUIRE(scene.materials.at(static_cast<std::size_t>(m)).color.x == i);
+  }
+  CHECK(scene.warnings.empty());
+}
+
 TEST_CASE("an MTL material maps onto clrt's model by the documented table", "[scene][mtl]") {
   std::vector<std::string> warnings;
   clrt::MtlMaterial plain;

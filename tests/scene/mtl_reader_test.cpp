@@ -348,6 +348,23 @@ TEST_CASE("a repeated material name: find gives the last one, with a warning at 
   CHECK(MtlLibrary{}.find("x") == nullptr);
 }
 
+TEST_CASE("each name's last definition is indexed, so that finding a name is one look-up", "[scene][mtl]") {
+  std::string text;
+  for (int i = 0; i < 1000; ++i) text += "newmtl m" + std::to_string(i) + "\n";
+  text += "newmtl m7\nnewmtl m500\n";
+  const MtlLibrary lib = read(text);
+  REQUIRE(lib.materials.size() == 1002);
+  CHECK(lib.last_definition.size() == 1000);
+  CHECK(lib.last_definition.at("m0") == 0);
+  CHECK(lib.last_definition.at("m999") == 999);
+  CHECK(lib.last_definition.at("m7") == 1000);
+  CHECK(lib.last_definition.at("m500") == 1001);
+  for (const auto& [name, index] : lib.last_definition) {
+    CHECK(lib.materials.at(index).name == name);
+    CHECK(lib.find(name) == &lib.materials[index]);
+  }
+}
+
 TEST_CASE("statements outside a material and nameless materials are errors", "[scene][mtl][errors]") {
   check_refused("Kd 1 1 1\nnewmtl a\n", "lib.mtl:1:1", "'Kd' before the first newmtl");
   check_refused("# header\n\n   Ka 1 1 1\n", "lib.mtl:3:4", "'Ka' before the first newmtl");
