@@ -8,6 +8,7 @@
 
 #include "scene/limits.hpp"
 #include "scene/number.hpp"
+#include "scene/texture_rules.hpp"
 
 namespace clrt {
 namespace {
@@ -297,6 +298,9 @@ class Parser {
       const Word w = s.take();
       if (o->takes != Takes::Numbers && !is_value(o->takes, w.text)) s.fail_at(w, needs + ", found " + quoted(w.text));
       values[count++] = o->takes == Takes::Numbers ? finite_number(s, w, map + " " + std::string(o->name)) : 0;
+      // u and v are the texture's scale; a w is read and ignored.
+      if (o->name == "-s" && count <= 2)
+        if (const auto problem = texture_scale_problem(values[count - 1])) s.fail_at(w, map + " -s: " + *problem);
       if (o->name == "-clamp") t.clamp = w.text == "on";
     }
     if (count < o->least && !value_follows())

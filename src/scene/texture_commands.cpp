@@ -5,6 +5,7 @@
 #include "scene/command_table.hpp"
 #include "scene/limits.hpp"
 #include "scene/texture_images.hpp"
+#include "scene/texture_rules.hpp"
 #include "shared/texture.h"
 
 namespace clrt {
@@ -34,7 +35,8 @@ void read_options(const CommandArgs& a, std::size_t first, TextureSpec& t) {
       double* target = option == "scale" ? t.scale : t.offset;
       for (std::size_t k = 0; k < 2; ++k) {
         target[k] = a.number_in(i + 1 + k, -limits::kMaxNumber, limits::kMaxNumber, "the texture's " + option);
-        if (option == "scale" && target[k] == 0) throw a.error_at(i + 1 + k, "a texture's scale must not be 0");
+        if (option != "scale") continue;
+        if (const auto problem = texture_scale_problem(target[k])) throw a.error_at(i + 1 + k, *problem);
       }
       i += 3;
     } else if (option == "wrap") {

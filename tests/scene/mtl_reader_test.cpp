@@ -437,6 +437,8 @@ TEST_CASE("a map option short of its values is an error", "[scene][mtl][errors]"
   check_refused("newmtl a\nmap_Kd -o\n", "lib.mtl:2:10", "map_Kd needs a file name after its options");
   // A word that is no value: the place is at it.
   check_refused("newmtl a\nmap_Kd -s x a.png\n", "lib.mtl:2:11", "-s needs 1 value, up to 3, found 'x'");
+  check_refused("newmtl a\nmap_Kd -s 0 0 a.png\n", "lib.mtl:2:11", "map_Kd -s: a texture's scale must not be 0");
+  check_refused("newmtl a\nmap_Ks -s 2 -0 a.png\n", "lib.mtl:2:13", "map_Ks -s: a texture's scale must not be 0");
   check_refused("newmtl a\nmap_Kd -o -s 2 a.png\n", "lib.mtl:2:11", "-o needs 1 value, up to 3, found '-s'");
   check_refused("newmtl a\nmap_Kd -mm 1 x a.png\n", "lib.mtl:2:14", "-mm needs 2 values, found 'x'");
   check_refused("newmtl a\nbump -bm x n.png\n", "lib.mtl:2:10", "-bm needs 1 value, found 'x'");

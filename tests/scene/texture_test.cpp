@@ -134,6 +134,36 @@ TEST_CASE("an MTL map_Kd and map_Ks become textures of their material, and a bum
   CHECK_THAT(s.warnings[0], Catch::Contains("bump map"));
 }
 
+TEST_CASE("a .ray texture and an MTL map accept and refuse the same scale and offset", "[scene][texture][mtl]") {
+  ScratchDir dir;
+  write_png(dir, "a.png");
+  dir.write("box.obj", "mtllib box.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl m\nf 1 2 3\n");
+  const auto ray_refuses = [&](const std::string& option, const std::string& values) {
+    try {
+      load_scene(dir.write("scene.ray", "texture color image a.png " + option + " " + values + "\nsphere\n"));
+      return false;
+    } catch (const SceneError&) {
+      return true;
+    }
+  };
+  const auto mtl_refuses = [&](const std::string& option, const std::string& values) {
+    dir.write("box.mtl", "newmtl m\nmap_Kd " + option + " " + values + " a.png\n");
+    try {
+      load_scene(dir.write("scene.ray", "mesh box.obj\n"));
+      return false;
+    } catch (const SceneError&) {
+      return true;
+    }
+  };
+  for (const char* values : {"0 0", "1 0", "0 1", "-0 2", "-2 0.5", "1e-300 1", "1e12 -1e12", "1e13 1"})
+    for (const std::string option : {"scale", "offset"}) {
+      INFO(option << " " << values);
+      CHECK(ray_refuses(option, values) == mtl_refuses(option == "scale" ? "-s" : "-o", values));
+    }
+  CHECK(mtl_refuses("-s", "0 0"));
+  CHECK_FALSE(mtl_refuses("-s", "2 3 0"));  // w is not used
+}
+
 TEST_CASE("a map_Kd that cannot be read is an error at its MTL line", "[scene][texture][mtl][errors]") {
   ScratchDir dir;
   dir.write("box.mtl", "newmtl painted\nKd 1 1 1\nmap_Kd nowhere.png\n");
