@@ -31,9 +31,9 @@ const LightKindEntry& find_kind(const CommandArgs& a) {
   if (!entry) {
     std::vector<std::string> names;
     for (const LightKindEntry& row : light_kind_table()) names.emplace_back(row.name);
-    const std::optional<std::string> near = nearest_name(kind, names);
+    const std::string near = did_you_mean(kind, names);
     throw a.error_at(kKind, "unknown light kind '" + excerpt(a.word(kKind).text) + "' (" +
-                                (near ? "did you mean '" + *near + "'? " : "") + "expected " +
+                                (near.empty() ? "" : near + " ") + "expected " +
                                 light_kind_names() + ")");
   }
   return *entry;

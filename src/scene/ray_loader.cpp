@@ -17,8 +17,7 @@ SceneError unknown_command(const CommandArgs& args) {
   std::vector<std::string> names;
   for (const auto& [name, handler] : command_table()) names.push_back(name);
   std::string message = "unknown command '" + excerpt(args.command_word().text) + "'";
-  if (const std::optional<std::string> near = nearest_name(args.name(), names))
-    message += " (did you mean '" + *near + "'?)";
+  if (const std::string near = did_you_mean(args.name(), names); !near.empty()) message += " (" + near + ")";
   return SceneError(args.command_location(), message);
 }
 

@@ -39,4 +39,9 @@ std::optional<std::string> nearest_name(const std::string& word,
   return best;
 }
 
+std::string did_you_mean(const std::string& word, const std::vector<std::string>& names) {
+  const std::optional<std::string> near = nearest_name(word, names);
+  return near ? "did you mean '" + *near + "'?" : "";
+}
+
 }  // namespace clrt

@@ -20,4 +20,8 @@ std::size_t edit_distance(const std::string& a, const std::string& b);
 std::optional<std::string> nearest_name(const std::string& word,
                                         const std::vector<std::string>& names);
 
+// "did you mean 'sphere'?" for the name nearest_name finds, or "" when none is close: the
+// suggestion of the scene readers' errors and warnings.
+std::string did_you_mean(const std::string& word, const std::vector<std::string>& names);
+
 }  // namespace clrt

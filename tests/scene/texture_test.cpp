@@ -82,12 +82,50 @@ TEST_CASE("texture errors point at the word", "[scene][texture][errors]") {
   require_error("texture color checker 1 1 1 0 0 -1\n", 1, 33, "texture colour");
   require_error("texture color checker 1 1 1 0 0 0 scale 0 1\n", 1, 41, "must not be 0");
   require_error("texture color checker 1 1 1 0 0 0 scale 1\n", 1, 42, "takes 2 numbers");
-  require_error("texture color checker 1 1 1 0 0 0 octaves 3\n", 1, 35, "unknown texture option");
+  require_error("texture color checker 1 1 1 0 0 0 stripes 3\n", 1, 35, "unknown texture option 'stripes'");
+  require_error("texture color checker 1 1 1 0 0 0 octaves 17\n", 1, 43, "octaves");  // checked where unused
+  require_error("texture color checker 1 1 1 0 0 0 wrap mirror\n", 1, 40, "repeat or clamp");
   require_error("texture color noise 1 1 1 0 0 0 octaves 17\n", 1, 41, "octaves");
   require_error("texture color image a.png wrap mirror\n", 1, 32, "repeat or clamp");
   require_error("texture color image\n", 1, 20, "file name");
   require_error("texture color off now\n", 1, 19, "wrong number of arguments");
   require_error("triangle 0 0 0 0 0 1 0 0 1 0 0 1 0 0\n", 1, 37, "wrong number of arguments");
+}
+
+TEST_CASE("a mistyped texture word is offered the nearest one", "[scene][texture][errors]") {
+  require_error("texture colour checker 1 1 1 0 0 0\n", 1, 9, "found 'colour' (did you mean 'color'?)");
+  require_error("texture KD image a.png\n", 1, 9, "found 'KD' (did you mean 'ks'?)");
+  require_error("texture color chekcer 1 1 1 0 0 0\n", 1, 15, "unknown texture 'chekcer' (did you mean 'checker'?");
+  require_error("texture color imgae a.png\n", 1, 15, "(did you mean 'image'?");
+  require_error("texture color checker 1 1 1 0 0 0 scael 2 2\n", 1, 35,
+                "unknown texture option 'scael' (did you mean 'scale'?");
+  require_error("texture color noise 1 1 1 0 0 0 Octave 2\n", 1, 33, "(did you mean 'octaves'?");
+  require_error("texture color checker 1 1 1 0 0 0 wrap clmap\n", 1, 40,
+                "found 'clmap' (did you mean 'clamp'?)");
+  // Nothing is offered when nothing is close.
+  for (const char* text : {"texture paint checker 1 1 1 0 0 0\n", "texture color stripes\n",
+                           "texture color checker 1 1 1 0 0 0 frobnicate 1\n"})
+    CHECK(load_error(text).message().find("did you mean") == std::string::npos);
+}
+
+TEST_CASE("an option written for another kind of texture is a warning at it, and changes nothing",
+          "[scene][texture]") {
+  const Scene s = load_text(
+      "texture color checker 1 1 1 0 0 0 wrap clamp\nsphere\n"
+      "texture color noise 1 1 1 0 0 0 wrap repeat octaves 2\nsphere\n"
+      "texture color checker 1 1 1 0 0 0 octaves 3 scale 2 2\nsphere\n");
+  REQUIRE(s.textures.size() == 3);
+  CHECK_FALSE(s.textures[0].clamp);
+  CHECK(s.textures[1].octaves == 2);
+  CHECK(s.textures[2].octaves == TextureSpec{}.octaves);
+  CHECK(s.textures[2].scale[0] == 2);
+  REQUIRE(s.warnings.size() == 3);
+  CHECK_THAT(s.warnings[0], Catch::EndsWith(
+                                "scene.ray:1:35: warning: wrap applies to image textures only (this is a checker texture); ignored"));
+  CHECK_THAT(s.warnings[1], Catch::EndsWith(
+                                "scene.ray:3:33: warning: wrap applies to image textures only (this is a noise texture); ignored"));
+  CHECK_THAT(s.warnings[2], Catch::EndsWith(
+                                "scene.ray:5:35: warning: octaves applies to noise textures only (this is a checker texture); ignored"));
 }
 
 TEST_CASE("a missing, malformed or oversized image is an error at the word naming it, before it is decoded",
