@@ -24,6 +24,12 @@ class MeshError : public std::runtime_error {
   MeshError(const SourceLocation& where, const std::string& message);  // "PATH:LINE:COLUMN: MESSAGE"
 };
 
+// A malformed MTL library of a mesh: the caller names it as a material library, not a mesh file.
+class MaterialLibraryError : public MeshError {
+ public:
+  using MeshError::MeshError;
+};
+
 // Polygons are cut into fans. Vertex normals are kept only if every corner of every face has
 // one; texture coordinates for the triangles whose three corners name one (MeshData::texcoords).
 // Throws MeshError for a file that cannot be read, a malformed line (a word that is not a
@@ -41,7 +47,7 @@ MeshData load_obj_mesh(const std::string& path, const FileSource& files = disk_f
 // libraries (found beside the OBJ file) and mapped onto clrt's model (scene/mtl_material.hpp):
 // none for a name no library defines. A library that cannot be read, a name no library
 // defines and what a library says that clrt does not render are warnings, each said once; a
-// malformed library is a MeshError.
+// malformed library is a MaterialLibraryError.
 struct MeshMaterials {
   std::vector<std::optional<MaterialSpec>> by_name;
   // Per name, the maps clrt renders (map_Kd, map_Ks), their paths resolved against their

@@ -70,7 +70,7 @@ MeshMaterials load_mesh_materials(const MeshData& mesh, const FileSource& files)
         libraries.push_back(parse_mtl(without_byte_order_mark(file->text()), path));
         library_folders.push_back(std::filesystem::path(path).parent_path());
       } catch (const SceneError& e) {
-        throw MeshError(e.where(), e.message());
+        throw MaterialLibraryError(e.where(), e.message());
       }
       out.warnings.insert(out.warnings.end(), libraries.back().warnings.begin(), libraries.back().warnings.end());
     }

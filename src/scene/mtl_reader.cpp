@@ -2,13 +2,16 @@
 
 #include <algorithm>
 #include <climits>
+#include <cctype>
 #include <cmath>
 #include <map>
 #include <set>
+#include <vector>
 
 #include "scene/limits.hpp"
 #include "scene/number.hpp"
 #include "scene/texture_rules.hpp"
+#include "text/nearest_name.hpp"
 
 namespace clrt {
 namespace {
@@ -198,6 +201,41 @@ Vec3 partial_vec3(const double* values, int count, const Vec3& defaults) {
   return {values[0], count > 1 ? values[1] : defaults.y, count > 2 ? values[2] : defaults.z};
 }
 
+// The keywords clrt reads, as the format spells them.
+const std::vector<std::string> kReadKeywords = {"newmtl", "Kd",     "Ks",     "Ke",       "Ns",  "Ni", "d",
+                                                "Tr",     "illum",  "map_Kd", "map_Ks", "map_bump", "bump"};
+// Keywords exporters write that clrt does not render: each is the note "not rendered", never
+// taken for a misspelling of one clrt reads (Ka is one letter from Kd).
+const std::vector<std::string> kUnrenderedKeywords = {
+    "Ka",     "Tf",    "Km",   "sharpness", "map_Ka", "map_d", "map_Ns", "map_Tr", "map_Ke", "map_Pr",
+    "map_Pm", "map_Ps", "disp", "decal",     "refl",   "Pr",    "Pm",     "Ps",     "Pc",     "Pcr",
+    "aniso",  "anisor", "norm"};
+
+std::string lower(std::string_view word) {
+  std::string out(word);
+  for (char& c : out) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return out;
+}
+
+// The keyword of `names` that `word` is in another case, or null.
+const std::string* other_case_of(std::string_view word, const std::vector<std::string>& names) {
+  const std::string lowered = lower(word);
+  for (const std::string& name : names)
+    if (lower(name) == lowered) return &name;
+  return nullptr;
+}
+
+// "did you mean 'Kd'?" for the keyword nearest to `word` whatever their cases, or "".
+std::string nearest_keyword(std::string_view word) {
+  std::vector<std::string> names = kReadKeywords, lowered;
+  names.insert(names.end(), kUnrenderedKeywords.begin(), kUnrenderedKeywords.end());
+  for (const std::string& name : names) lowered.push_back(lower(name));
+  const std::optional<std::string> near = nearest_name(lower(word), lowered);
+  if (!near) return "";
+  const auto at = std::find(lowered.begin(), lowered.end(), *near) - lowered.begin();
+  return "did you mean '" + names[static_cast<std::size_t>(at)] + "'?";
+}
+
 class Parser {
  public:
   explicit Parser(const std::string& file) : file_(file) {}
@@ -208,9 +246,20 @@ class Parser {
       throw SceneError(s.last_byte(), "a line ending in '\\' continues on the next line, which clrt does not "
                                       "support: write the statement on one line");
     const Word keyword = s.take();
-    const std::string_view k = keyword.text;
+    // Keywords are case-sensitive in the format, but exporters differ: `map_kd` is read as
+    // `map_Kd`, with a note, rather than lose the texture.
+    std::string_view k = keyword.text;
+    if (const std::string* known = other_case_of(k, kReadKeywords); known && *known != k) {
+      if (warned_.insert("case " + std::string(k)).second)
+        out_.warnings.push_back(scene_warning(s.at(keyword), quoted(k) + " is read as '" + *known +
+                                                                 "' (MTL keywords are case-sensitive)"));
+      k = *known;
+    }
     if (k == "newmtl") return new_material(s);
-    if (out_.materials.empty()) s.fail_at(keyword, quoted(k) + " before the first newmtl");
+    if (out_.materials.empty()) {
+      const std::string near = other_case_of(k, kUnrenderedKeywords) ? "" : nearest_keyword(k);
+      s.fail_at(keyword, quoted(k) + " before the first newmtl" + (near.empty() ? "" : " (" + near + ")"));
+    }
     MtlMaterial& m = out_.materials.back();
     if (k == "Kd" || k == "Ks" || k == "Ke")
       colour(s, k, k == "Kd" ? m.kd : k == "Ks" ? m.ks : m.ke);
@@ -225,7 +274,7 @@ class Parser {
     else if (k == "map_Kd" || k == "map_Ks" || k == "map_bump" || k == "bump")
       (k == "map_Kd" ? m.map_kd : k == "map_Ks" ? m.map_ks : m.map_bump) = map(s, k);
     else
-      warn(s.at(keyword), std::string(k));
+      unknown(s.at(keyword), k);
   }
 
   MtlLibrary take() { return std::move(out_); }
@@ -285,7 +334,12 @@ class Parser {
     const Word name = s.take();
     const MapOption* o = map_option(name.text);
     const std::string map(keyword);
-    if (!o) s.fail_at(name, "unknown option " + quoted(name.text) + " of " + map);
+    if (!o) {
+      std::vector<std::string> names;
+      for (const MapOption& known : kMapOptions) names.emplace_back(known.name);
+      const std::string near = did_you_mean(std::string(name.text), names);
+      s.fail_at(name, "unknown option " + quoted(name.text) + " of " + map + (near.empty() ? "" : " (" + near + ")"));
+    }
     if (o->name == "-bm" && keyword != "map_bump" && keyword != "bump")
       s.fail_at(name, "-bm belongs to bump maps, not " + map);
     if (!o->rendered) warn(s.at(name), map + " " + std::string(o->name));
@@ -296,7 +350,10 @@ class Parser {
     int count = 0;
     while (count < o->most && value_follows() && (o->takes != Takes::Numbers || looks_numeric(s.peek()))) {
       const Word w = s.take();
-      if (o->takes != Takes::Numbers && !is_value(o->takes, w.text)) s.fail_at(w, needs + ", found " + quoted(w.text));
+      if (o->takes != Takes::Numbers && !is_value(o->takes, w.text)) {
+        const std::string near = o->takes == Takes::OnOff ? did_you_mean(lower(w.text), {"on", "off"}) : "";
+        s.fail_at(w, needs + ", found " + quoted(w.text) + (near.empty() ? "" : " (" + near + ")"));
+      }
       values[count++] = o->takes == Takes::Numbers ? finite_number(s, w, map + " " + std::string(o->name)) : 0;
       // u and v are the texture's scale; a w is read and ignored.
       if (o->name == "-s" && count <= 2)
@@ -309,6 +366,15 @@ class Parser {
     if (o->name == "-s") t.scale = partial_vec3(values, count, MtlTextureRef{}.scale);
     if (o->name == "-o") t.offset = partial_vec3(values, count, MtlTextureRef{}.offset);
     if (o->name == "-bm") t.bump_multiplier = values[0];
+  }
+
+  // A keyword clrt does not read: one that exporters write is not rendered; one near a keyword
+  // is probably that keyword misspelt, which would otherwise drop a colour or a texture unseen.
+  void unknown(const SourceLocation& where, std::string_view k) {
+    const std::string near = other_case_of(k, kUnrenderedKeywords) ? "" : nearest_keyword(k);
+    if (near.empty()) return warn(where, std::string(k));
+    if (warned_.insert(std::string(k)).second)
+      out_.warnings.push_back(scene_warning(where, "unknown statement " + quoted(k) + " (" + near + "); ignored"));
   }
 
   // Once per `what` (a keyword, or a keyword and its option), at its first place.

@@ -114,6 +114,8 @@ int mesh_index(LoaderState& s, const CommandArgs& a) {
   try {
     s.scene.meshes.push_back(load_obj_mesh(path, *s.files, memory_left(s)));
     add_mesh_materials(s, s.scene.meshes.back());
+  } catch (const MaterialLibraryError& e) {
+    throw SceneError(a.command_location(), std::string("bad material library ") + e.what());
   } catch (const MeshError& e) {
     throw SceneError(a.command_location(), std::string("bad mesh file ") + e.what());
   }

@@ -290,13 +290,44 @@ TEST_CASE("a line ending in a backslash is refused at the backslash", "[scene][m
   CHECK(read("# \\\nnewmtl a\n").materials.size() == 1);
 }
 
-TEST_CASE("keywords are case-sensitive, as the MTL format has them", "[scene][mtl]") {
-  const MtlLibrary lib = read("newmtl a\nkd 1 1 1\nKD 1 1 1\nMap_Kd a.png\n");
+std::string read_as(const std::string& place, const std::string& written, const std::string& keyword) {
+  return "lib.mtl:" + place + ": warning: '" + written + "' is read as '" + keyword +
+         "' (MTL keywords are case-sensitive)";
+}
+
+TEST_CASE("a keyword in another case is read as the keyword, with a note once per spelling", "[scene][mtl]") {
+  const MtlLibrary lib = read("NEWMTL a\nkd 1 0 0\nKD 0 1 0\nMap_Kd a.png\nmap_kd b.png\nkd 0 0 1\nD 0.5\n");
+  REQUIRE(lib.materials.size() == 1);
+  CHECK(*lib.materials[0].kd == Vec3{0, 0, 1});
+  CHECK(lib.materials[0].map_kd->path == "b.png");
+  CHECK(*lib.materials[0].dissolve == 0.5);
+  CHECK(lib.warnings == std::vector<std::string>{read_as("1:1", "NEWMTL", "newmtl"), read_as("2:1", "kd", "Kd"),
+                                                 read_as("3:1", "KD", "Kd"), read_as("4:1", "Map_Kd", "map_Kd"),
+                                                 read_as("5:1", "map_kd", "map_Kd"), read_as("7:1", "D", "d")});
+  // A keyword clrt does not render stays a note in any case, not a misspelt Kd.
+  CHECK(warnings_of("newmtl a\nka 1 1 1\n") == std::vector<std::string>{ignored("2:1", "ka")});
+}
+
+TEST_CASE("a misspelt keyword is a warning naming the nearest keyword", "[scene][mtl]") {
+  const MtlLibrary lib = read("newmtl a\nKdd 1 0 0\nmap_Kdd a.png\nnewmlt b\nillumm 2\nKdd 1\n");
+  REQUIRE(lib.materials.size() == 1);
   CHECK_FALSE(lib.materials[0].kd);
   CHECK_FALSE(lib.materials[0].map_kd);
   CHECK(lib.warnings ==
-        std::vector<std::string>{ignored("2:1", "kd"), ignored("3:1", "KD"), ignored("4:1", "Map_Kd")});
-  check_refused("NEWMTL a\n", "lib.mtl:1:1", "before the first newmtl");
+        std::vector<std::string>{"lib.mtl:2:1: warning: unknown statement 'Kdd' (did you mean 'Kd'?); ignored",
+                                 "lib.mtl:3:1: warning: unknown statement 'map_Kdd' (did you mean 'map_Kd'?); ignored",
+                                 "lib.mtl:4:1: warning: unknown statement 'newmlt' (did you mean 'newmtl'?); ignored",
+                                 "lib.mtl:5:1: warning: unknown statement 'illumm' (did you mean 'illum'?); ignored"});
+  check_refused("newmlt a\n", "lib.mtl:1:1", "'newmlt' before the first newmtl (did you mean 'newmtl'?)");
+  check_refused("Ka 1 1 1\n", "lib.mtl:1:1", "'Ka' before the first newmtl");
+  CHECK_THAT(warnings_of("newmtl a\nframbozzle 1\n")[0], !Catch::Contains("did you mean"));
+}
+
+TEST_CASE("a misspelt map option or value names the nearest one", "[scene][mtl][errors]") {
+  check_refused("newmtl a\nmap_Kd -clmap on a.png\n", "lib.mtl:2:8",
+                "unknown option '-clmap' of map_Kd (did you mean '-clamp'?)");
+  check_refused("newmtl a\nmap_Kd -S 2 a.png\n", "lib.mtl:2:8", "(did you mean '-s'?)");
+  check_refused("newmtl a\nmap_Kd -clamp ON a.png\n", "lib.mtl:2:15", "found 'ON' (did you mean 'on'?)");
 }
 
 TEST_CASE("every statement clrt does not render is one warning, at its first place", "[scene][mtl]") {
