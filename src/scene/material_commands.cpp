@@ -2,6 +2,7 @@
 // mtl: whether meshes keep their MTL materials.
 #include "scene/command_table.hpp"
 #include "scene/limits.hpp"
+#include "text/nearest_name.hpp"
 
 namespace clrt {
 namespace {
@@ -47,8 +48,11 @@ void emission(LoaderState& s, const CommandArgs& a) {
 void mtl(LoaderState& s, const CommandArgs& a) {
   a.require_count({1});
   const std::string word = lower_case(a.word(0).text);
-  if (word != "on" && word != "off")
-    throw a.error_at(0, "mtl takes on or off, found " + excerpt(a.word(0).text));
+  if (word != "on" && word != "off") {
+    const std::string near = did_you_mean(word, {"off", "on"});  // "of" is one edit from either
+    throw a.error_at(0, "mtl takes on or off, found '" + excerpt(a.word(0).text) + "'" +
+                            (near.empty() ? "" : " (" + near + ")"));
+  }
   s.mesh_materials = word == "on";
 }
 

@@ -91,6 +91,8 @@ TEST_CASE("mtl takes on or off", "[scene][mesh][mtl][errors]") {
   CHECK(e.where().line == 2);
   CHECK(e.where().column == 5);
   CHECK_THAT(e.message(), Catch::Contains("on or off"));
+  CHECK_THAT(clrt::test::load_error("mtl of\n").message(), Catch::EndsWith("found 'of' (did you mean 'off'?)"));
+  CHECK(clrt::test::load_error("mtl maybe\n").message().find("did you mean") == std::string::npos);
 }
 
 TEST_CASE("a missing library and an undefined name are warnings at their OBJ lines, and those faces "
