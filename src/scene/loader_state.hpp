@@ -9,6 +9,7 @@
 #include "math/mat4.hpp"
 #include "scene/file_source.hpp"
 #include "scene/memory_limit.hpp"
+#include "scene/motion_turn.hpp"
 #include "scene/scene.hpp"
 #include "scene/source_location.hpp"
 
@@ -22,6 +23,7 @@ struct LoaderState {
   // The transform in force at `endpose`: objects are placed by it at time 0 and by `transform`
   // at time 1 (both the same: they do not move). `reset` clears it.
   std::optional<Mat4> start_pose;
+  MotionTurn turn;  // the rotations written since `endpose`, for the warning of a long turn
   int material = 0;                         // the current material: index into scene.materials
   bool mesh_materials = true;               // `mtl on|off`
   std::map<std::string, int> mesh_by_path;  // resolved path -> index into scene.meshes

@@ -71,6 +71,8 @@ InstanceSpec& add_object(LoaderState& s, const SourceLocation& where, ShapeKind 
   // Without a placement of its own the pose is taken as it is, bit for bit (a product with the
   // identity could turn a -0 into a +0).
   const auto placed = [&](const Mat4& pose) { return local ? pose * *local : pose; };
+  if (s.start_pose)
+    if (std::optional<std::string> warning = s.turn.take_warning()) s.scene.warnings.push_back(std::move(*warning));
   if (!in_motion(s)) return add_instance(s, where, shape, placed(s.transform));
   const Mat4 end = placed(s.transform);
   check_invertible(end, where, " when the shutter closes");

@@ -12,11 +12,19 @@ void reset(LoaderState& s, const CommandArgs& a) {
   a.require_count({0});
   s.transform = Mat4::identity();
   s.start_pose.reset();
+  s.turn = MotionTurn();
 }
 
 void endpose(LoaderState& s, const CommandArgs& a) {
   a.require_count({0});
   s.start_pose = s.transform;
+  s.turn = MotionTurn();
+}
+
+// The rotations after `endpose` are followed, since a motion cannot turn 180 degrees or more.
+void turn(LoaderState& s, const CommandArgs& a, double degrees, const Vec3& axis) {
+  s.transform = Mat4::rotate(degrees, axis) * s.transform;
+  if (s.start_pose) s.turn.add(degrees, axis, a.command_location());
 }
 
 void translate(LoaderState& s, const CommandArgs& a) {
@@ -36,14 +44,14 @@ void scale(LoaderState& s, const CommandArgs& a) {
 void rotate(LoaderState& s, const CommandArgs& a) {
   a.require_count({4});
   const double degrees = a.number(0);
-  s.transform = Mat4::rotate(degrees, a.nonzero_vec3(1, "the rotation axis")) * s.transform;
+  turn(s, a, degrees, a.nonzero_vec3(1, "the rotation axis"));
 }
 
 template <int Axis>
 void rotate_about_principal_axis(LoaderState& s, const CommandArgs& a) {
   a.require_count({1});
   const Vec3 axis{Axis == 0 ? 1.0 : 0.0, Axis == 1 ? 1.0 : 0.0, Axis == 2 ? 1.0 : 0.0};
-  s.transform = Mat4::rotate(a.number(0), axis) * s.transform;
+  turn(s, a, a.number(0), axis);
 }
 
 }  // namespace

@@ -165,3 +165,42 @@ TEST_CASE("motion errors: a shutter closing before it opens, mirrored poses, mov
   CHECK(load_text("endpose\ntriangle 0 0 0 1 0 0 0 1 0\n").triangles.size() == 1);
   CHECK(load_text("endpose\ntranslate 1 0 0\nreset\ntriangle 0 0 0 1 0 0 0 1 0\n").triangles.size() == 1);
 }
+
+TEST_CASE("a turn of 180 degrees or more after endpose is a warning at the rotation that makes it",
+          "[scene][transform][motion]") {
+  const auto warnings = [](const std::string& text) { return load_text(text).warnings; };
+  const std::string shorter = ", but a motion takes the shorter way between its two poses: the objects that follow ";
+  const auto warned = [&](const std::string& text, const std::string& place, const std::string& message) {
+    INFO(text);
+    const std::vector<std::string> w = warnings(text);
+    REQUIRE(w.size() == 1);
+    CHECK_THAT(w[0], Catch::EndsWith("scene.ray:" + place + ": warning: the rotations after endpose come to " +
+                                     message));
+  };
+  warned("endpose\nrotatey 200\nsphere\nsphere\n", "2:1", "200 degrees" + shorter + "turn 160 degrees the other way");
+  // Turns about one axis add up exactly, whichever way its axis is written.
+  warned("endpose\nrotatey 100\ntranslate 1 0 0\nrotate 100 0 2 0\nsphere\n", "4:1",
+         "200 degrees" + shorter + "turn 160 degrees the other way");
+  warned("endpose\nrotatey 100\nrotate -100 0 -1 0\nsphere\n", "3:1", "200 degrees" + shorter + "turn 160 degrees the other way");
+  warned("endpose\nrotatez 360\ncube\n", "2:1", "360 degrees" + shorter + "do not turn at all");
+  warned("endpose\nrotatex -600\ncube\n", "2:1", "-600 degrees" + shorter + "turn 120 degrees the other way");
+  warned("endpose\nrotatex 400\ncube\n", "2:1", "400 degrees" + shorter + "turn 40 degrees");
+  warned("endpose\nrotatey 180\nsphere\n", "2:1", "180 degrees" + shorter + "turn 180 degrees, either way round");
+  // About several axes, by the turn they compose to.
+  warned("endpose\nrotatex 170\nrotatey 1\nrotatex 20\nsphere\n", "4:1",
+         "a turn of 180 degrees or more" + shorter + "turn 170 degrees the other way");
+  // Once per rotation that takes the turn past, for the objects that follow it.
+  const std::vector<std::string> two = warnings("endpose\nrotatey 200\nsphere\nrotatey -100\nsphere\nrotatey 100\nsphere\n");
+  REQUIRE(two.size() == 2);
+  CHECK_THAT(two[0], Catch::Contains("scene.ray:2:1: warning:"));
+  CHECK_THAT(two[1], Catch::Contains("scene.ray:6:1: warning:"));
+  // A turn under 180 degrees, one taken back, one before endpose, one cleared, or one nothing
+  // follows renders as written.
+  for (const char* text : {"endpose\nrotatey 179\nsphere\n", "endpose\nrotatex 120\nrotatey 120\nsphere\n",
+                           "endpose\nrotatey 200\nrotatey -100\nsphere\n", "rotatey 200\nendpose\nsphere\n",
+                           "endpose\nrotatey 200\nreset\nsphere\n", "endpose\nrotatey 200\nendpose\nsphere\n",
+                           "endpose\nrotatey 200\n"}) {
+    INFO(text);
+    CHECK(warnings(text).empty());
+  }
+}
