@@ -250,9 +250,8 @@ class Parser {
     // `map_Kd`, with a note, rather than lose the texture.
     std::string_view k = keyword.text;
     if (const std::string* known = other_case_of(k, kReadKeywords); known && *known != k) {
-      if (warned_.insert("case " + std::string(k)).second)
-        out_.warnings.push_back(scene_warning(s.at(keyword), quoted(k) + " is read as '" + *known +
-                                                                 "' (MTL keywords are case-sensitive)"));
+      warn_once(s.at(keyword), "case " + std::string(k),
+                quoted(k) + " is read as '" + *known + "' (MTL keywords are case-sensitive)");
       k = *known;
     }
     if (k == "newmtl") return new_material(s);
@@ -355,9 +354,13 @@ class Parser {
         s.fail_at(w, needs + ", found " + quoted(w.text) + (near.empty() ? "" : " (" + near + ")"));
       }
       values[count++] = o->takes == Takes::Numbers ? finite_number(s, w, map + " " + std::string(o->name)) : 0;
-      // u and v are the texture's scale; a w is read and ignored.
+      // u and v are the texture's scale; a w is read, and a warning unless it changes nothing.
       if (o->name == "-s" && count <= 2)
         if (const auto problem = texture_scale_problem(values[count - 1])) s.fail_at(w, map + " -s: " + *problem);
+      if ((o->name == "-s" || o->name == "-o") && count == 3 && values[2] != (o->name == "-s" ? 1 : 0))
+        warn_once(s.at(w), map + " " + std::string(o->name) + " w",
+                  map + " " + std::string(o->name) + ": clrt's textures have two coordinates, so its third value (w) "
+                  "is not used; ignored");
       if (o->name == "-clamp") t.clamp = w.text == "on";
     }
     if (count < o->least && !value_follows())
@@ -373,14 +376,15 @@ class Parser {
   void unknown(const SourceLocation& where, std::string_view k) {
     const std::string near = other_case_of(k, kUnrenderedKeywords) ? "" : nearest_keyword(k);
     if (near.empty()) return warn(where, std::string(k));
-    if (warned_.insert(std::string(k)).second)
-      out_.warnings.push_back(scene_warning(where, "unknown statement " + quoted(k) + " (" + near + "); ignored"));
+    warn_once(where, std::string(k), "unknown statement " + quoted(k) + " (" + near + "); ignored");
   }
 
   // Once per `what` (a keyword, or a keyword and its option), at its first place.
   void warn(const SourceLocation& where, const std::string& what) {
-    if (warned_.insert(what).second)
-      out_.warnings.push_back(scene_warning(where, quoted(what) + " is not rendered by clrt; ignored"));
+    warn_once(where, what, quoted(what) + " is not rendered by clrt; ignored");
+  }
+  void warn_once(const SourceLocation& where, const std::string& what, const std::string& message) {
+    if (warned_.insert(what).second) out_.warnings.push_back(scene_warning(where, message));
   }
 
   const std::string& file_;

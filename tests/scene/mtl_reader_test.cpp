@@ -193,6 +193,13 @@ TEST_CASE("map options -clamp -s -o and -bm are kept", "[scene][mtl]") {
   CHECK(only_map("map_Kd -clamp on on").path == "on");
 }
 
+TEST_CASE("a map's w, which clrt does not use, is a warning unless it is the default", "[scene][mtl]") {
+  CHECK(warnings_of("newmtl a\nmap_Kd -s 2 2 1 -o 0.5 0.5 0 a.png\n").empty());
+  const std::string unused = ": clrt's textures have two coordinates, so its third value (w) is not used; ignored";
+  CHECK(warnings_of("newmtl a\nmap_Kd -s 2 2 3 a.png\nmap_Ks -o 0 0 0.5 -o 1 1 2 b.png\nmap_Kd -s 1 1 2 a.png\n") ==
+        std::vector<std::string>{"lib.mtl:2:15: warning: map_Kd -s" + unused, "lib.mtl:3:15: warning: map_Ks -o" + unused});
+}
+
 TEST_CASE("map_Kd map_Ks map_bump and bump fill their own slots", "[scene][mtl]") {
   const MtlMaterial m = only_material("map_Kd d.png\nmap_Ks s.png\nbump b.png\n");
   CHECK(m.map_kd->path == "d.png");
