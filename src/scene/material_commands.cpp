@@ -51,7 +51,7 @@ void mtl(LoaderState& s, const CommandArgs& a) {
   if (word != "on" && word != "off") {
     const std::string near = did_you_mean(word, {"off", "on"});  // "of" is one edit from either
     throw a.error_at(0, "mtl takes on or off, found '" + excerpt(a.word(0).text) + "'" +
-                            (near.empty() ? "" : " (" + near + ")"));
+                            in_parentheses(near));
   }
   s.mesh_materials = word == "on";
 }

@@ -257,7 +257,7 @@ class Parser {
     if (k == "newmtl") return new_material(s);
     if (out_.materials.empty()) {
       const std::string near = other_case_of(k, kUnrenderedKeywords) ? "" : nearest_keyword(k);
-      s.fail_at(keyword, quoted(k) + " before the first newmtl" + (near.empty() ? "" : " (" + near + ")"));
+      s.fail_at(keyword, quoted(k) + " before the first newmtl" + in_parentheses(near));
     }
     MtlMaterial& m = out_.materials.back();
     if (k == "Kd" || k == "Ks" || k == "Ke")
@@ -337,7 +337,7 @@ class Parser {
       std::vector<std::string> names;
       for (const MapOption& known : kMapOptions) names.emplace_back(known.name);
       const std::string near = did_you_mean(std::string(name.text), names);
-      s.fail_at(name, "unknown option " + quoted(name.text) + " of " + map + (near.empty() ? "" : " (" + near + ")"));
+      s.fail_at(name, "unknown option " + quoted(name.text) + " of " + map + in_parentheses(near));
     }
     if (o->name == "-bm" && keyword != "map_bump" && keyword != "bump")
       s.fail_at(name, "-bm belongs to bump maps, not " + map);
@@ -351,7 +351,7 @@ class Parser {
       const Word w = s.take();
       if (o->takes != Takes::Numbers && !is_value(o->takes, w.text)) {
         const std::string near = o->takes == Takes::OnOff ? did_you_mean(lower(w.text), {"on", "off"}) : "";
-        s.fail_at(w, needs + ", found " + quoted(w.text) + (near.empty() ? "" : " (" + near + ")"));
+        s.fail_at(w, needs + ", found " + quoted(w.text) + in_parentheses(near));
       }
       values[count++] = o->takes == Takes::Numbers ? finite_number(s, w, map + " " + std::string(o->name)) : 0;
       // u and v are the texture's scale; a w is read, and a warning unless it changes nothing.

@@ -16,9 +16,8 @@ namespace {
 SceneError unknown_command(const CommandArgs& args) {
   std::vector<std::string> names;
   for (const auto& [name, handler] : command_table()) names.push_back(name);
-  std::string message = "unknown command '" + excerpt(args.command_word().text) + "'";
-  if (const std::string near = did_you_mean(args.name(), names); !near.empty()) message += " (" + near + ")";
-  return SceneError(args.command_location(), message);
+  const std::string message = "unknown command '" + excerpt(args.command_word().text) + "'";
+  return SceneError(args.command_location(), message + in_parentheses(did_you_mean(args.name(), names)));
 }
 
 void apply(LoaderState& state, const CommandArgs& args) {

@@ -90,7 +90,7 @@ void read_options(LoaderState& s, const CommandArgs& a, std::size_t first, Textu
       if (mode != "repeat" && mode != "clamp") {
         const std::string near = did_you_mean(mode, {"repeat", "clamp"});
         throw a.error_at(i + 1, "wrap takes repeat or clamp, found '" + excerpt(a.word(i + 1).text) + "'" +
-                                    (near.empty() ? "" : " (" + near + ")"));
+                                    in_parentheses(near));
       }
       if (applies) t.clamp = mode == "clamp";
       i += 2;
@@ -116,7 +116,7 @@ void texture(LoaderState& s, const CommandArgs& a) {
   if (slot < 0) {
     const std::string near = did_you_mean(lower_case(a.word(0).text), kTerms);
     throw a.error_at(0, "texture takes a term first: color, ks, kr or kt, found '" + excerpt(a.word(0).text) + "'" +
-                            (near.empty() ? "" : " (" + near + ")"));
+                            in_parentheses(near));
   }
   const std::string kind = lower_case(a.word(1).text);
   MaterialSpec m = s.scene.materials.at(static_cast<std::size_t>(s.material));

@@ -44,4 +44,8 @@ std::string did_you_mean(const std::string& word, const std::vector<std::string>
   return near ? "did you mean '" + *near + "'?" : "";
 }
 
+std::string in_parentheses(const std::string& suggestion) {
+  return suggestion.empty() ? "" : " (" + suggestion + ")";
+}
+
 }  // namespace clrt

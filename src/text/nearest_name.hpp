@@ -24,4 +24,7 @@ std::optional<std::string> nearest_name(const std::string& word,
 // suggestion of the scene readers' errors and warnings.
 std::string did_you_mean(const std::string& word, const std::vector<std::string>& names);
 
+// " (did you mean 'sphere'?)" for such a suggestion, to end a message with; "" for none.
+std::string in_parentheses(const std::string& suggestion);
+
 }  // namespace clrt

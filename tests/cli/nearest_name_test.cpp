@@ -29,3 +29,10 @@ TEST_CASE("the nearest name is offered only when it is close", "[cli][words]") {
   CHECK_FALSE(nearest_name("resultion2x", names));  // three edits
   CHECK_FALSE(nearest_name("spp", {}));
 }
+
+TEST_CASE("did_you_mean words the suggestion, in_parentheses ends a message with it", "[cli][words]") {
+  CHECK(clrt::did_you_mean("sphree", {"plane", "sphere"}) == "did you mean 'sphere'?");
+  CHECK(clrt::did_you_mean("xyz", {"plane", "sphere"}).empty());
+  CHECK(clrt::in_parentheses("did you mean 'sphere'?") == " (did you mean 'sphere'?)");
+  CHECK(clrt::in_parentheses("").empty());
+}
