@@ -81,7 +81,8 @@ TEST_CASE("every command refuses at once, exit 2, an input that is a FIFO, a dev
       std::vector<std::string> commands{"info " + in, "convert " + in + " " + out,
                                         "diff " + quoted(good) + " " + in};
       // Tiles are PNG or EXR: stitch refuses the other names before reading them.
-      if (extension == ".png" || extension == ".exr") commands.push_back("stitch " + out + " " + in);
+      if (extension == ".png" || extension == ".exr")
+        commands.push_back("stitch " + out + " " + in);
       for (const std::string& command : commands) {
         // Without the check, opening the FIFO waits for a writer that never comes: timeout's
         // 124 then fails the test instead of hanging it.
@@ -89,8 +90,8 @@ TEST_CASE("every command refuses at once, exit 2, an input that is a FIFO, a dev
             run_tool(dir, "timeout", "20 " + quoted(CLRT_IMG) + " " + command);
         INFO(command);
         CHECK(result.status == 2);
-        CHECK(result.err == "clrt-img: error: cannot read " + input + ": " +
-                                (input == fifo ? "it is not a regular file\n" : "it is a folder\n"));
+        const std::string why = input == fifo ? "it is not a regular file" : "it is a folder";
+        CHECK(result.err == "clrt-img: error: cannot read " + input + ": " + why + "\n");
       }
     }
     // A device, with an extension through a link: the link is followed to /dev/zero.
