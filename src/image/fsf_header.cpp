@@ -5,6 +5,7 @@
 #include "image/checked_size.hpp"
 #include "image/decoders.hpp"
 #include "image/fsf_layout.hpp"
+#include "image/image_checks.hpp"
 
 namespace clrt {
 namespace {
@@ -61,6 +62,7 @@ void check_sizes(const FsfHeader& header, std::uint64_t file_bytes, const std::s
                      "; none may be zero");
   if (header.width > INT_MAX || header.height > INT_MAX)
     throw ImageError(path + ": invalid FSF header: " + describe_size(header) + " is too large");
+  image_detail::check_declared_size(header.width, header.height, path, "FSF");
   const auto expected = file_bytes_for(header);
   if (expected == file_bytes) return;
   const std::string described =

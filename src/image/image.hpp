@@ -57,6 +57,14 @@ class ImageError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// An input that is not a regular file (a FIFO, a device, a socket, a folder), refused before it
+// is read: wrong on the command line's face, so a usage error (exit 2) for every tool, as a
+// scene or texture that is no file is for clrt.
+class NotAFileError : public ImageError {
+ public:
+  using ImageError::ImageError;
+};
+
 // The contract's quantisation: clamp each channel to [0, 1], scale by 255, round to nearest;
 // alpha 255. With a display transform, each value goes through it first.
 Rgba8Image quantize(const FloatImage& image, const DisplayTransform& display = {});

@@ -2,6 +2,7 @@
 
 #include <cstddef>
 
+#include "image/image_limits.hpp"
 #include "image/placement.hpp"
 
 namespace clrt::image_detail {
@@ -40,6 +41,15 @@ void check_image(const Rgba8Image& image, const std::string& context) {
   for (std::size_t frame = 0; frame < image.frames.size(); ++frame)
     check_length(image.frames[frame].size(), 4 * pixel_count(image.width, image.height),
                  "frame " + std::to_string(frame), context);
+}
+
+void check_declared_size(std::int64_t width, std::int64_t height, const std::string& path,
+                         const std::string& format) {
+  if (within_image_limits(width, height)) return;
+  throw ImageError(path + ": the " + format + "'s " + std::to_string(width) + "x" +
+                   std::to_string(height) + " pixels are more than clrt reads (at most " +
+                   std::to_string(kMostSide) + " a side and " + std::to_string(kMostPixels) +
+                   " in all)");
 }
 
 }  // namespace clrt::image_detail

@@ -1,13 +1,14 @@
 #include "image/input_file.hpp"
 
-#include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
 #include <cerrno>
+#include <cstdint>
 #include <cstring>
 
 #include "image/image.hpp"
+#include "image/input_file_checks.hpp"
 
 namespace clrt::image_detail {
 namespace {
@@ -19,7 +20,7 @@ namespace {
 }  // namespace
 
 InputFile::InputFile(std::string path) : path_(std::move(path)) {
-  fd_ = ::open(path_.c_str(), O_RDONLY | O_CLOEXEC);
+  fd_ = open_input_at_once(path_);
   if (fd_ < 0) fail(path_, "cannot open", errno);
   struct stat info {};
   if (::fstat(fd_, &info) != 0) {
@@ -27,9 +28,11 @@ InputFile::InputFile(std::string path) : path_(std::move(path)) {
     ::close(fd_);
     fail(path_, "cannot stat", error);
   }
-  if (!S_ISREG(info.st_mode)) {
+  try {
+    check_input_status(info, UINT64_MAX);  // no limit in bytes: the header's size is checked
+  } catch (const InputFileError& e) {
     ::close(fd_);
-    throw ImageError("cannot read " + path_ + ": not a regular file");
+    throw NotAFileError("cannot read " + path_ + ": " + e.what());
   }
   size_ = static_cast<std::uint64_t>(info.st_size);
 }

@@ -4,8 +4,13 @@
 #include <cstring>
 
 #include "image/image.hpp"
+#include "image/image_checks.hpp"
 
 namespace clrt::image_detail {
+
+void NetpbmCursor::check_size(std::int64_t width, std::int64_t height) const {
+  check_declared_size(width, height, path_, kind_);
+}
 
 void NetpbmCursor::fail(const std::string& what) const {
   throw ImageError(path_ + ": not a readable " + kind_ + ": " + what + " (at byte " +

@@ -25,6 +25,8 @@ class NetpbmCursor {
   // The next run of non-whitespace characters, blanks skipped first.
   std::string word(const char* name);
   void skip_blanks();
+  // The header's width and height, refused beyond what clrt reads before anything is allocated.
+  void check_size(std::int64_t width, std::int64_t height) const;
   // The single whitespace character that ends a binary header.
   void header_end();
   // Checked before allocating, so a tiny file cannot ask for an absurd buffer: at least `needed`

@@ -74,6 +74,11 @@ void check_output_writable(const std::string& path) {
   image_detail::AtomicFile probe(target.path, path);  // removed again by its destructor
 }
 
+void check_output_replaceable(const std::string& path) {
+  const OutputTarget target = find_output_target(path);
+  if (!target.stream) image_detail::check_replaceable(target.path, path);
+}
+
 std::uint64_t free_bytes_for(const std::string& path) {
   struct statvfs info {};
   if (::statvfs(image_detail::folder_of(find_output_target(path).path).c_str(), &info) != 0)

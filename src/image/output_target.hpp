@@ -28,9 +28,14 @@ void refuse_folder(const std::string& path);
 
 // Before any work: whether `path` can be written. A stream must be writable; any other output's
 // folder must exist and take a new file, tried by creating (and removing) a temporary there, so
-// that a read-only file system or /proc is found before the render. Throws ImageError naming
-// `path`.
+// that a read-only file system or /proc is found before the render, and an existing file must
+// be one it may replace (check_output_replaceable()). Throws ImageError naming `path`.
 void check_output_writable(const std::string& path);
+
+// Throws ImageError naming `path` when the existing file it would replace may not be replaced:
+// one the user may not write, or one with other hard links (image_detail::check_replaceable).
+// check_output_writable() includes it; the tools that need no other check call it alone.
+void check_output_replaceable(const std::string& path);
 
 // The free bytes of the file system `path` is written to: what statvfs() reports for the
 // target's folder (for root, the blocks reserved for it too).

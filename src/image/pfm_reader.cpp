@@ -29,6 +29,7 @@ PfmHeader read_pfm_header(NetpbmCursor& cursor) {
   header.channels = cursor.magic("Ff") == 'F' ? 3 : 1;
   header.width = static_cast<int>(cursor.number("width", 1, INT_MAX));
   header.height = static_cast<int>(cursor.number("height", 1, INT_MAX));
+  cursor.check_size(header.width, header.height);
   header.scale_text = cursor.word("scale");
   const char* end = header.scale_text.data() + header.scale_text.size();
   const auto parsed = std::from_chars(header.scale_text.data(), end, header.scale);

@@ -10,6 +10,7 @@
 #include <new>
 
 #include "image/decoders.hpp"
+#include "image/image_checks.hpp"
 #include "image/image_limits.hpp"
 #include "image/input_file.hpp"
 #include "image/placement.hpp"
@@ -114,9 +115,7 @@ class PngDecoder {
       png_get_text(png, info, &texts, &text_count);
     });
     if (!ok) fail();
-    if (!image_detail::within_image_limits(width_, height_))
-      throw ImageError(path_ + ": the PNG's " + std::to_string(width_) + "x" +
-                       std::to_string(height_) + " pixels are more than clrt reads");
+    image_detail::check_declared_size(width_, height_, path_, "PNG");
     for (int i = 0; i < text_count; ++i) {
       if (std::strcmp(texts[i].key, image_detail::kPngPlacementKey) != 0) continue;
       const std::string context =

@@ -26,6 +26,7 @@ PpmHeader read_ppm_header(NetpbmCursor& cursor) {
   header.binary = cursor.magic("63") == '6';
   header.width = static_cast<int>(cursor.number("width", 1, INT_MAX));
   header.height = static_cast<int>(cursor.number("height", 1, INT_MAX));
+  cursor.check_size(header.width, header.height);
   header.maxval = cursor.number("maxval", 1, 65535);
   if (header.binary) cursor.header_end();
   // A plain raster needs at least one byte per sample.

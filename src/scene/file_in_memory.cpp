@@ -1,6 +1,5 @@
 #include "scene/file_in_memory.hpp"
 
-#include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -8,7 +7,7 @@
 #include <cstring>
 
 #include "math/fresh_pages.hpp"
-#include "scene/input_file_checks.hpp"
+#include "image/input_file_checks.hpp"
 
 namespace clrt {
 namespace {
@@ -49,8 +48,7 @@ bool same_version(const struct stat& a, const struct stat& b) {
 
 FileInMemory::FileInMemory(const std::string& path, std::uint64_t max_bytes,
                            const std::function<void()>& after_stat) {
-  // O_NONBLOCK: opening a pipe must not wait for a writer before the checks refuse it.
-  const Descriptor file{::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK)};
+  const Descriptor file{open_input_at_once(path)};
   if (file.fd < 0) throw InputFileError(std::strerror(errno));
   const struct stat before = status_of(file.fd);
   check_input_status(before, max_bytes);

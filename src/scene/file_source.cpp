@@ -1,6 +1,6 @@
 #include "scene/file_source.hpp"
 
-#include "scene/input_file_checks.hpp"
+#include "image/input_file_checks.hpp"
 #include "scene/file_in_memory.hpp"
 
 namespace clrt {

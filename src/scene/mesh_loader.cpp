@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "math/parallel_for.hpp"
-#include "scene/input_file_checks.hpp"
+#include "image/input_file_checks.hpp"
 #include "scene/limits.hpp"
 #include "scene/obj_chunk.hpp"
 #include "scene/obj_index_check.hpp"

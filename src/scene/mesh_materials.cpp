@@ -4,7 +4,7 @@
 #include <set>
 #include <sstream>
 
-#include "scene/input_file_checks.hpp"
+#include "image/input_file_checks.hpp"
 #include "scene/limits.hpp"
 #include "scene/mesh_loader.hpp"
 #include "scene/mtl_material.hpp"

@@ -1,4 +1,4 @@
-#include "scene/input_file_checks.hpp"
+#include "image/input_file_checks.hpp"
 #include "scene/limits.hpp"
 #include "scene/scene_loaders.hpp"
 #include "scene/scene_text_check.hpp"

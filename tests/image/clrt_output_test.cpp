@@ -245,3 +245,34 @@ TEST_CASE("clrt's exit status for outputs: 2 when refused before any work, 1 whe
   CHECK(S_ISCHR(stat_of("/dev/full").st_mode));
   CHECK(dir.entries() == std::set<std::string>{"stdout.bin", "stderr.txt"});
 }
+
+TEST_CASE("clrt over an existing file: a read-only one is refused for an ordinary user, any "
+          "other keeps its mode",
+          "[cli][output]") {
+  ScratchDir dir;
+  REQUIRE(::chmod(dir.path().c_str(), 0777) == 0);
+  const std::string ro = dir.write("ro.png", "not replaced");
+  REQUIRE(::chmod(ro.c_str(), 0444) == 0);
+  // Root writes a read-only file with `>` and may replace it: the refusal is an ordinary
+  // user's, so as root the test runs clrt as nobody through setpriv.
+  std::string as_user = quoted(CLRT_EXE);
+  if (::geteuid() == 0) {
+    if (std::system("setpriv --version >/dev/null 2>&1") != 0)
+      CLRT_SKIP_TEST("running as root without setpriv to become an ordinary user");
+    REQUIRE(::chown(ro.c_str(), 65534, 65534) == 0);
+    as_user = "--reuid=65534 --regid=65534 --clear-groups " + as_user;
+  }
+  const ToolResult refused = run_tool(dir, ::geteuid() == 0 ? "setpriv" : "env",
+                                      as_user + " " + kScene + " -o " + quoted(ro));
+  CHECK(refused.status == 2);
+  CHECK(refused.err ==
+        "clrt: error: cannot write " + ro + ": it is read-only to you (mode 0444)\n");
+  CHECK(read_bytes(ro) == bytes_of("not replaced"));
+  const std::string own = dir.write("own.png", "replaced");
+  REQUIRE(::chmod(own.c_str(), 0600) == 0);
+  REQUIRE(run_clrt(dir, "-o " + quoted(own)).status == 0);
+  CHECK(clrt::read_image_info(own).width == 40);
+  struct stat info {};
+  REQUIRE(::stat(own.c_str(), &info) == 0);
+  CHECK((info.st_mode & 07777) == 0600);
+}

@@ -131,11 +131,14 @@ TEST_CASE("FSF reader rejects absurd sizes without overflowing or allocating", "
   ScratchDir dir;
   const std::string path = dir.file("huge.fsf");
   // 65536 * 65536 * 4 bytes wraps a 32-bit product to exactly 0, and with 2^30 frames the whole
-  // file size wraps 64 bits to 16 bytes: a naive check would accept this bare header.
+  // file size wraps 64 bits to 16 bytes: the sizes are refused before any product is taken.
   write_bytes(path, le_file(65536, 65536, 1u << 30, 0));
-  CHECK_THAT(read_error(path), Contains("truncated"));
-  write_bytes(path, le_file(65536, 65536, 1, 0));
-  CHECK_THAT(read_error(path), Contains("17179869200 bytes"));
+  CHECK_THAT(read_error(path), Contains("the FSF's 65536x65536 pixels are more than clrt reads"));
+  // Within the limits (2^28 pixels), 2^30 frames make 2^60 bytes, counted without wrapping.
+  write_bytes(path, le_file(16384, 16384, 1u << 30, 0));
+  CHECK_THAT(read_error(path), Contains("1152921504606846992 bytes") && Contains("truncated"));
+  write_bytes(path, le_file(16384, 16384, 1, 0));
+  CHECK_THAT(read_error(path), Contains("1073741840 bytes"));
   write_bytes(path, le_file(0xffffffffu, 0xffffffffu, 0xffffffffu, 0));
   CHECK_THAT(read_error(path), Contains("too large"));
 }

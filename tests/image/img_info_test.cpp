@@ -1,6 +1,10 @@
 // clrt-img info end to end, for every format.
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <catch2/catch.hpp>
 #include <string>
+#include <vector>
 
 #include "image/image.hpp"
 #include "run_tool.hpp"
@@ -60,4 +64,42 @@ TEST_CASE("info of a whole image says so, bad files fail with 1, bad names with 
   CHECK(result.status == 2);
   CHECK(result.out.empty());
   CHECK(run_img(dir, "info").status == 2);
+}
+
+TEST_CASE("every command refuses at once, exit 2, an input that is a FIFO, a device or a folder",
+          "[img][info][convert][diff][stitch]") {
+  ScratchDir dir;
+  const std::string good = dir.file("good.png");
+  clrt::write_image(good, FloatImage(1, 1, {0, 0, 0}));
+  for (const std::string extension : {".png", ".pfm", ".exr", ".ppm", ".fsf"}) {
+    const std::string fifo = dir.file("fifo" + extension), folder = dir.file("folder" + extension);
+    REQUIRE(::mkfifo(fifo.c_str(), 0600) == 0);
+    REQUIRE(::mkdir(folder.c_str(), 0700) == 0);
+    const std::string out = quoted(dir.file("out.png"));
+    for (const std::string& input : {fifo, folder}) {
+      const std::string in = quoted(input);
+      std::vector<std::string> commands{"info " + in, "convert " + in + " " + out,
+                                        "diff " + quoted(good) + " " + in};
+      // Tiles are PNG or EXR: stitch refuses the other names before reading them.
+      if (extension == ".png" || extension == ".exr")
+        commands.push_back("stitch " + out + " " + in);
+      for (const std::string& command : commands) {
+        // Without the check, opening the FIFO waits for a writer that never comes: timeout's
+        // 124 then fails the test instead of hanging it.
+        const ToolResult result =
+            run_tool(dir, "timeout", "20 " + quoted(CLRT_IMG) + " " + command);
+        INFO(command);
+        CHECK(result.status == 2);
+        const std::string why = input == fifo ? "it is not a regular file" : "it is a folder";
+        CHECK(result.err == "clrt-img: error: cannot read " + input + ": " + why + "\n");
+      }
+    }
+    // A device, with an extension through a link: the link is followed to /dev/zero.
+    const std::string device = dir.file("zero" + extension);
+    REQUIRE(::symlink("/dev/zero", device.c_str()) == 0);
+    const ToolResult result =
+        run_tool(dir, "timeout", "20 " + quoted(CLRT_IMG) + " info " + quoted(device));
+    CHECK(result.status == 2);
+    CHECK(result.err == "clrt-img: error: cannot read " + device + ": it is not a regular file\n");
+  }
 }

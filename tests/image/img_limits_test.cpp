@@ -2,6 +2,7 @@
 // anything of the declared size is allocated, which a cap on the address space (ulimit -v)
 // proves.
 #include <catch2/catch.hpp>
+#include <cctype>
 #include <cstring>
 #include <filesystem>
 #include <string>
@@ -150,17 +151,50 @@ TEST_CASE("convert to GIF counts each frame's own cost and streams the GIF to it
 TEST_CASE("PFM, PPM and FSF headers declaring more pixels than their files hold are refused",
           "[img][convert][limits]") {
   ScratchDir dir;
-  Bytes fsf = concat({{0x3f, 0x02, 0, 0}, {0xff, 0xff, 0, 0}, {0xff, 0xff, 0, 0}, {1, 0, 0, 0}});
+  // 16384 x 16384: 2^28 pixels, within what clrt reads, 1 GiB or more of samples.
+  Bytes fsf = concat({{0x3f, 0x02, 0, 0}, {0, 0x40, 0, 0}, {0, 0x40, 0, 0}, {1, 0, 0, 0}});
   fsf.resize(64, 7);
   const std::pair<const char*, Bytes> files[] = {
-      {"big.pfm", bytes_of("PF\n65536 65536\n-1.0\n" + std::string(64, 'x'))},
-      {"big.ppm", bytes_of("P6\n65536 65536\n255\n" + std::string(64, 'x'))},
+      {"big.pfm", bytes_of("PF\n16384 16384\n-1.0\n" + std::string(64, 'x'))},
+      {"big.ppm", bytes_of("P6\n16384 16384\n255\n" + std::string(64, 'x'))},
       {"big.fsf", fsf}};
   for (const auto& [name, bytes] : files) {
     INFO(name);
     write_bytes(dir.file(name), bytes);
     const std::string png = dir.file("out.png");
     check_refused(run_img_capped(dir, "convert " + quoted(dir.file(name)) + " " + quoted(png)),
-                  {dir.file(name) + ": "}, png);
+                  {dir.file(name) + ": ", "truncated"}, png);
+  }
+}
+
+TEST_CASE("PFM, PPM and FSF files wider than 65536 pixels are refused as PNG and OpenEXR are, "
+          "whole as they are",
+          "[img][convert][info][limits]") {
+  // 100000 x 1, every byte of the raster there: once converted into a PNG or an EXR that
+  // `info` refused.
+  ScratchDir dir;
+  const std::uint32_t wide = 100000;
+  Bytes fsf = concat({{0x3f, 0x02, 0, 0}, {0xa0, 0x86, 0x01, 0}, {1, 0, 0, 0}, {1, 0, 0, 0}});
+  fsf.resize(16 + 4 * wide, 7);
+  const std::pair<const char*, Bytes> files[] = {
+      {"wide.pfm", bytes_of("PF\n100000 1\n-1.0\n" + std::string(12 * wide, '\0'))},
+      {"wide.ppm", bytes_of("P6\n100000 1\n255\n" + std::string(3 * wide, 'x'))},
+      {"wide.fsf", fsf}};
+  for (const auto& [name, bytes] : files) {
+    INFO(name);
+    const std::string in = dir.file(name), format = std::string(name).substr(5);
+    write_bytes(in, bytes);
+    std::string upper = format;
+    for (char& c : upper) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    const std::string message = in + ": the " + upper +
+                                "'s 100000x1 pixels are more than clrt reads (at most 65536 a "
+                                "side and 268435456 in all)";
+    for (const char* out_name : {"out.png", "out.exr"}) {
+      const std::string out = dir.file(out_name);
+      check_refused(run_img(dir, "convert " + quoted(in) + " " + quoted(out)), {message}, out);
+    }
+    const ToolResult info = run_img(dir, "info " + quoted(in));
+    CHECK(info.status == 1);
+    CHECK(info.err == "clrt-img: error: " + message + "\n");
   }
 }

@@ -80,5 +80,7 @@ TEST_CASE("PPM reader rejects malformed files, naming them", "[image][ppm]") {
   rejects(bytes_of("P6\n0 1\n255\n"), "width is below 1");
   rejects(bytes_of("P6\n1 1\n70000\n"), "maxval exceeds 65535");
   // A header asking for 2^62 samples must fail on the size check, before any allocation.
-  rejects(bytes_of("P6\n2147483647 2147483647\n255\n"), "truncated");
+  rejects(bytes_of("P6\n2147483647 2147483647\n255\n"),
+          "the PPM's 2147483647x2147483647 pixels are more than clrt reads");
+  rejects(bytes_of("P6\n65536 4096\n255\n"), "truncated");  // 2^28 pixels: within the limits
 }

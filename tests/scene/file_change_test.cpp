@@ -9,7 +9,7 @@
 #include <string>
 
 #include "scene/file_in_memory.hpp"
-#include "scene/input_file_checks.hpp"
+#include "image/input_file_checks.hpp"
 #include "scene/scene.hpp"
 #include "scratch_dir.hpp"
 

@@ -3,6 +3,7 @@
 #include <arpa/inet.h>
 #include <netinet/in.h>
 #include <sys/socket.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -378,4 +379,14 @@ TEST_CASE("clrt-view's usage errors exit 2 and an unreadable image 1, before any
   CHECK(status("'" + dir.file("a.pfm") + "' '" + dir.file("b.pfm") + "'") == 1);
   CHECK(text_of(dir.file("err.txt")) ==
         "clrt-view: error: the images differ in size: 16x12 against 1x1\n");
+  // A FIFO is refused before it is opened for reading, which would wait for a writer: timeout's
+  // 124 fails the check where the refusal is missing.
+  const std::string fifo = dir.file("fifo.pfm");
+  REQUIRE(::mkfifo(fifo.c_str(), 0600) == 0);
+  const int raw = std::system(("env -u DISPLAY timeout 20 '" + std::string(CLRT_VIEW) + "' '" +
+                               fifo + "' 2>'" + dir.file("err.txt") + "'")
+                                  .c_str());
+  CHECK((WIFEXITED(raw) && WEXITSTATUS(raw) == 2));
+  CHECK(text_of(dir.file("err.txt")) ==
+        "clrt-view: error: cannot read " + fifo + ": it is not a regular file\n");
 }

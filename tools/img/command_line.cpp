@@ -6,6 +6,7 @@
 #include "cli/whole_number.hpp"
 #include "cli/word_choice.hpp"
 #include "image/image_info.hpp"
+#include "image/output_target.hpp"
 
 namespace clrt::img {
 
@@ -51,7 +52,9 @@ ImageFormat input_format(const std::string& path) {
 
 ImageOutput output_argument(const std::string& path, std::optional<ImageFormat> format) {
   try {
-    return resolve_output(path, format);
+    ImageOutput output = resolve_output(path, format);
+    if (!output.is_stdout()) check_output_replaceable(output.path);
+    return output;
   } catch (const ImageError& error) {
     throw UsageError(error.what());
   }

@@ -7,7 +7,8 @@
 #include <exception>
 #include <memory>
 
-#include "image/atomic_file.hpp"
+#include "image/byte_sink.hpp"
+#include "image/output_target.hpp"
 
 namespace clrt::img {
 namespace {
@@ -149,9 +150,10 @@ void encode_gif(const Rgba8Image& image, int delay_cs, image_detail::ByteSink& s
 }
 
 void write_gif(const std::string& path, const Rgba8Image& image, int delay_cs) {
-  image_detail::AtomicFile file(path, path);
-  encode_gif(image, delay_cs, file);
-  file.finish();
+  // The sink every image gets: a link stays a link, a FIFO or device is written through.
+  const std::unique_ptr<image_detail::ByteSink> sink = image_detail::open_output_sink(path);
+  encode_gif(image, delay_cs, *sink);
+  sink->finish();
 }
 
 bool is_gif_path(const std::string& path) {

@@ -1,6 +1,6 @@
 // clrt-img: one tool for the images clrt writes, in the spirit of pbrt's imgtool.
 // Exit status: 0 success, 1 a file could not be read or written, its contents did not allow the
-// command, or (diff) the images differ; 2 a usage error.
+// command, or (diff) the images differ; 2 a usage error, or an input that is not a regular file.
 #include <CLI/CLI.hpp>
 
 #include <iostream>
@@ -26,6 +26,9 @@ int main(int argc, char** argv) {
   try {
     return command();
   } catch (const UsageError& error) {
+    std::cerr << "clrt-img: error: " << error.what() << "\n";
+    return 2;
+  } catch (const clrt::NotAFileError& error) {
     std::cerr << "clrt-img: error: " << error.what() << "\n";
     return 2;
   } catch (const std::exception& error) {

@@ -129,6 +129,9 @@ int main(int argc, char** argv) {
   } catch (const CLI::ValidationError& error) {
     std::cerr << "clrt-view: error: " << error.what() << "\n";
     return 2;
+  } catch (const clrt::NotAFileError& error) {
+    std::cerr << "clrt-view: error: " << error.what() << "\n";
+    return 2;
   } catch (const std::exception& error) {
     std::cerr << "clrt-view: error: " << error.what() << "\n";
     return 1;

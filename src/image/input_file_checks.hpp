@@ -1,4 +1,5 @@
-// What the loaders accept as an input file: a regular file of a bounded size.
+// What every reader of clrt accepts as an input file (scenes, meshes, textures, and the images the
+// tools read): a regular file of a bounded size, refused at once when it is anything else.
 #pragma once
 
 #include <sys/stat.h>
@@ -21,6 +22,10 @@ class FileChangedError : public InputFileError {
  public:
   FileChangedError() : InputFileError("changed while being read") {}
 };
+
+// open(path, O_RDONLY) that never waits: a FIFO's open() would otherwise block until a writer
+// came, before check_input_status() could refuse it. -1 and errno as open() on failure.
+int open_input_at_once(const std::string& path);
 
 // Throws InputFileError unless `info` describes a regular file (not a folder, a device such as
 // /dev/zero, or a pipe) of at most `max_bytes`.

@@ -1,6 +1,13 @@
-#include "scene/input_file_checks.hpp"
+#include "image/input_file_checks.hpp"
+
+#include <fcntl.h>
 
 namespace clrt {
+
+// O_NONBLOCK changes nothing for a regular file, the only kind that is then read.
+int open_input_at_once(const std::string& path) {
+  return ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK);
+}
 
 void check_input_status(const struct stat& info, std::uint64_t max_bytes) {
   if (S_ISDIR(info.st_mode)) throw InputFileError("it is a folder");
