@@ -32,9 +32,10 @@ ResumePlan::ResumePlan(const CliOptions& cli, const ImageOutput& output, const F
   keeps_work_ = true;
   output_name_ = output.path;
   path_ = resume_state_path(output.path);
-  key_ = resume_key(scene, options, frames);
+  files_ = scene_files(scene);
+  options_ = options;
   if (!cli.resume) return;
-  state_ = read_resume_state(path_, key_, render_region(options).pixel_count());
+  state_ = read_resume_state(path_, key(), render_region(options).pixel_count());
   if (!state_) return;
   if (state_->frame < frames.first || state_->frame > frames.last)
     throw UsageError("--resume: " + path_ + " is at frame " + std::to_string(state_->frame) +
@@ -44,6 +45,11 @@ ResumePlan::ResumePlan(const CliOptions& cli, const ImageOutput& output, const F
                      " samples per pixel already; --spp " + std::to_string(samples_) +
                      " cannot take them away (give at least " + std::to_string(state_->samples) +
                      ")");
+}
+
+const ResumeKey& ResumePlan::key() {
+  if (!key_) key_ = resume_key(files_, options_, frames_);
+  return *key_;
 }
 
 std::string ResumePlan::resumed_text() const {
@@ -83,7 +89,7 @@ std::optional<std::string> ResumePlan::finish_frame(std::uint32_t frame, Resumab
       state.samples = render.samples;
       state.sums = std::move(render.sums);
     }
-    write_resume_state(path_, key_, state);
+    write_resume_state(path_, key(), state);
     return stopped + "; --resume goes on from " + path_;
   }
   if (frame < frames_.last) return std::nullopt;
@@ -92,7 +98,7 @@ std::optional<std::string> ResumePlan::finish_frame(std::uint32_t frame, Resumab
     ResumeState state;
     state.samples = render.samples;
     state.sums = std::move(render.sums);
-    write_resume_state(path_, key_, state);
+    write_resume_state(path_, key(), state);
   } else {
     std::error_code absent;
     std::filesystem::remove(path_, absent);
@@ -102,7 +108,7 @@ std::optional<std::string> ResumePlan::finish_frame(std::uint32_t frame, Resumab
 }
 
 std::string ResumePlan::samples_note(const ResumableRender& render) const {
-  if (render.samples == samples_) return {};
+  if (!keeps_work_ || render.samples == samples_) return {};
   return std::to_string(render.samples) + "/" + std::to_string(samples_);
 }
 

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "cli/animation_options.hpp"
 #include "cli/options.hpp"
@@ -44,11 +45,15 @@ class ResumePlan {
   const std::string& state_path() const { return path_; }
 
  private:
+  const ResumeKey& key();
+
   FramePlan frames_;
   std::uint32_t samples_;  // asked, per pixel
   bool keeps_work_ = false, resume_ = false;
   std::string output_name_, path_;
-  ResumeKey key_;
+  std::vector<std::string> files_;
+  RenderOptions options_;
+  std::optional<ResumeKey> key_;  // read from the files when a state is first read or written
   std::optional<ResumeState> state_;
   unsigned rounds_run_ = 0;  // over every frame, for hold_after_round_for_tests
 };

@@ -45,11 +45,16 @@ std::string differing_words(const std::string& ours, const std::string& theirs) 
 
 }  // namespace
 
-ResumeKey resume_key(const Scene& scene, const RenderOptions& options, const FramePlan& frames) {
+std::vector<std::string> scene_files(const Scene& scene) {
   std::vector<std::string> paths{scene.path};
   for (const MeshData& mesh : scene.meshes) paths.push_back(mesh.path);
   for (const TextureImage& image : scene.texture_images) paths.push_back(image.path);
   if (scene.environment) paths.push_back(scene.environment->path);
+  return paths;
+}
+
+ResumeKey resume_key(const std::vector<std::string>& paths, const RenderOptions& options,
+                     const FramePlan& frames) {
   std::uint64_t files = kFnv1aBasis;
   for (const std::string& path : paths) {
     const std::string bytes = file_bytes(path);

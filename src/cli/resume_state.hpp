@@ -24,7 +24,12 @@ struct ResumeKey {
   std::string files;    // a hash of the files' bytes
   std::string options;  // "name=value" words
 };
-ResumeKey resume_key(const Scene& scene, const RenderOptions& options, const FramePlan& frames);
+// The files a scene was read from: the scene, its meshes, its texture and environment images.
+std::vector<std::string> scene_files(const Scene& scene);
+// Reads every file of `files` (only when a state is read or written: a large mesh costs its
+// read again).
+ResumeKey resume_key(const std::vector<std::string>& files, const RenderOptions& options,
+                     const FramePlan& frames);
 
 struct ResumeState {
   std::uint32_t frame = 1;    // the frame the sums belong to; an animation's earlier ones are done

@@ -185,7 +185,8 @@ int render_frames(const CliOptions& cli, Scene& scene, const FramePlan& frames,
     ResumableRender resumable = resume.start(frame);
     accept_stop_requests(resume.keeps_work());
     const AnyImage image =
-        renderer.render(region, eight_bit, &progress, preview.get(), &resumable);
+        renderer.render(region, eight_bit, &progress, preview.get(),
+                        resume.keeps_work() ? &resumable : nullptr);
     accept_stop_requests(false);
     progress.phase("writing");
     const auto write_start = Clock::now();

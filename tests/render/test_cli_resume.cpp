@@ -95,6 +95,11 @@ TEST_CASE("a first SIGINT or SIGTERM keeps the rounds done as a valid image, wit
   CHECK(stopped.height == 32);
   CHECK(stopped.frames == straight.frames);
   CHECK(file_bytes(eight).find("clrt:samples") == std::string::npos);  // a whole render records none
+  const CommandResult piped = run_clrt(joined({scene(), "--mode", "path", "--resolution", "32x32",
+                                               "--spp", "8", "-o", "-", "--format", "png"}) + " -q");
+  CHECK(piped.exit_code == 0);
+  CHECK(piped.output.find("IHDR") != std::string::npos);
+  CHECK(piped.output.find("clrt:samples") == std::string::npos);  // nor one to standard output
 }
 
 TEST_CASE("an EXR stopped early records its sample count as an attribute", "[cli][signals][resume]") {
