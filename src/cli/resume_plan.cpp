@@ -10,7 +10,8 @@ namespace clrt {
 namespace {
 
 // Why an output cannot keep a resume state, or empty when it can.
-std::string why_no_state(const CliOptions& cli, const ImageOutput& output, const FramePlan& frames) {
+std::string why_no_state(const CliOptions& cli, const ImageOutput& output,
+                         const FramePlan& frames) {
   if (cli.no_write) return "--no-write writes no image";
   if (output.is_stdout()) return "standard output keeps nothing to go on from";
   if (frames.animated && output.format == ImageFormat::Fsf)
@@ -54,8 +55,9 @@ const ResumeKey& ResumePlan::key() {
 
 std::string ResumePlan::resumed_text() const {
   if (!state_) return resume_ && keeps_work_ ? "no " + path_ + " yet: starting from 0 spp" : "";
-  return "resuming " + output_name_ + (frames_.animated ? " at frame " + std::to_string(state_->frame) : "") +
-         " from " + std::to_string(state_->samples) + "/" + std::to_string(samples_) + " spp (" +
+  const std::string at_frame =
+      frames_.animated ? " at frame " + std::to_string(state_->frame) : "";
+  return "resuming " + output_name_ + at_frame + " from " + std::to_string(state_->samples) + "/" + std::to_string(samples_) + " spp (" +
          path_ + ")";
 }
 

@@ -1,4 +1,5 @@
-// How clrt keeps a stopped render's work and goes on from it (docs/cli.md#stopping-and-resuming-a-render):
+// How clrt keeps a stopped render's work and goes on from it
+// (docs/cli.md#stopping-and-resuming-a-render):
 // while the rounds of samples run, a first SIGINT or SIGTERM asks the render to stop after the
 // round in progress (image/interrupt_cleanup.hpp); the image of the samples taken is written as
 // usual, and beside it the resume state (cli/resume_state.hpp) that --resume goes on from.

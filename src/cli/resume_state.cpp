@@ -61,8 +61,9 @@ ResumeKey resume_key(const std::vector<std::string>& paths, const RenderOptions&
     // Each file's length first: moving bytes from one file to the next changes the hash.
     files = fnv1a(std::to_string(bytes.size()) + ":" + bytes, files);
   }
-  const PixelRect region = options.region.value_or(
-      PixelRect{0, 0, static_cast<std::uint32_t>(options.width), static_cast<std::uint32_t>(options.height)});
+  const PixelRect region =
+      options.region.value_or(PixelRect{0, 0, static_cast<std::uint32_t>(options.width),
+                                        static_cast<std::uint32_t>(options.height)});
   std::ostringstream words;
   words.precision(9);
   words << "resolution=" << options.width << "x" << options.height << " region=" << region.x
@@ -129,8 +130,8 @@ std::optional<ResumeState> read_resume_state(const std::string& path, const Resu
                  why + "; give the same options, or render without --resume to start over");
   }
   // A state between an animation's frames holds no sums.
-  if (count != pixels && !(count == 0 && state.samples == 0)) throw refuse("holds " + std::to_string(count) + " pixels, not " +
-                                    std::to_string(pixels));
+  if (count != pixels && !(count == 0 && state.samples == 0))
+    throw refuse("holds " + std::to_string(count) + " pixels, not " + std::to_string(pixels));
   std::uint32_t mark = 0;
   in.read(reinterpret_cast<char*>(&mark), sizeof mark);
   if (!in || mark != kByteOrderMark) throw refuse("was written on a machine of another byte order");

@@ -82,8 +82,9 @@ TEST_CASE("a first SIGINT or SIGTERM keeps the rounds done as a valid image, wit
   REQUIRE(WIFSIGNALED(status));
   CHECK(WTERMSIG(status) == signal_number);
   const std::string log = file_bytes(logs.file("log"));
-  CHECK(log.find("clrt: stopped: wrote " + out + " with 8/64 samples per pixel; --resume goes on from " +
-                 out + ".clrt-resume") != std::string::npos);
+  CHECK(log.find("clrt: stopped: wrote " + out +
+                 " with 8/64 samples per pixel; --resume goes on from " + out + ".clrt-resume") !=
+        std::string::npos);
   CHECK(dir.entries() == std::set<std::string>{"hold", "out.png", "out.png.clrt-resume"});
   // PNG's text chunk: the keyword, a NUL, the text.
   CHECK(file_bytes(out).find(std::string("tEXtclrt:samples") + '\0' + "8/64") != std::string::npos);
@@ -94,15 +95,19 @@ TEST_CASE("a first SIGINT or SIGTERM keeps the rounds done as a valid image, wit
   CHECK(stopped.width == 32);
   CHECK(stopped.height == 32);
   CHECK(stopped.frames == straight.frames);
-  CHECK(file_bytes(eight).find("clrt:samples") == std::string::npos);  // a whole render records none
-  const CommandResult piped = run_clrt(joined({scene(), "--mode", "path", "--resolution", "32x32",
-                                               "--spp", "8", "-o", "-", "--format", "png"}) + " -q");
+  // A whole render records none.
+  CHECK(file_bytes(eight).find("clrt:samples") == std::string::npos);
+  const CommandResult piped = run_clrt(joined({scene(), "--mode", "path", "--resolution",
+                                               "32x32", "--spp", "8", "-o", "-", "--format",
+                                               "png"}) +
+                                       " -q");
   CHECK(piped.exit_code == 0);
   CHECK(piped.output.find("IHDR") != std::string::npos);
   CHECK(piped.output.find("clrt:samples") == std::string::npos);  // nor one to standard output
 }
 
-TEST_CASE("an EXR stopped early records its sample count as an attribute", "[cli][signals][resume]") {
+TEST_CASE("an EXR stopped early records its sample count as an attribute",
+          "[cli][signals][resume]") {
   ScratchDir dir, logs;
   const std::string out = dir.file("out.exr");
   const int status = stopped_render(path_render(scene(), out, 64), 3, SIGINT, dir.file("hold"),
@@ -148,7 +153,8 @@ TEST_CASE("resuming finishes a stopped render with the bytes of one that never s
     again.push_back("--resume");
     REQUIRE(WIFSIGNALED(stopped_render(again, 2, SIGTERM, dir.file("hold"), logs.file("log2"),
                                        dir.path().string())));
-    CHECK(file_bytes(logs.file("log2")).find("resuming " + out + " from 8/64 spp") != std::string::npos);
+    CHECK(file_bytes(logs.file("log2")).find("resuming " + out + " from 8/64 spp") !=
+          std::string::npos);
     CHECK(file_bytes(logs.file("log2")).find("with 24/64 samples per pixel") != std::string::npos);
   }
   words.push_back("--resume");
@@ -259,6 +265,7 @@ TEST_CASE("a stopped animation resumes at its first unfinished frame", "[cli][re
         std::string::npos);
   CHECK(r.output.find("wrote " + dir.file("out-0001.png")) == std::string::npos);  // done before
   for (const char* n : {"-0001.png", "-0002.png", "-0003.png"})
-    CHECK(file_bytes(dir.file(std::string("out") + n)) == file_bytes(dir.file(std::string("straight") + n)));
+    CHECK(file_bytes(dir.file(std::string("out") + n)) ==
+          file_bytes(dir.file(std::string("straight") + n)));
   CHECK_FALSE(fs::exists(dir.file("out.png.clrt-resume")));  // a finished animation keeps none
 }
