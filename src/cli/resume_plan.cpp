@@ -68,6 +68,7 @@ ResumableRender ResumePlan::start(std::uint32_t frame) {
     render.sums = std::move(state_->sums);
     state_.reset();
   }
+  render.keep_finished_sums = resume_ && !frames_.animated;
   if (keeps_work_)
     render.stop = [this](std::uint32_t) {
       hold_after_round_for_tests(++rounds_run_);

@@ -285,14 +285,14 @@ AnyImage Renderer::render(const PixelRect& region, bool eight_bit, Progress* pro
   std::vector<dev::f4> sums;
   if (resumable && taken_before > 0)
     sums = std::move(resumable->sums);
-  else if (rounds.size() > 1 || resumable)
+  else if (rounds.size() > 1 || (resumable && resumable->keep_finished_sums))
     sums.resize(region.pixel_count());
   if (progress && taken_before > 0) progress->advance(region.pixel_count() * taken_before);
   sample_rounds_ = std::max<std::uint64_t>(sample_rounds_, rounds.size());
   std::uint32_t taken = taken_before;
   for (std::size_t r = 0; r < rounds.size(); ++r) {
     const SampleRound& round = rounds[r];
-    RoundOutput output(round, sums, *store, watcher, resumable != nullptr);
+    RoundOutput output(round, sums, *store, watcher, resumable && resumable->keep_finished_sums);
     render_round(region, output, workers, traced, progress);
     taken = round.first + round.count;
     if (progress && rounds.size() > 1)

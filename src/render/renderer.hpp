@@ -37,10 +37,14 @@ void check_render_setup(const RenderSetup& setup);
 
 // A render that may stop between rounds of samples and go on later (clrt --resume). In: the
 // samples of every pixel of the region taken before (0: none, `sums` empty) and their sums, as
-// the rounds leave them; out: the same after the rounds this render took.
+// the rounds leave them; out: the samples taken by the end, and their sums when the render
+// stopped early or keeps them.
 struct ResumableRender {
   std::uint32_t samples = 0;
   std::vector<dev::f4> sums;
+  // Whether a finished render leaves its sums too (to add samples to later); else they are
+  // left only when it stops early.
+  bool keep_finished_sums = false;
   // Asked after each of this render's rounds (the first is 1) whether to stop there.
   std::function<bool(std::uint32_t rounds_done)> stop;
 };
