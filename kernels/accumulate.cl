@@ -49,18 +49,18 @@ CLRT_INLINE float4 clamp_sample(float4 c, float max_value) {
 
 /* A wave's pixels after one round of their samples (src/render/sample_rounds.hpp): pixels[p]
  * comes in holding the sum of the samples before first_sample (unless this is the first round)
- * and leaves holding the sum up to this round's last sample, or, after the last round, the mean
- * of all total_samples (unclamped: clamping happens once, when quantising). Each sum is sample
- * 0 + sample 1 + ... in that order, so how the samples are split into rounds never changes a
- * bit. Each sample is clamped first (clamp_sample). */
+ * and leaves holding the sum up to this round's last sample (unclamped: clamping happens once,
+ * when quantising); the host divides by the sample count after the last round, so the sums
+ * of a finished render are there to go on from (clrt --resume). Each sum is sample 0 + sample
+ * 1 + ... in that order, so how the samples are split into rounds never changes a bit. Each
+ * sample is clamped first (clamp_sample). */
 __kernel void resolve(__global const float4* sample_colour, uint samples, uint first_sample,
-                      uint total_samples, uint pixel_count, float max_sample_value,
-                      __global float4* pixels) {
+                      uint pixel_count, float max_sample_value, __global float4* pixels) {
   const uint p = get_global_id(0);
   if (p >= pixel_count) return;
   const size_t base = (size_t)p * samples;
   const float4 first = clamp_sample(sample_colour[base], max_sample_value);
   float4 sum = first_sample == 0u ? first : pixels[p] + first;
   for (uint k = 1; k < samples; ++k) sum += clamp_sample(sample_colour[base + k], max_sample_value);
-  pixels[p] = first_sample + samples == total_samples ? sum / (float)total_samples : sum;
+  pixels[p] = sum;
 }

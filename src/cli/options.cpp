@@ -170,6 +170,12 @@ std::unique_ptr<CLI::App> clrt_command_line(CliOptions& o, StatsRequest& stats,
     app->add_flag("--preview", o.preview,
                   "show the render as it fills in, in a clrt-view window (docs/viewer.md)")
         ->group("Output");
+  if (program.resume)
+    app->add_flag("--resume", o.resume,
+                  "go on from OUTPUT.clrt-resume, the state a stopped render (Ctrl-C) leaves, or "
+                  "add samples to a finished one (--spp N); keep the state when done "
+                  "(docs/cli.md#stopping-and-resuming-a-render)")
+        ->group("Output");
   if (program.dump_scene)
     app->add_option("--dump-scene", o.dump_scene,
                     "write the scene as clrt reads it to FILE as JSON (- for standard output) and "

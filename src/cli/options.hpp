@@ -46,6 +46,7 @@ struct CliOptions {
   StatsFormat stats = StatsFormat::None;
   bool quiet = false;
   bool preview = false;  // --preview: a clrt-view window shows the render as it fills in
+  bool resume = false;   // --resume: go on from the output's resume state, and keep it
   std::optional<std::string> dump_scene;  // --dump-scene: where the scene goes as JSON, no render
 };
 
@@ -62,6 +63,7 @@ struct ProgramOptions {
   std::string name = "clrt";
   bool animation = true;  // --frames, --orbit, --frame-range
   bool preview = true;    // --preview
+  bool resume = true;     // --resume
   bool dump_scene = true; // --dump-scene
   std::function<void(CLI::App&)> add_own_options;  // e.g. clrt-mpi's --tile
   std::string manual = "docs/cli.md";  // the page --help and the man page point at

@@ -22,7 +22,9 @@
 #include "cli/out_of_memory.hpp"
 #include "cli/picture_options.hpp"
 #include "cli/preview_window.hpp"
+#include "cli/resume_plan.hpp"
 #include "cli/scene_dump.hpp"
+#include "image/interrupt_cleanup.hpp"
 #include "image/output_target.hpp"
 #include "render/frame_setup.hpp"
 #include "render/orbit.hpp"
@@ -155,6 +157,9 @@ int render_frames(const CliOptions& cli, Scene& scene, const FramePlan& frames,
   }
   const PixelRect region = render_region(setup.options);
   check_output_space(output, frames, region);
+  ResumePlan resume(cli, output, frames, scene, setup.options);
+  if (!cli.quiet && !resume.resumed_text().empty())
+    progress.message("clrt: " + resume.resumed_text());
   const DisplayTransform display = display_transform(cli, setup.options.mode);
   const std::unique_ptr<PreviewWindow> preview =
       cli.preview ? open_preview(region, display, progress) : nullptr;
@@ -168,8 +173,8 @@ int render_frames(const CliOptions& cli, Scene& scene, const FramePlan& frames,
                                                      static_cast<int>(region.height),
                                                      frames.count(), display);
   const std::string size = std::to_string(region.width) + "x" + std::to_string(region.height);
-  if (frames.animated) progress.frames(frames.count());
-  for (std::uint32_t frame = frames.first; frame <= frames.last; ++frame) {
+  if (frames.animated) progress.frames(frames.last - resume.first_frame() + 1);
+  for (std::uint32_t frame = resume.first_frame(); frame <= frames.last; ++frame) {
     if (frames.animated)
       renderer.set_camera(make_camera(
           orbit_camera(scene.camera, frames.orbit_degrees, frame - 1, frames.frames), setup.options));
@@ -177,19 +182,30 @@ int render_frames(const CliOptions& cli, Scene& scene, const FramePlan& frames,
                                          std::to_string(frames.frames)
                                    : "rendering",
                    renderer.render_work(region));
-    const AnyImage image = renderer.render(region, eight_bit, &progress, preview.get());
+    ResumableRender resumable = resume.start(frame);
+    accept_stop_requests(resume.keeps_work());
+    const AnyImage image =
+        renderer.render(region, eight_bit, &progress, preview.get(),
+                        resume.keeps_work() ? &resumable : nullptr);
+    accept_stop_requests(false);
     progress.phase("writing");
     const auto write_start = Clock::now();
+    WriteOptions write_options = image_write_options(cli.exr_pixel, display, "clrt");
+    write_options.samples = resume.samples_note(resumable);
     std::visit(
         [&](const auto& pixels) {
           if (animation)
             animation->add_frame(pixels);
           else if (!writes_nothing(output))
-            write_image(frame_output(output, frames, frame), pixels,
-                        image_write_options(cli.exr_pixel, display, "clrt"));
+            write_image(frame_output(output, frames, frame), pixels, write_options);
         },
         image);
     stats.write_seconds += seconds_since(write_start);
+    if (const auto stopped =
+            resume.finish_frame(frame, resumable, frame_output(output, frames, frame).path)) {
+      progress.finish(*stopped);
+      end_by_stop_request();
+    }
     if (frames.animated && !animation && !writes_nothing(output))
       progress.log("clrt: wrote " + frame_output(output, frames, frame).path + " (" + size + ", " +
                    seconds_text(seconds_since(start)) + ")");

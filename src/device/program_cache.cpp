@@ -5,6 +5,7 @@
 #include <system_error>
 
 #include "device/cache_file.hpp"
+#include "math/fnv1a.hpp"
 
 namespace clrt {
 namespace {
@@ -13,23 +14,6 @@ constexpr const char* kMagic = "clrt program binary 2\n";
 constexpr std::uint64_t kPayloadBasis = 0x9e3779b97f4a7c15ull;
 // The most an entry may hold: programs of clrt are a few MB; anything larger is not ours.
 constexpr std::uintmax_t kLargestEntry = std::uintmax_t{256} << 20;
-
-// FNV-1a, 64 bits, from a chosen basis: two bases give two independent hashes of one text.
-std::uint64_t fnv1a(const std::string& text, std::uint64_t basis) {
-  std::uint64_t h = basis;
-  for (const unsigned char c : text) {
-    h ^= c;
-    h *= 0x100000001b3ull;
-  }
-  return h;
-}
-
-std::string hex(std::uint64_t value) {
-  static const char* const digits = "0123456789abcdef";
-  std::string out(16, '0');
-  for (int i = 15; i >= 0; --i, value >>= 4) out[static_cast<std::size_t>(i)] = digits[value & 15u];
-  return out;
-}
 
 std::optional<std::filesystem::path> environment_path(const char* name) {
   const char* value = std::getenv(name);
@@ -55,7 +39,7 @@ bool ProgramCache::named_by_environment() {
 
 ProgramCache::ProgramCache(std::filesystem::path folder, const std::string& identity)
     : folder_(std::move(folder)),
-      file_(folder_ / (hex(fnv1a(identity, 0xcbf29ce484222325ull)) + ".bin")),
+      file_(folder_ / (hex(fnv1a(identity)) + ".bin")),
       check_(std::string(kMagic) + hex(fnv1a(identity, 0x84222325cbf29ce4ull)) + "\n") {}
 
 std::optional<std::string> ProgramCache::load() const {

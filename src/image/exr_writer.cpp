@@ -7,6 +7,7 @@
 #include <OpenEXR/ImfFrameBuffer.h>
 #include <OpenEXR/ImfHeader.h>
 #include <OpenEXR/ImfOutputFile.h>
+#include <OpenEXR/ImfStringAttribute.h>
 
 #include <algorithm>
 #include <cmath>
@@ -69,12 +70,14 @@ std::string overflow_warning(std::uint64_t overflowed, std::uint64_t samples) {
 
 }  // namespace
 
-void encode_exr(const FloatImage& image, ExrPixel pixel, const Warn& warn, ByteSink& sink) {
+void encode_exr(const FloatImage& image, ExrPixel pixel, const Warn& warn, ByteSink& sink,
+                const std::string& samples) {
   const Placement placement = image.placement.value_or(Placement{0, 0, image.width, image.height});
   const Imath::Box2i data_window = window(placement.x, placement.y, image.width, image.height);
   Imf::Header header(window(0, 0, placement.full_width, placement.full_height), data_window);
   const Imf::PixelType type = pixel == ExrPixel::Half ? Imf::HALF : Imf::FLOAT;
   for (const char* name : kChannels) header.channels().insert(name, Imf::Channel(type));
+  if (!samples.empty()) header.insert(kSamplesKey, Imf::StringAttribute(samples));
   // OpenEXR stores a block raw when ZIP would not shrink it, so the file is at most the raw
   // samples, 16 bytes a block (its offset, row and size) and the header.
   const std::size_t raw = 3 * static_cast<std::size_t>(image.width) *

@@ -89,6 +89,9 @@ bool holds_floats(ImageFormat format);          // PFM and EXR; the others store
 // float's size once compressed) or 32-bit floats (exactly what was rendered).
 enum class ExrPixel { Half, Float };
 
+// The name a stopped render's sample count is recorded under (WriteOptions::samples).
+constexpr const char* kSamplesKey = "clrt:samples";
+
 struct WriteOptions {
   // A constructor rather than an aggregate, so that callers may name the leading options only
   // ({ExrPixel::Float}) without a missing-initializer warning.
@@ -100,6 +103,10 @@ struct WriteOptions {
   // How a float image becomes 8-bit (PNG, PPM, FSF); PFM and EXR keep the floats, and an 8-bit
   // image's bytes are written as they are.
   DisplayTransform display;
+  // The samples per pixel of a render stopped early, as "TAKEN/ASKED" (clrt's Ctrl-C): PNG
+  // keeps it in a tEXt chunk and EXR in a string attribute, both named kSamplesKey; the other
+  // formats cannot hold it. Empty for a finished render: nothing is recorded.
+  std::string samples;
   // Told, once per image, what its format could not hold ("out.exr: 12 of the 300 samples ...":
   // finite values beyond a half float's range); nothing: not told.
   std::function<void(const std::string&)> warn;

@@ -4,10 +4,13 @@
 #include <pthread.h>
 #include <unistd.h>
 
+#include <atomic>
+#include <chrono>
 #include <csignal>
 #include <cstdlib>
 #include <mutex>
 #include <set>
+#include <string>
 #include <thread>
 
 namespace clrt {
@@ -20,6 +23,26 @@ struct Temporaries {
   std::mutex mutex;
   std::set<std::string> paths;
 };
+
+std::atomic<bool> accepting_stop_requests{false};
+std::atomic<int> requested_stop{0};
+
+// Takes the first SIGINT or SIGTERM as a request to stop while requests are accepted.
+bool taken_as_stop_request(int signal_number) {
+  if ((signal_number != SIGINT && signal_number != SIGTERM) || !accepting_stop_requests.load())
+    return false;
+  int none = 0;
+  return requested_stop.compare_exchange_strong(none, signal_number);
+}
+
+// Writes `line` to the FIFO `fifo`; whether it was all written.
+bool tell_fifo(const std::string& fifo, const std::string& line) {
+  const int fd = ::open(fifo.c_str(), O_WRONLY | O_CLOEXEC);
+  if (fd < 0) return false;
+  const ssize_t written = ::write(fd, line.data(), line.size());
+  ::close(fd);
+  return written == static_cast<ssize_t>(line.size());
+}
 
 // Never destroyed: a signal may come while static objects are destroyed at exit.
 Temporaries& temporaries() {
@@ -71,9 +94,11 @@ void remove_temporaries_on_signal() {
     ::pthread_sigmask(SIG_BLOCK, &set, nullptr);
     std::thread([set, ignored] {
       int signal_number = 0;
-      while (::sigwait(&set, &signal_number) != 0 || sigismember(&ignored, signal_number) == 1) {
+      for (;;) {
+        while (::sigwait(&set, &signal_number) != 0 || sigismember(&ignored, signal_number) == 1) {
+        }
+        if (!taken_as_stop_request(signal_number)) end_by(signal_number);
       }
-      end_by(signal_number);
     }).detach();
     return true;
   }();
@@ -85,6 +110,24 @@ void end_by_pending_signal() {
   if (::sigpending(&pending) != 0) return;
   for (int signal_number : {SIGPIPE, SIGXFSZ})
     if (sigismember(&pending, signal_number) == 1) end_by(signal_number);
+}
+
+void accept_stop_requests(bool accept) { accepting_stop_requests.store(accept); }
+
+int stop_request() { return requested_stop.load(); }
+
+void end_by_stop_request() {
+  if (const int signal_number = requested_stop.load()) end_by(signal_number);
+}
+
+void hold_after_round_for_tests(unsigned rounds_done) {
+  const char* hold = std::getenv("CLRT_TEST_HOLD_AFTER_ROUND");
+  if (!hold || !*hold) return;
+  const std::string text(hold);
+  const std::size_t colon = text.find(':');
+  if (colon == std::string::npos || text.substr(0, colon) != std::to_string(rounds_done)) return;
+  if (!tell_fifo(text.substr(colon + 1), "round " + std::to_string(rounds_done) + "\n")) return;
+  while (stop_request() == 0) std::this_thread::sleep_for(std::chrono::milliseconds(5));
 }
 
 namespace image_detail {
@@ -101,12 +144,7 @@ void change_temporary(const std::string& path, const std::function<bool()>& step
 void hold_before_commit_for_tests(const std::string& temp_path) {
   const char* fifo = std::getenv("CLRT_TEST_HOLD_BEFORE_COMMIT");
   if (!fifo || !*fifo) return;
-  const int fd = ::open(fifo, O_WRONLY | O_CLOEXEC);
-  if (fd < 0) return;
-  const std::string line = temp_path + "\n";
-  const ssize_t written = ::write(fd, line.data(), line.size());
-  ::close(fd);
-  if (written == static_cast<ssize_t>(line.size()))
+  if (tell_fifo(fifo, temp_path + "\n"))
     for (;;) ::pause();
 }
 

@@ -25,6 +25,19 @@ void remove_temporaries_on_signal();
 // the thread would have; otherwise returns. Call it before reporting a failure.
 void end_by_pending_signal();
 
+// Whether a first SIGINT or SIGTERM asks to stop (true) or ends the process (false, as at start).
+void accept_stop_requests(bool accept);
+// The signal that asked to stop, or 0.
+int stop_request();
+// Ends the process by the signal that asked to stop, removing any temporary; returns at once
+// when none did.
+void end_by_stop_request();
+
+// For the tests that stop a render: when CLRT_TEST_HOLD_AFTER_ROUND is "K:FIFO" and
+// `rounds_done` is K (the rounds of samples clrt has run, over every frame), writes "round K"
+// and a newline to the FIFO, then waits until a stop is requested. Otherwise does nothing.
+void hold_after_round_for_tests(unsigned rounds_done);
+
 namespace image_detail {
 
 // Runs `step`, which creates, renames or removes the temporary at `path` and returns whether the

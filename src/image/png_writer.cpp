@@ -60,20 +60,22 @@ void check_png_encoding(const PngEncoding& encoding) {
 
 // An opaque frame (everything clrt renders) is stored as RGB: a quarter smaller, same pixels.
 // The sRGB chunk says the samples are display values, as the contract's quantisation makes them.
-// A placement goes into a tEXt chunk before the image data.
-void encode_png(const EightBitRows& rows, const PngEncoding& encoding, ByteSink& sink) {
+// A placement and a stopped render's sample count go into tEXt chunks before the image data.
+void encode_png(const EightBitRows& rows, const PngEncoding& encoding, ByteSink& sink,
+                const std::string& samples) {
+  // The keyword, its terminating NUL as the separator, the text.
+  const auto write_text = [&sink](const char* key, const std::string& text) {
+    std::vector<std::uint8_t> chunk(key, key + std::strlen(key) + 1);
+    chunk.insert(chunk.end(), text.begin(), text.end());
+    write_chunk(sink, "tEXt", chunk);
+  };
   const bool rgba = !rows.opaque();
   sink.write(kSignature, sizeof kSignature);
   write_chunk(sink, "IHDR", header(rows, rgba));
   write_chunk(sink, "sRGB", {kSrgbPerceptual});
-  if (const auto placement = recorded_placement(rows.placement(), rows.width(), rows.height())) {
-    const std::string text = placement_text(*placement, rows.width(), rows.height());
-    // The keyword, its terminating NUL as the separator, the text.
-    std::vector<std::uint8_t> chunk(kPngPlacementKey,
-                                    kPngPlacementKey + std::strlen(kPngPlacementKey) + 1);
-    chunk.insert(chunk.end(), text.begin(), text.end());
-    write_chunk(sink, "tEXt", chunk);
-  }
+  if (const auto placement = recorded_placement(rows.placement(), rows.width(), rows.height()))
+    write_text(kPngPlacementKey, placement_text(*placement, rows.width(), rows.height()));
+  if (!samples.empty()) write_text(kSamplesKey, samples);
   compress_png_rows(rows, rgba, encoding, [&](const std::uint8_t* data, std::size_t size) {
     for (std::size_t start = 0; start < size; start += kMaxChunkBytes)
       write_chunk(sink, "IDAT", data + start, std::min(kMaxChunkBytes, size - start));

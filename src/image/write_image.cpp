@@ -28,13 +28,14 @@ void encode(ImageFormat format, const Image& image, const WriteOptions& options,
     case ImageFormat::Fsf:
       return image_detail::encode_fsf(rows_of(image, options), sink);
     case ImageFormat::Png:
-      return image_detail::encode_png(rows_of(image, options), options.png, sink);
+      return image_detail::encode_png(rows_of(image, options), options.png, sink, options.samples);
     case ImageFormat::Ppm:
       return image_detail::encode_ppm(rows_of(image, options), sink);
     case ImageFormat::Pfm:
       return image_detail::encode_pfm(as_float(image), sink);
     case ImageFormat::Exr:
-      return image_detail::encode_exr(as_float(image), options.exr_pixel, options.warn, sink);
+      return image_detail::encode_exr(as_float(image), options.exr_pixel, options.warn, sink,
+                                       options.samples);
   }
 }
 

@@ -11,6 +11,7 @@ ProgramOptions mpi_program_options(TileSize& tile) {
   program.name = "clrt-mpi";
   program.animation = false;
   program.preview = false;
+  program.resume = false;
   program.dump_scene = false;
   program.manual = "docs/scale-out.md";
   program.add_own_options = [&tile](CLI::App& app) {

@@ -250,7 +250,7 @@ Renderer::Renderer(const Scene& scene, GeometryData geometry, const RenderSetup&
 Renderer::~Renderer() = default;
 
 AnyImage Renderer::render(const PixelRect& region, bool eight_bit, Progress* progress,
-                          PixelStore* watcher) {
+                          PixelStore* watcher, ResumableRender* resumable) {
   const auto start = Clock::now();
   std::optional<Placement> placement;
   if (region.width != static_cast<std::uint32_t>(options_.width) ||
@@ -278,16 +278,36 @@ AnyImage Renderer::render(const PixelRect& region, bool eight_bit, Progress* pro
       owners.push_back(&d);
     }
   std::vector<std::uint64_t> traced(workers.size(), 0);
+  const auto total = static_cast<std::uint32_t>(options_.samples);
+  const std::uint32_t taken_before = resumable ? resumable->samples : 0;
   const std::vector<SampleRound> rounds =
-      sample_rounds(static_cast<std::uint32_t>(options_.samples), region.pixel_count(), rays_in_flight_);
-  std::vector<dev::f4> sums(rounds.size() > 1 ? region.pixel_count() : 0);
+      sample_rounds(total, region.pixel_count(), rays_in_flight_, taken_before);
+  std::vector<dev::f4> sums;
+  if (resumable && taken_before > 0)
+    sums = std::move(resumable->sums);
+  else if (rounds.size() > 1 || (resumable && resumable->keep_finished_sums))
+    sums.resize(region.pixel_count());
+  if (progress && taken_before > 0) progress->advance(region.pixel_count() * taken_before);
   sample_rounds_ = std::max<std::uint64_t>(sample_rounds_, rounds.size());
-  for (const SampleRound& round : rounds) {
-    RoundOutput output(round, sums, *store, watcher);
+  std::uint32_t taken = taken_before;
+  for (std::size_t r = 0; r < rounds.size(); ++r) {
+    const SampleRound& round = rounds[r];
+    RoundOutput output(round, sums, *store, watcher, resumable && resumable->keep_finished_sums);
     render_round(region, output, workers, traced, progress);
+    taken = round.first + round.count;
     if (progress && rounds.size() > 1)
-      progress->note(std::to_string(round.first + round.count) + "/" +
-                     std::to_string(round.total) + " spp");
+      progress->note(std::to_string(taken) + "/" + std::to_string(round.total) + " spp");
+    if (resumable && resumable->stop && resumable->stop(static_cast<std::uint32_t>(r + 1)))
+      break;
+  }
+  // Stopped early, or resumed with every sample taken: no last round stored the mean.
+  if (taken < total || rounds.empty()) {
+    const std::vector<dev::f4> mean = mean_of_sums(sums.data(), region.pixel_count(), taken);
+    store->store(0, static_cast<std::uint32_t>(region.pixel_count()), mean.data());
+  }
+  if (resumable) {
+    resumable->samples = taken;
+    resumable->sums = std::move(sums);
   }
   for (std::size_t i = 0; i < workers.size(); ++i) owners[i]->camera_samples += traced[i];
   render_seconds_ += seconds_since(start);

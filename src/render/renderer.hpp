@@ -3,6 +3,7 @@
 // an MPI rank, the frames of an animation), dealing each region's rows out among its devices.
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -34,6 +35,20 @@ PixelRect render_region(const RenderOptions& options);
 // depth the integrator cannot trace on a device), before any work.
 void check_render_setup(const RenderSetup& setup);
 
+// A render that may stop between rounds of samples and go on later (clrt --resume). In: the
+// samples of every pixel of the region taken before (0: none, `sums` empty) and their sums, as
+// the rounds leave them; out: the samples taken by the end, and their sums when the render
+// stopped early or keeps them.
+struct ResumableRender {
+  std::uint32_t samples = 0;
+  std::vector<dev::f4> sums;
+  // Whether a finished render leaves its sums too (to add samples to later); else they are
+  // left only when it stops early.
+  bool keep_finished_sums = false;
+  // Asked after each of this render's rounds (the first is 1) whether to stop there.
+  std::function<bool(std::uint32_t rounds_done)> stop;
+};
+
 class Renderer {
  public:
   // Builds everything a render needs, naming the phases on `progress`; checks `setup` first
@@ -59,8 +74,12 @@ class Renderer {
   // advances by render_work(region) in all and shows the samples per pixel done. `watcher`,
   // when given, is handed every band's pixels as well (after each round but the last their
   // mean so far), as they are stored (clrt --preview); the image is the same with or without it.
+  // With `resumable`, the rounds start after its samples, from its sums, and may stop early:
+  // the image is then the mean of the samples taken (resumable->samples of them), which has
+  // the bits of a render of that many samples when the sampler draws sample k whatever the
+  // total (path mode's Sobol samples).
   AnyImage render(const PixelRect& region, bool eight_bit, Progress* progress = nullptr,
-                  PixelStore* watcher = nullptr);
+                  PixelStore* watcher = nullptr, ResumableRender* resumable = nullptr);
   // The units of work of rendering `region`: a camera sample each.
   std::uint64_t render_work(const PixelRect& region) const;
 

@@ -15,7 +15,7 @@ constexpr std::uint64_t kWavesPerRound = 4;
 }  // namespace
 
 std::vector<SampleRound> sample_rounds(std::uint32_t samples, std::uint64_t region_pixels,
-                                       std::uint64_t rays_in_flight) {
+                                       std::uint64_t rays_in_flight, std::uint32_t first) {
   const std::uint64_t fewest = ceil_div(samples, kMaxSampleRounds);
   const std::uint64_t filling =
       ceil_div(kWavesPerRound * std::max<std::uint64_t>(1, rays_in_flight),
@@ -23,23 +23,25 @@ std::vector<SampleRound> sample_rounds(std::uint32_t samples, std::uint64_t regi
   const auto per_round =
       static_cast<std::uint32_t>(std::min<std::uint64_t>(samples, std::max(fewest, filling)));
   std::vector<SampleRound> rounds;
-  for (std::uint32_t first = 0; first < samples; first += per_round)
+  for (; first < samples; first += per_round)
     rounds.push_back({first, std::min(per_round, samples - first), samples});
   return rounds;
 }
 
+std::vector<dev::f4> mean_of_sums(const dev::f4* sums, std::uint64_t count, std::uint32_t samples) {
+  const float n = static_cast<float>(samples);
+  std::vector<dev::f4> mean(sums, sums + count);
+  for (dev::f4& p : mean) p = {p.x / n, p.y / n, p.z / n, p.w / n};
+  return mean;
+}
+
 void RoundOutput::take(std::uint64_t first, std::uint32_t count, const dev::f4* pixels) {
-  if (round_.last()) {
-    store_.store(first, count, pixels);
-    if (watcher_) watcher_->store(first, count, pixels);
-    return;
-  }
-  std::copy(pixels, pixels + count, sums_.begin() + static_cast<std::ptrdiff_t>(first));
-  if (!watcher_) return;
-  const float done = static_cast<float>(round_.first + round_.count);
-  std::vector<dev::f4> mean(pixels, pixels + count);
-  for (dev::f4& p : mean) p = {p.x / done, p.y / done, p.z / done, p.w / done};
-  watcher_->store(first, count, mean.data());
+  if (!round_.last() || keep_sums_)
+    std::copy(pixels, pixels + count, sums_.begin() + static_cast<std::ptrdiff_t>(first));
+  if (!round_.last() && !watcher_) return;
+  const std::vector<dev::f4> mean = mean_of_sums(pixels, count, round_.first + round_.count);
+  if (round_.last()) store_.store(first, count, mean.data());
+  if (watcher_) watcher_->store(first, count, mean.data());
 }
 
 }  // namespace clrt

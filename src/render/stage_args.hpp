@@ -146,11 +146,11 @@ struct AccumulateSamplesArgs {
 struct ResolveArgs {
   static constexpr const char* kName = "resolve";
   Global<const dev::f4> sample_colour;
-  cl_uint samples = 0, first_sample = 0, total_samples = 0, pixel_count = 0;
+  cl_uint samples = 0, first_sample = 0, pixel_count = 0;
   cl_float max_sample_value = std::numeric_limits<float>::infinity();  // no clamp
   Global<dev::f4> pixels;
 
-  CLRT_KERNEL_ARGS(sample_colour, samples, first_sample, total_samples, pixel_count,
+  CLRT_KERNEL_ARGS(sample_colour, samples, first_sample, pixel_count,
                    max_sample_value, pixels)
 };
 

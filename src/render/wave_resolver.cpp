@@ -28,8 +28,7 @@ void WaveResolver::resolve(Launcher& launcher, RoundOutput& output, std::uint32_
     device_.queue().enqueue_write_buffer(pixels_.buffer, 0, sizeof(dev::f4) * pixel_count,
                                          output.sums_before(first));
   launcher.launch(resolve_,
-                  {sample_colour_, round.count, round.first, round.total, pixel_count,
-                   max_sample_value_, pixels_},
+                  {sample_colour_, round.count, round.first, pixel_count, max_sample_value_, pixels_},
                   pixel_count, 0);
   device_.queue().enqueue_read_buffer(pixels_.buffer, 0, sizeof(dev::f4) * pixel_count,
                                       host_pixels_.data());

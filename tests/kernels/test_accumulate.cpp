@@ -179,7 +179,7 @@ TEST_CASE("accumulate_samples gives the same bits wherever a run sits in the que
   check_placement_independence(run_owners(), accumulate_on_device, rng);
 }
 
-TEST_CASE("resolve is the mean of each pixel's samples", "[accumulate]") {
+TEST_CASE("resolve is the sum of each pixel's samples, left for the host to divide", "[accumulate]") {
   std::mt19937 rng(7);
   for (std::uint32_t samples : {1u, 4u, 6u}) {
     const std::uint32_t pixels = 70;
@@ -187,19 +187,18 @@ TEST_CASE("resolve is the mean of each pixel's samples", "[accumulate]") {
     for (std::uint32_t i = 0; i < pixels * samples; ++i) sample_colour.push_back(random_colour(rng));
     ResolveArgs args;
     args.sample_colour = test::upload(sample_colour);
-    args.samples = args.total_samples = samples;
+    args.samples = samples;
     args.pixel_count = pixels;
     args.pixels = test::allocate<dev::f4>(pixels);
     test::run(test::renderer_program(), args, pixels);
     const std::vector<dev::f4> result = test::download(args.pixels, pixels);
     for (std::uint32_t p = 0; p < pixels; ++p) {
       INFO("samples " << samples << ", pixel " << p);
-      Vec3 mean;
-      for (std::uint32_t k = 0; k < samples; ++k) mean = mean + test::vec_of(sample_colour[p * samples + k]);
-      mean = mean / samples;
-      CHECK(result[p].x == Approx(mean.x).epsilon(1e-6));
-      CHECK(result[p].y == Approx(mean.y).epsilon(1e-6));
-      CHECK(result[p].z == Approx(mean.z).epsilon(1e-6));
+      Vec3 sum;
+      for (std::uint32_t k = 0; k < samples; ++k) sum = sum + test::vec_of(sample_colour[p * samples + k]);
+      CHECK(result[p].x == Approx(sum.x).epsilon(1e-6));
+      CHECK(result[p].y == Approx(sum.y).epsilon(1e-6));
+      CHECK(result[p].z == Approx(sum.z).epsilon(1e-6));
       if (samples == 1) CHECK(same_rgb(result[p], sample_colour[p]));
     }
   }
@@ -213,21 +212,21 @@ TEST_CASE("resolve scales a sample brighter than the largest value down to it, h
                                               {3, 3, 3, 0}};
   ResolveArgs args;
   args.sample_colour = test::upload(sample_colour);
-  args.samples = args.total_samples = 4;
+  args.samples = 4;
   args.pixel_count = 1;
   args.max_sample_value = 2;
   args.pixels = test::allocate<dev::f4>(1);
   test::run(test::renderer_program(), args, 1);
   const dev::f4 result = test::download(args.pixels, 1)[0];
-  const Vec3 expected = (Vec3{0.5, 1, 2} + Vec3{0.5, 0.25, 0.125} + Vec3{2, 0.25, 0} + Vec3{2, 2, 2}) / 4;
+  const Vec3 expected = (Vec3{0.5, 1, 2} + Vec3{0.5, 0.25, 0.125} + Vec3{2, 0.25, 0} + Vec3{2, 2, 2});
   CHECK(result.x == Approx(expected.x).epsilon(1e-6));
   CHECK(result.y == Approx(expected.y).epsilon(1e-6));
   CHECK(result.z == Approx(expected.z).epsilon(1e-6));
 }
 
 // A pixel's samples resolved in rounds (src/render/sample_rounds.hpp): each round adds its
-// samples to the sums the previous one left, the last divides, and the result has the bits of
-// one resolve over all samples.
+// samples to the sums the previous one left, and the result has the bits of one resolve over
+// all samples.
 std::vector<dev::f4> resolve_in_rounds(const std::vector<dev::f4>& sample_colour,
                                        std::uint32_t pixels, std::uint32_t samples,
                                        const std::vector<std::uint32_t>& round_sizes) {
@@ -241,7 +240,6 @@ std::vector<dev::f4> resolve_in_rounds(const std::vector<dev::f4>& sample_colour
     args.sample_colour = test::upload(round_colour);
     args.samples = count;
     args.first_sample = first;
-    args.total_samples = samples;
     args.pixel_count = pixels;
     args.pixels = test::upload(sums);
     test::run(test::renderer_program(), args, pixels);

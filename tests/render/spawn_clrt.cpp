@@ -1,6 +1,9 @@
 #include "spawn_clrt.hpp"
 
+#include <catch2/catch.hpp>
+
 #include <fcntl.h>
+#include <poll.h>
 #include <signal.h>
 #include <spawn.h>
 #include <sys/wait.h>
@@ -69,6 +72,31 @@ bool ClrtProcess::ended(int& status) {
   if (::waitpid(pid_, &status, WNOHANG) != pid_) return false;
   reaped_ = true;
   return true;
+}
+
+std::string read_fifo_line(const std::string& fifo, ClrtProcess& clrt) {
+  const int fd = ::open(fifo.c_str(), O_RDONLY | O_NONBLOCK);
+  REQUIRE(fd >= 0);
+  std::string line;
+  // The wait has no time limit of its own: it ends when clrt writes, or ends.
+  while (line.empty() || line.back() != '\n') {
+    pollfd p{fd, POLLIN, 0};
+    ::poll(&p, 1, 200);
+    char buffer[4096];
+    const ssize_t got = ::read(fd, buffer, sizeof buffer);
+    if (got > 0) {
+      line.append(buffer, static_cast<std::size_t>(got));
+      continue;
+    }
+    int status = 0;
+    if (clrt.ended(status)) {
+      ::close(fd);
+      FAIL("clrt ended before it wrote to " << fifo << ", status " << status);
+    }
+  }
+  ::close(fd);
+  line.pop_back();
+  return line;
 }
 
 }  // namespace clrt::test

@@ -33,4 +33,8 @@ class ClrtProcess {
   bool reaped_ = false;
 };
 
+// Reads the line clrt writes to `fifo` when a test hook holds it (CLRT_TEST_HOLD_BEFORE_COMMIT,
+// CLRT_TEST_HOLD_AFTER_ROUND), without its newline; fails the test if clrt ends first.
+std::string read_fifo_line(const std::string& fifo, ClrtProcess& clrt);
+
 }  // namespace clrt::test

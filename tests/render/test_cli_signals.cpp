@@ -33,32 +33,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// Reads the line the held clrt writes to `fifo`; fails the test if clrt ends first.
-std::string read_held_temporary(const std::string& fifo, ClrtProcess& clrt) {
-  const int fd = ::open(fifo.c_str(), O_RDONLY | O_NONBLOCK);
-  REQUIRE(fd >= 0);
-  std::string line;
-  // The wait has no time limit of its own: it ends when clrt writes, or ends.
-  while (line.empty() || line.back() != '\n') {
-    pollfd p{fd, POLLIN, 0};
-    ::poll(&p, 1, 200);
-    char buffer[4096];
-    const ssize_t got = ::read(fd, buffer, sizeof buffer);
-    if (got > 0) {
-      line.append(buffer, static_cast<std::size_t>(got));
-      continue;
-    }
-    int status = 0;
-    if (clrt.ended(status)) {
-      ::close(fd);
-      FAIL("clrt ended before its write was held, status " << status);
-    }
-  }
-  ::close(fd);
-  line.pop_back();
-  return line;
-}
-
 // Waits until `log` holds `text`; fails the test if clrt ends first.
 void wait_for_output(const std::string& log, const std::string& text, ClrtProcess& clrt) {
   for (;;) {
@@ -92,7 +66,7 @@ TEST_CASE("a signal during the write leaves no temporary and no output", "[cli][
   ScratchDir logs;
   ClrtProcess clrt({test_scene("test2.ray"), "-q", "--resolution", "40x24", "-o", dir.file("out.png")},
                    dir.path().string(), {"CLRT_TEST_HOLD_BEFORE_COMMIT=" + fifo}, logs.file("log"));
-  const std::string temporary = read_held_temporary(fifo, clrt);
+  const std::string temporary = read_fifo_line(fifo, clrt);
   CHECK(fs::path(temporary).parent_path() == dir.path());
   // The name docs/reliability.md gives, to spot the leftovers of a process killed outright.
   CHECK(std::regex_match(fs::path(temporary).filename().string(),
@@ -118,10 +92,12 @@ TEST_CASE("without the hold the same command writes its output", "[cli][signals]
   CHECK(dir.entries() == std::set<std::string>{"out.png"});
 }
 
+// SIGINT and SIGTERM during the rounds of samples stop the render after its round and keep
+// what it rendered (test_cli_resume.cpp).
 TEST_CASE("a signal during the render ends clrt by that signal, leaving nothing",
           "[cli][signals]") {
-  const int signal_number = GENERATE(SIGINT, SIGTERM, SIGHUP, SIGQUIT, SIGALRM, SIGPIPE, SIGUSR1,
-                                     SIGUSR2, SIGXFSZ);
+  const int signal_number =
+      GENERATE(SIGHUP, SIGQUIT, SIGALRM, SIGPIPE, SIGUSR1, SIGUSR2, SIGXFSZ);
   INFO("signal " << signal_number);
   no_core_dumps();
   ScratchDir dir;
@@ -151,7 +127,7 @@ TEST_CASE("a signal ignored from the start, as nohup ignores SIGHUP, stays ignor
                    dir.path().string(), {"CLRT_TEST_HOLD_BEFORE_COMMIT=" + fifo}, logs.file("log"),
                    {SIGHUP});
   std::signal(SIGHUP, saved);
-  read_held_temporary(fifo, clrt);
+  read_fifo_line(fifo, clrt);
   // Had SIGHUP been taken, it would end clrt, whichever of the two clrt saw first.
   REQUIRE(::kill(clrt.pid(), SIGHUP) == 0);
   REQUIRE(::kill(clrt.pid(), SIGTERM) == 0);

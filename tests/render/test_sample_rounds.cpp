@@ -43,6 +43,16 @@ TEST_CASE("a render's samples are split into few rounds that keep the devices bu
     CHECK(rounds[3].first == 81);
     CHECK(rounds[3].count == 19);
   }
+  SECTION("a resumed render's rounds start after the samples taken before, in the same sizes") {
+    const auto rounds = sample_rounds(100, 10000, 65536, 30);
+    REQUIRE(rounds.size() == 3);
+    CHECK(rounds[0].first == 30);
+    CHECK(rounds[0].count == 27);
+    CHECK(rounds[2].first == 84);
+    CHECK(rounds[2].count == 16);
+    CHECK(rounds[2].last());
+    CHECK(sample_rounds(100, 10000, 65536, 100).empty());
+  }
 }
 
 namespace {
