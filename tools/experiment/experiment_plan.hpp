@@ -37,6 +37,7 @@ struct Plan {
   std::string clrt;         // the executable
   std::string out_dir;
   std::string load_before;  // /proc/loadavg when the experiment started, for the record
+  std::string started;      // when it started (UTC), for the record
 };
 
 // Files named, and the .ray and .nff files (sorted) of folders named.

@@ -7,6 +7,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <csignal>
 #include <ctime>
 #include <filesystem>
 #include <fstream>
@@ -34,6 +35,16 @@ namespace fs = std::filesystem;
 using namespace clrt::experiment;
 
 namespace {
+
+// Set by Ctrl-C (SIGINT). The run under way is let finish, or, when the terminal's Ctrl-C stopped
+// clrt with it, left out; then the experiment stops with what it kept written down.
+volatile std::sig_atomic_t interrupted = 0;
+extern "C" void on_interrupt(int) { interrupted = 1; }
+
+// Thrown between runs once Ctrl-C came: the runs results.json holds, of the plan's `total`.
+struct Interrupted {
+  std::size_t kept = 0, total = 0;
+};
 
 std::string now_text() {
   const std::time_t t = std::time(nullptr);
@@ -92,6 +103,24 @@ nlohmann::json machine(const Plan& plan) {
           {"date", now_text()}};
 }
 
+// This session of the experiment (one command; --resume starts another): when it started and
+// ended, the machine's load before and after it, and how many of the runs it measured.
+nlohmann::json session_of(const Plan& plan, std::size_t measured) {
+  return {{"started", plan.started},
+          {"ended", now_text()},
+          {"hardware_threads", std::thread::hardware_concurrency()},
+          {"load_average_before", plan.load_before},
+          {"load_average_after", proc_value("/proc/loadavg")},
+          {"runs", measured}};
+}
+
+// What an interrupted experiment in --out left (--resume): its runs, and the sessions that
+// measured them.
+struct Earlier {
+  nlohmann::json runs = nlohmann::json::array();
+  nlohmann::json sessions = nlohmann::json::array();
+};
+
 // Written beside its place and renamed into it, so that an interrupted experiment leaves the
 // last whole file, never half of one.
 void write_file(const fs::path& path, const std::string& text) {
@@ -113,9 +142,15 @@ nlohmann::json settings_of(const Plan& plan) {
 }
 
 // results.json for `runs`: `complete` once every run of the plan is in.
-nlohmann::json results_of(const Plan& plan, const nlohmann::json& warmups,
+nlohmann::json results_of(const Plan& plan, const Earlier& earlier, const nlohmann::json& warmups,
                           const nlohmann::json& runs, bool complete) {
   nlohmann::json results = {{"clrt", clrt_version_string()}, {"machine", machine(plan)}};
+  const std::size_t session = earlier.sessions.size() + 1;
+  results["sessions"] = earlier.sessions;
+  results["sessions"].push_back(session_of(
+      plan, static_cast<std::size_t>(std::count_if(runs.begin(), runs.end(), [&](const auto& r) {
+        return r.value("session", std::size_t{1}) == session;
+      }))));
   results["settings"] = settings_of(plan);
   results["complete"] = complete;
   results["warmup_runs"] = warmups;
@@ -127,11 +162,11 @@ nlohmann::json results_of(const Plan& plan, const nlohmann::json& warmups,
   return results;
 }
 
-// The runs an interrupted experiment in `out` finished, for --resume: none without its
-// results.json; CLI::ValidationError when they belong to another experiment.
-nlohmann::json finished_runs(const Plan& plan) {
+// What an interrupted experiment in `out` left, for --resume: nothing without its results.json;
+// CLI::ValidationError when it belongs to another experiment.
+Earlier finished_runs(const Plan& plan) {
   const fs::path path = fs::path(plan.out_dir) / "results.json";
-  if (!fs::exists(path)) return nlohmann::json::array();
+  if (!fs::exists(path)) return {};
   std::ifstream in(path);
   nlohmann::json earlier;
   try {
@@ -144,7 +179,36 @@ nlohmann::json finished_runs(const Plan& plan) {
     throw CLI::ValidationError("--resume: " + path.string() +
                                " holds another experiment (other scenes, repeats, resolution, "
                                "samples, mode, format or clrt)");
-  return earlier["runs"];
+  Earlier found;
+  found.runs = earlier["runs"];
+  if (earlier.contains("sessions")) {
+    found.sessions = earlier["sessions"];
+  } else {  // written before sessions were recorded: its machine record is its one session
+    const nlohmann::json& m = earlier.value("machine", nlohmann::json::object());
+    found.sessions.push_back({{"started", nullptr},
+                              {"ended", m.value("date", "")},
+                              {"hardware_threads", m.value("hardware_threads", 0)},
+                              {"load_average_before", m.value("load_average_before", "")},
+                              {"load_average_after", m.value("load_average_after", "")},
+                              {"runs", found.runs.size()}});
+  }
+  return found;
+}
+
+// clrt-experiment writes only regular files: a FIFO, device or folder in the place of one of
+// its outputs is refused before any run (a FIFO would block the first read or write, and a
+// rename would take its name).
+void refuse_special_outputs(const std::string& out_dir) {
+  for (const char* name : {"results.json", "runs.csv", "report.md", "mrays.png", "kernels.png",
+                           "wavefront.png", "local-size.png"}) {
+    const fs::path path = fs::path(out_dir) / name;
+    std::error_code error;
+    const fs::file_status status = fs::status(path, error);
+    if (fs::exists(status) && !fs::is_regular_file(status))
+      throw CLI::ValidationError(path.string() +
+                                 " is not a regular file; clrt-experiment writes only regular "
+                                 "files (remove it, or choose another --out)");
+  }
 }
 
 bool same_run(const nlohmann::json& record, const Plan& plan, const RunKey& key) {
@@ -173,7 +237,10 @@ std::string image_name(const RunKey& k, const std::string& format) {
 // Each configuration's warm-up runs, before any run that counts: the first run of a
 // configuration builds or loads its kernels and finds the caches cold. Their records are kept
 // apart ("warmup_runs"), their images not at all.
-nlohmann::json warm_up(const Plan& plan) {
+// `kept`: the runs results.json already holds (--resume), for the Ctrl-C message.
+nlohmann::json warm_up(const Plan& plan, std::size_t kept) {
+  const std::size_t total =
+      plan.scenes.size() * plan.devices.size() * plan.variants.size() * plan.repeats;
   const fs::path images = fs::path(plan.out_dir) / "images";
   fs::create_directories(images);
   nlohmann::json warmups = nlohmann::json::array();
@@ -184,22 +251,28 @@ nlohmann::json warm_up(const Plan& plan) {
           const std::string image = (images / ("warmup." + plan.format)).string();
           nlohmann::json record = run_once(plan, RunKey{s, d, v, -1 - w}, image);
           fs::remove(image);
+          if (interrupted) throw Interrupted{kept, total};
           record["warmup"] = true;
           std::cerr << "[warm-up] " << plan.scenes[s] << " on " << plan.devices[d].spec << ", "
                     << plan.variants[v].name() << ": "
                     << (record["exit_code"] == 0
                             ? seconds_text(record["process_seconds"].get<double>()) + " s"
-                            : "failed (exit " + record["exit_code"].dump() + ")")
+                            : "failed (exit " + record["exit_code"].dump() +
+                                  "): " + failure_message(record))
                     << ", not counted\n";
           warmups.push_back(record);
         }
   return warmups;
 }
 
-// Runs the whole plan, but for the runs `finished` already holds (--resume); returns every run's
-// record. results.json and runs.csv are rewritten after each run, so that an experiment stopped
-// part-way (Ctrl-C) keeps what it finished.
-nlohmann::json run_plan(const Plan& plan, nlohmann::json finished, const nlohmann::json& warmups) {
+// Runs the whole plan, but for the runs `earlier` already holds (--resume); returns every run's
+// record, each with the number of the session that measured it. results.json and runs.csv are
+// rewritten after each run, so that an experiment stopped part-way (Ctrl-C) keeps what it
+// finished.
+nlohmann::json run_plan(const Plan& plan, const Earlier& earlier, const nlohmann::json& warmups) {
+  const nlohmann::json& finished = earlier.runs;
+  const std::size_t session = earlier.sessions.size() + 1;
+  std::size_t kept = finished.size();
   const fs::path images = fs::path(plan.out_dir) / "images";
   fs::create_directories(images);
   const std::size_t total =
@@ -212,18 +285,23 @@ nlohmann::json run_plan(const Plan& plan, nlohmann::json finished, const nlohman
       for (std::size_t d = 0; d < plan.devices.size(); ++d)
         for (std::size_t v = 0; v < plan.variants.size(); ++v) {
           const RunKey key{s, d, v, repeat};
-          const auto earlier = std::find_if(finished.begin(), finished.end(), [&](const auto& r) {
+          const auto kept_run = std::find_if(finished.begin(), finished.end(), [&](const auto& r) {
             return same_run(r, plan, key);
           });
-          if (earlier != finished.end()) {
-            if (earlier->contains("validation") && !reference.count(s))
-              reference[s] = (*earlier)["validation"]["reference"].get<std::string>();
-            runs.push_back(*earlier);
+          if (kept_run != finished.end()) {
+            if (kept_run->contains("validation") && !reference.count(s))
+              reference[s] = (*kept_run)["validation"]["reference"].get<std::string>();
+            runs.push_back(*kept_run);
             ++done;
             continue;
           }
           const std::string image = (images / image_name(key, plan.format)).string();
           nlohmann::json record = run_once(plan, key, image);
+          if (interrupted) {
+            fs::remove(image);
+            throw Interrupted{kept, total};
+          }
+          record["session"] = session;
           std::cerr << "[" << ++done << "/" << total << "] " << plan.scenes[s] << " on "
                     << plan.devices[d].spec << ", " << plan.variants[v].name() << ": ";
           if (record["exit_code"] != 0) {
@@ -250,8 +328,9 @@ nlohmann::json run_plan(const Plan& plan, nlohmann::json finished, const nlohman
           runs.push_back(record);
           const fs::path out(plan.out_dir);
           write_file(out / "results.json",
-                     results_of(plan, warmups, runs, false).dump(2) + "\n");
+                     results_of(plan, earlier, warmups, runs, false).dump(2) + "\n");
           write_file(out / "runs.csv", runs_csv(runs));
+          kept = runs.size();
         }
   return runs;
 }
@@ -321,6 +400,7 @@ int main(int argc, char** argv) {
                                    ", not '" + name + "'");
     plan.variants = expand_variants(split_list(integrators), split_list(wavefronts),
                                     split_list(local_sizes), extras);
+    refuse_special_outputs(plan.out_dir);
   } catch (const CLI::Error& e) {
     std::cerr << "clrt-experiment: error: " << e.what() << "\n";
     return 2;
@@ -328,16 +408,34 @@ int main(int argc, char** argv) {
   try {
     plan.devices = choose_devices(device_specs);
     plan.load_before = proc_value("/proc/loadavg");
-    nlohmann::json finished = nlohmann::json::array();
+    plan.started = now_text();
+    Earlier earlier;
     try {
-      if (resume) finished = finished_runs(plan);
+      if (resume) earlier = finished_runs(plan);
     } catch (const CLI::Error& e) {
       std::cerr << "clrt-experiment: error: " << e.what() << "\n";
       return 2;
     }
-    const nlohmann::json warmups = warm_up(plan);
-    const nlohmann::json runs = run_plan(plan, finished, warmups);
-    const nlohmann::json results = results_of(plan, warmups, runs, true);
+    struct sigaction action {};
+    action.sa_handler = on_interrupt;  // no SA_RESTART: the wait for a run wakes and goes on
+    sigemptyset(&action.sa_mask);
+    sigaction(SIGINT, &action, nullptr);
+    nlohmann::json warmups, runs;
+    try {
+      warmups = warm_up(plan, earlier.runs.size());
+      runs = run_plan(plan, earlier, warmups);
+    } catch (const Interrupted& stop) {
+      const fs::path results = fs::path(plan.out_dir) / "results.json";
+      std::cerr << "\nclrt-experiment: interrupted: ";
+      if (stop.kept == 0)
+        std::cerr << "no run had finished, nothing kept\n";
+      else
+        std::cerr << stop.kept << " of " << stop.total << " runs kept in " << results.string()
+                  << "; the same command with --resume runs the other "
+                  << stop.total - stop.kept << "\n";
+      return 130;
+    }
+    const nlohmann::json results = results_of(plan, earlier, warmups, runs, true);
     const fs::path out(plan.out_dir);
     write_file(out / "results.json", results.dump(2) + "\n");
     write_file(out / "runs.csv", runs_csv(runs));

@@ -4,7 +4,8 @@
 Every plot shows medians over the repeats with their spread (min-max) as error bars, its axes
 start at 0, and its title names the resolution, samples per pixel and devices.
 
-mrays.png      Mrays/s per scene, one bar per device and variant
+mrays.png      Mrays/s per scene, one bar per device and variant; bars of short renders (their
+               Mrays/s measure start-up as much as tracing) are hatched and faded
 kernels.png    each kernel's share of the device's busy time, per device and variant (all scenes)
 wavefront.png  Mrays/s against the wavefront size, when the experiment swept it
 local-size.png Mrays/s against the local size, when the experiment swept it
@@ -19,6 +20,8 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+from matplotlib.patches import Patch  # noqa: E402
+from matplotlib.transforms import offset_copy  # noqa: E402
 
 
 def label(entry):
@@ -47,9 +50,20 @@ def colour(n):
     return colours[n % len(colours)]
 
 
-def legend_beside(ax):
-    """The legend right of the axes, never over the data."""
-    ax.legend(fontsize="x-small", loc="upper left", bbox_to_anchor=(1.01, 1.0))
+def legend_beside(ax, handles=None):
+    """The legend right of the axes, never over the data, and right of the last x tick label too,
+    which overhangs the axes' edge by half its width. The overhang is in points, so the legend
+    stays clear of it however the layout later sizes the axes."""
+    fig = ax.figure
+    fig.canvas.draw()
+    renderer = fig.canvas.get_renderer()
+    right = max([t.get_window_extent(renderer).x1 for t in ax.get_xticklabels() if t.get_text()]
+                + [ax.bbox.x1])
+    overhang = (right - ax.bbox.x1) * 72.0 / fig.dpi
+    anchor = offset_copy(ax.transAxes, fig=fig, x=overhang + 6, y=0, units="points")
+    kwargs = {"handles": handles} if handles else {}
+    ax.legend(fontsize="x-small", loc="upper left", bbox_to_anchor=(1.0, 1.0),
+              bbox_transform=anchor, **kwargs)
 
 
 def save(fig, out, name):
@@ -58,7 +72,7 @@ def save(fig, out, name):
     plt.close(fig)
 
 
-def plot_mrays(summary, out, title):
+def mrays_figure(summary, title):
     scenes = list(dict.fromkeys(scene_name(s) for s in summary))
     configs = list(dict.fromkeys(label(s) for s in summary))
     entry = {(scene_name(s), label(s)): s for s in summary}
@@ -67,19 +81,29 @@ def plot_mrays(summary, out, title):
     for k, config in enumerate(configs):
         present = [i for i, sc in enumerate(scenes) if (sc, config) in entry]
         bars = [entry[(scenes[i], config)] for i in present]
-        ax.bar([i + k * width for i in present], [s["mrays_per_second"] for s in bars], width,
-               yerr=spread_bars(bars, "mrays_per_second"), capsize=3, label=config,
-               color=colour(k), hatch="//" if k >= 20 else None)
+        drawn = ax.bar([i + k * width for i in present], [s["mrays_per_second"] for s in bars],
+                       width, yerr=spread_bars(bars, "mrays_per_second"), capsize=3, label=config,
+                       color=colour(k), hatch="//" if k >= 20 else None)
+        for bar, s in zip(drawn, bars):
+            if s.get("short", 0) > 0:
+                bar.set_hatch("xx")
+                bar.set_alpha(0.45)
     ax.set_xticks([i + 0.4 - width / 2 for i in range(len(scenes))])
     ax.set_xticklabels(scenes, rotation=45, ha="right", fontsize="small")
     ax.set_ylim(bottom=0)
     ax.set_ylabel("Mrays/s (all ray kinds, render time)")
     titled(ax, "Throughput per scene, device and variant", title)
-    legend_beside(ax)
-    save(fig, out, "mrays.png")
+    # Swatches of their own: a series' first bar may be a short one, hatched and faded.
+    handles = [Patch(facecolor=colour(k), hatch="//" if k >= 20 else None, label=config)
+               for k, config in enumerate(configs)]
+    if any(s.get("short", 0) > 0 for s in summary):
+        handles.append(Patch(facecolor="lightgrey", hatch="xx", alpha=0.45,
+                             label="short render: start-up as much as tracing"))
+    legend_beside(ax, handles)
+    return fig
 
 
-def plot_kernels(summary, out, title):
+def kernels_figure(summary, title):
     seconds = defaultdict(lambda: defaultdict(float))
     for s in summary:
         for kernel, t in s["kernels"].items():
@@ -101,7 +125,7 @@ def plot_kernels(summary, out, title):
     ax.set_xlabel("% of the device's busy time (medians, summed over scenes)")
     titled(ax, "Where the device time goes", title)
     legend_beside(ax)
-    save(fig, out, "kernels.png")
+    return fig
 
 
 def plot_sweep(summary, out, key, axis_label, what, title, name):
@@ -142,8 +166,8 @@ def main():
     if not summary:
         sys.exit("plot_experiment.py: no successful run to plot")
     title = results["title"]
-    plot_mrays(summary, sys.argv[2], title)
-    plot_kernels(summary, sys.argv[2], title)
+    save(mrays_figure(summary, title), sys.argv[2], "mrays.png")
+    save(kernels_figure(summary, title), sys.argv[2], "kernels.png")
     plot_sweep(summary, sys.argv[2], "wavefront", "wavefront (rays per queue)",
                "Wavefront size sweep", title, "wavefront.png")
     plot_sweep(summary, sys.argv[2], "local_size", "local size (work-items per work-group)",

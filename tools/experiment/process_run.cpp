@@ -6,6 +6,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cerrno>
 #include <chrono>
 #include <cstring>
 
@@ -21,7 +22,12 @@ void drain(int out_fd, int err_fd, std::string& out, std::string& err) {
   int open = 2;
   char buffer[8192];
   while (open > 0) {
-    if (poll(fds, 2, -1) < 0) break;
+    // A signal (Ctrl-C, which clrt-experiment notes and acts on between runs) interrupts the
+    // wait, not the child: keep reading.
+    if (poll(fds, 2, -1) < 0) {
+      if (errno == EINTR) continue;
+      break;
+    }
     for (int k = 0; k < 2; ++k) {
       if (fds[k].fd < 0 || !(fds[k].revents & (POLLIN | POLLHUP | POLLERR))) continue;
       const ssize_t n = read(fds[k].fd, buffer, sizeof buffer);
@@ -77,7 +83,8 @@ ProcessResult run_process(const std::vector<std::string>& args,
   drain(out_pipe[0], err_pipe[0], result.out, result.err);
   int status = 0;
   struct rusage usage {};
-  wait4(pid, &status, 0, &usage);
+  while (wait4(pid, &status, 0, &usage) < 0 && errno == EINTR) {
+  }
   result.wall_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);

@@ -66,6 +66,34 @@ std::string cell(const nlohmann::json& summary, const char* name, int digits, do
   return with_spread(summary, summary[name], summary["spread"][name], digits, scale);
 }
 
+std::string load_text(const nlohmann::json& session, const char* field) {
+  const double load = one_minute_load(session.value(field, ""));
+  return load < 0 ? std::string("?") : fixed(load, 2);
+}
+
+// Each session with its dates, load and runs; a warning under it for each busy one.
+std::string sessions_section(const nlohmann::json& sessions) {
+  std::ostringstream out, warnings;
+  out << "The machine's 1-minute load average before and after each session (a resumed experiment "
+         "has one per command):\n\n| session | started | ended | hardware threads | load before "
+         "| load after | runs |\n|---:|---|---|---:|---:|---:|---:|\n";
+  for (std::size_t n = 0; n < sessions.size(); ++n) {
+    const nlohmann::json& s = sessions[n];
+    const std::string started = s["started"].is_string() ? s["started"].get<std::string>() : "?";
+    out << "| " << n + 1 << " | " << started << " | " << s.value("ended", "?") << " | "
+        << s.value("hardware_threads", 0) << " | " << load_text(s, "load_average_before") << " | "
+        << load_text(s, "load_average_after") << " | " << s.value("runs", 0) << " |\n";
+    if (busy_session(s))
+      warnings << "\n**Warning: a busy machine.** In session " << n + 1 << " the load average was "
+               << load_text(s, "load_average_before") << " before and "
+               << load_text(s, "load_average_after") << " after, on " << s["hardware_threads"]
+               << " hardware threads: other work shared the cores with its runs, so their times "
+                  "and spreads measure that work as much as clrt. Measure again on an idle "
+                  "machine before trusting a difference.\n";
+  }
+  return out.str() + warnings.str();
+}
+
 std::string scene_name(const std::string& path) {
   return std::filesystem::path(path).filename().string();
 }
@@ -84,6 +112,19 @@ bool short_render(const nlohmann::json& run) {
   const double render = run["seconds"]["render"].get<double>();
   const double command = run["process_seconds"].get<double>();
   return render < kShortRenderSeconds || render < kShortRenderShare * command;
+}
+
+double one_minute_load(const std::string& loadavg) {
+  std::istringstream in(loadavg);
+  double load = -1;
+  return in >> load ? load : -1;
+}
+
+bool busy_session(const nlohmann::json& session) {
+  const double threads = session.value("hardware_threads", 0.0);
+  if (threads <= 0) return false;
+  return one_minute_load(session.value("load_average_before", "")) >= kBusyLoadBefore * threads ||
+         one_minute_load(session.value("load_average_after", "")) > kBusyLoadAfter * threads;
 }
 
 nlohmann::json summarize(const nlohmann::json& runs) {
@@ -267,9 +308,13 @@ std::string runs_csv(const nlohmann::json& runs) {
 std::string markdown_report(const nlohmann::json& results) {
   const nlohmann::json& summary = results["summary"];
   std::ostringstream out;
-  out << "# " << results["title"].get<std::string>() << "\n\nMedians over "
-      << results["settings"]["repeats"] << " repeats, their spread (min-max) in parentheses; "
-      << results["clrt"].get<std::string>() << ".\n\n";
+  const int repeats = results["settings"]["repeats"];
+  out << "# " << results["title"].get<std::string>() << "\n\n"
+      << (repeats == 1 ? std::string("One run of each configuration (--repeats 1: no spread)")
+                       : "Medians over " + std::to_string(repeats) +
+                             " repeats, their spread (min-max) in parentheses")
+      << "; " << results["clrt"].get<std::string>() << ".\n\n";
+  if (results.contains("sessions")) out << sessions_section(results["sessions"]) << "\n";
   out << "| scene | device | variant | Mrays/s | Msamples/s | render s | command s | device busy "
          "| peak MiB | runs | flagged |\n|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|\n";
   for (const nlohmann::json& s : summary)

@@ -13,6 +13,17 @@ constexpr double kShortRenderSeconds = 0.2;
 constexpr double kShortRenderShare = 0.5;
 bool short_render(const nlohmann::json& run);
 
+// A session (one command of an experiment; --resume starts another) on a busy machine: a 1-minute
+// load average before its runs of at least kBusyLoadBefore x the hardware threads (other work
+// held that share of the machine), or after them above kBusyLoadAfter x the hardware threads
+// (more than the experiment's own clrt, which keeps every hardware thread busy, makes).
+constexpr double kBusyLoadBefore = 0.5;
+constexpr double kBusyLoadAfter = 1.5;
+bool busy_session(const nlohmann::json& session);
+
+// The 1-minute load average of a /proc/loadavg line ("5.65 3.10 2.00 3/400 1234"), or -1.
+double one_minute_load(const std::string& loadavg);
+
 // One entry per (scene, device, variant) that ran, in run order: the medians over its repeats
 // of Mrays/s, Msamples/s, render and process seconds, device busy share, peak MiB, and of each
 // kernel's device seconds, with their [min, max] in "spread" and "kernel_spread"; "runs",
@@ -36,7 +47,8 @@ std::string experiment_title(const nlohmann::json& results);
 // Every run, one line each, with a header line.
 std::string runs_csv(const nlohmann::json& runs);
 
-// The summary, the per-kernel breakdown, the scores and the flagged runs as Markdown tables.
+// The sessions with their load (and a warning for a busy one), the summary, the per-kernel
+// breakdown, the scores and the flagged runs as Markdown tables.
 std::string markdown_report(const nlohmann::json& results);
 
 }  // namespace clrt::experiment

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <fstream>
 #include <iterator>
+#include <sstream>
 
 #include "image/compare.hpp"
 #include "process_run.hpp"
@@ -56,10 +57,13 @@ nlohmann::json run_once(const Plan& plan, const RunKey& key, const std::string& 
 }
 
 std::string failure_message(const nlohmann::json& run) {
-  std::string error = run.value("error", "");
-  while (!error.empty() && error.back() == '\n') error.pop_back();
-  const std::size_t start = error.rfind('\n');
-  return start == std::string::npos ? error : error.substr(start + 1);
+  std::istringstream error(run.value("error", ""));
+  std::string last;
+  for (std::string line; std::getline(error, line);) {
+    if (line.find("error:") != std::string::npos) return line;
+    if (!line.empty()) last = line;
+  }
+  return last;
 }
 
 nlohmann::json validate(const std::string& reference, const std::string& image) {

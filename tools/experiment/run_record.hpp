@@ -19,8 +19,9 @@ struct RunKey {
 // when it failed, "error" with clrt's message.
 nlohmann::json run_once(const Plan& plan, const RunKey& key, const std::string& image);
 
-// What a failed run's record says went wrong: clrt's own message, the last line it wrote to
-// standard error (the one that names the fault; earlier lines are the device and progress).
+// What a failed run's record says went wrong: clrt's own message, the first line it wrote to
+// standard error with "error:" in it (the one that names the fault: earlier lines are the device
+// and progress, later ones hints such as "Run 'clrt --help' for usage."), else its last line.
 std::string failure_message(const nlohmann::json& run);
 
 // How `image` compares with `reference`: "identical" (the same bytes) or else the PSNR, the

@@ -3,8 +3,10 @@
 // a variant that changes the picture is flagged with its PSNR; a wavefront sweep draws its plot.
 #include <catch2/catch.hpp>
 
+#include <fcntl.h>
 #include <signal.h>
 #include <spawn.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 
 #include <algorithm>
@@ -20,6 +22,7 @@
 #include "image/image.hpp"
 #include "process_run.hpp"
 #include "rank_test.hpp"
+#include "report.hpp"
 #include "scratch_dir.hpp"
 
 using namespace clrt;
@@ -204,8 +207,14 @@ TEST_CASE("an experiment stopped part-way keeps its finished runs, and --resume 
   std::vector<char*> argv;
   for (std::string& arg : args) argv.push_back(arg.data());
   argv.push_back(nullptr);
+  const std::string err = dir.file("stderr.txt");
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, err.c_str(),
+                                   O_WRONLY | O_CREAT | O_TRUNC, 0644);
   pid_t pid = -1;
-  REQUIRE(posix_spawn(&pid, CLRT_EXPERIMENT, nullptr, nullptr, argv.data(), environ) == 0);
+  REQUIRE(posix_spawn(&pid, CLRT_EXPERIMENT, &actions, nullptr, argv.data(), environ) == 0);
+  posix_spawn_file_actions_destroy(&actions);
   // Interrupted (as Ctrl-C does) once its first run is written down.
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
   while (!std::filesystem::exists(dir.file("results.json")) &&
@@ -219,6 +228,13 @@ TEST_CASE("an experiment stopped part-way keeps its finished runs, and --resume 
   const std::size_t kept = part["runs"].size();
   CHECK(kept >= 1);
   CHECK(kept < 30);
+  // It says what it kept and how to go on, and exits as a program stopped by Ctrl-C does.
+  CHECK(WIFEXITED(status));
+  CHECK(WEXITSTATUS(status) == 130);
+  CHECK(text_of(err).find("\nclrt-experiment: interrupted: " + std::to_string(kept) +
+                          " of 30 runs kept in " + dir.file("results.json") +
+                          "; the same command with --resume runs the other " +
+                          std::to_string(30 - kept) + "\n") != std::string::npos);
 
   const ProcessResult resumed =
       run_experiment({args[1], "--repeats", "30", "--resolution", "8x8", "--out",
@@ -230,6 +246,25 @@ TEST_CASE("an experiment stopped part-way keeps its finished runs, and --resume 
   REQUIRE(whole["runs"].size() == 30);
   for (std::size_t i = 0; i < kept; ++i) CHECK(whole["runs"][i] == part["runs"][i]);
   for (const nlohmann::json& run : whole["runs"]) CHECK(run["validation"]["flagged"] == false);
+  // Two sessions, each with its date, load and runs, and each run with the session that measured it.
+  const nlohmann::json& sessions = whole["sessions"];
+  REQUIRE(sessions.size() == 2);
+  CHECK(sessions[0] == part["sessions"][0]);
+  CHECK(sessions[0]["runs"] == kept);
+  CHECK(sessions[1]["runs"] == 30 - kept);
+  for (const nlohmann::json& session : sessions) {
+    CHECK(session["started"].get<std::string>().size() == 20);
+    CHECK(session["ended"].get<std::string>() >= session["started"].get<std::string>());
+    CHECK(one_minute_load(session["load_average_before"]) >= 0);
+    CHECK(one_minute_load(session["load_average_after"]) >= 0);
+  }
+  CHECK(whole["runs"][0]["session"] == 1);
+  CHECK(whole["runs"][29]["session"] == 2);
+  const std::string report = text_of(dir.file("report.md"));
+  CHECK(report.find("\n| 1 | " + sessions[0]["started"].get<std::string>() + " | ") !=
+        std::string::npos);
+  CHECK(report.find("\n| 2 | " + sessions[1]["started"].get<std::string>() + " | ") !=
+        std::string::npos);
 
   // Other settings are another experiment: refused, the results left as they are.
   const ProcessResult other = run_experiment({args[1], "--repeats", "31", "--resolution", "8x8",
@@ -286,6 +321,103 @@ TEST_CASE("a failed run shows clrt's own message on the terminal and in the repo
   const std::string message = bad + ":2:1: error: unknown command 'frobnicate'";
   CHECK(r.err.find("failed (exit 2): " + message + "\n") != std::string::npos);
   CHECK(text_of(dir.file("report.md")).find("(exit 2): " + message + "\n") != std::string::npos);
+}
+
+TEST_CASE("a run clrt refuses shows clrt's error line, not its usage hint", "[experiment]") {
+  test::ScratchDir dir;
+  const ProcessResult r =
+      run_experiment({source_file("tests/render/scenes/test2.ray"), "--repeats", "1",
+                      "--resolution", "8x8", "--variant", "frob=--frob", "--out",
+                      dir.path().string(), "--no-plots"});
+  INFO(r.out << r.err);
+  CHECK(r.exit_code == 1);
+  const std::string message = "failed (exit 2): clrt: error: unknown option --frob\n";
+  CHECK(r.err.find("[warm-up] ") != std::string::npos);
+  CHECK(r.err.find("wavefront frob: " + message) != std::string::npos);  // the run that counts
+  CHECK(r.err.find("Run 'clrt --help'") == std::string::npos);
+  CHECK(text_of(dir.file("report.md")).find("(exit 2): clrt: error: unknown option --frob\n") !=
+        std::string::npos);
+}
+
+TEST_CASE("a FIFO or folder in the place of an output is refused at once, and left as it is",
+          "[experiment][resume]") {
+  for (const char* name : {"results.json", "report.md"}) {
+    for (const bool resume : {true, false}) {
+      test::ScratchDir dir;
+      const std::string path = dir.file(name);
+      REQUIRE(mkfifo(path.c_str(), 0644) == 0);
+      std::vector<std::string> args = {source_file("tests/render/scenes/test2.ray"),
+                                       "--repeats", "1", "--resolution", "8x8", "--out",
+                                       dir.path().string(), "--no-plots"};
+      if (resume) args.push_back("--resume");
+      INFO(name << (resume ? " --resume" : ""));
+      const ProcessResult r = run_experiment(args);  // blocked on the FIFO, it would never return
+      CHECK(r.exit_code == 2);
+      CHECK(r.err == "clrt-experiment: error: " + path +
+                         " is not a regular file; clrt-experiment writes only regular files "
+                         "(remove it, or choose another --out)\n");
+      CHECK(std::filesystem::is_fifo(path));
+      CHECK_FALSE(std::filesystem::exists(dir.file("images")));
+    }
+  }
+}
+
+namespace {
+
+// A report's results without runs: only the settings and sessions the tests vary.
+nlohmann::json results_with(int repeats, const nlohmann::json& sessions) {
+  return {{"title", "8x8, 1 spp, on 0:0 PoCL"}, {"clrt", "clrt 0"},
+          {"settings", {{"repeats", repeats}}}, {"sessions", sessions},
+          {"summary", nlohmann::json::array()}, {"scores", nlohmann::json::object()},
+          {"runs", nlohmann::json::array()}, {"comparisons", nlohmann::json::array()},
+          {"warmup_runs", nlohmann::json::array()}};
+}
+
+nlohmann::json session(const std::string& before, const std::string& after, int threads) {
+  return {{"started", "2026-12-07T10:00:00Z"}, {"ended", "2026-12-07T10:05:00Z"},
+          {"hardware_threads", threads}, {"load_average_before", before},
+          {"load_average_after", after}, {"runs", 4}};
+}
+
+}  // namespace
+
+TEST_CASE("the report gives each session's load, and warns of a busy machine",
+          "[experiment][report]") {
+  const std::string idle = markdown_report(
+      results_with(3, nlohmann::json::array(
+                         {session("0.40 0.30 0.20 1/300 99", "2.10 1.00 0.50 1/300 99", 2)})));
+  CHECK(idle.find("\n| 1 | 2026-12-07T10:00:00Z | 2026-12-07T10:05:00Z | 2 | 0.40 | 2.10 | 4 |\n") !=
+        std::string::npos);
+  CHECK(idle.find("Warning") == std::string::npos);
+
+  // Other work before the runs (half the threads or more), or more after them than clrt makes.
+  const std::string busy = markdown_report(
+      results_with(3, nlohmann::json::array(
+                         {session("0.40 0.30 0.20 1/300 99", "2.10 1.00 0.50 1/300 99", 2),
+                       session("5.65 3.00 2.00 1/300 99", "7.77 4.00 2.00 1/300 99", 2),
+                       session("0.50 0.30 0.20 1/300 99", "3.01 1.00 0.50 1/300 99", 2)})));
+  CHECK(busy.find("\n| 2 | 2026-12-07T10:00:00Z | 2026-12-07T10:05:00Z | 2 | 5.65 | 7.77 | 4 |\n") !=
+        std::string::npos);
+  CHECK(busy.find("In session 1 ") == std::string::npos);
+  CHECK(busy.find("**Warning: a busy machine.** In session 2 the load average was 5.65 before "
+                  "and 7.77 after, on 2 hardware threads") != std::string::npos);
+  CHECK(busy.find("In session 3 the load average was 0.50 before and 3.01 after") !=
+        std::string::npos);
+  CHECK(busy_session(session("0.99", "1.00", 2)) == false);
+  CHECK(busy_session(session("1.00", "1.00", 2)) == true);
+  CHECK(busy_session(session("0.10", "3.00", 2)) == false);
+  CHECK(busy_session(session("0.10", "3.01", 2)) == true);
+}
+
+TEST_CASE("a report of one repeat says so", "[experiment][report]") {
+  const nlohmann::json sessions = nlohmann::json::array({session("0.1", "0.1", 2)});
+  CHECK(markdown_report(results_with(1, sessions)).find("\n\nOne run of each configuration "
+                                                        "(--repeats 1: no spread); clrt 0.\n") !=
+        std::string::npos);
+  CHECK(markdown_report(results_with(1, sessions)).find("over 1 repeat") == std::string::npos);
+  CHECK(markdown_report(results_with(2, sessions)).find("\n\nMedians over 2 repeats, their spread "
+                                                        "(min-max) in parentheses; clrt 0.\n") !=
+        std::string::npos);
 }
 
 TEST_CASE("a copied build tree runs its own clrt and plot script", "[experiment]") {

@@ -48,5 +48,49 @@ class PlotExperiment(unittest.TestCase):
         self.plots([entry(f"0:{n}", "wavefront", 64, 16384, 1.0 + n) for n in range(24)])
 
 
+def drawn(fig):
+    """The figure laid out as it is saved, for its artists' places."""
+    fig.tight_layout()
+    fig.canvas.draw()
+    return fig.canvas.get_renderer()
+
+
+class PlotLayout(unittest.TestCase):
+    def setUp(self):
+        sys.path.insert(0, HERE)
+        import plot_experiment
+        self.plot = plot_experiment
+
+    def test_short_renders_are_marked(self):
+        short = entry("0:0", "wavefront", 64, 16384, 3.0)
+        short["short"] = 2
+        other = entry("0:0", "megakernel", 64, 16384, 4.0)
+        other["scene"] = short["scene"]
+        fig = self.plot.mrays_figure([short, other], "8x8, 1 spp, on 0:0 PoCL")
+        ax = fig.axes[0]
+        bars = [p for p in ax.patches if p.get_height() > 0]
+        hatched = [p for p in bars if p.get_hatch() == "xx"]
+        self.assertEqual([p.get_height() for p in hatched], [3.0])
+        labels = [t.get_text() for t in ax.get_legend().get_texts()]
+        self.assertEqual(labels[:2], ["0:0 wavefront", "0:0 megakernel"])
+        self.assertTrue(labels[2].startswith("short render"))
+        # Without a short render, no mark and no legend entry for one.
+        fig = self.plot.mrays_figure([other], "8x8, 1 spp, on 0:0 PoCL")
+        self.assertFalse(any(p.get_hatch() == "xx" for p in fig.axes[0].patches))
+        self.assertEqual(len(fig.axes[0].get_legend().get_texts()), 1)
+
+    def test_the_kernels_legend_covers_no_tick_label(self):
+        one = entry("0:0", "wavefront", 64, 16384, 3.0)
+        one["kernels"] = {f"kernel_with_a_long_name_{n}": 0.1 * (n + 1) for n in range(12)}
+        fig = self.plot.kernels_figure([one], "8x8, 1 spp, on 0:0 PoCL")
+        renderer = drawn(fig)
+        ax = fig.axes[0]
+        legend = ax.get_legend().get_window_extent(renderer)
+        for tick in ax.get_xticklabels() + ax.get_yticklabels():
+            if tick.get_text():
+                self.assertFalse(legend.overlaps(tick.get_window_extent(renderer)),
+                                 tick.get_text())
+
+
 if __name__ == "__main__":
     unittest.main()
