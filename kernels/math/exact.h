@@ -22,10 +22,32 @@ CLRT_INLINE float3 cross3(float3 a, float3 b) {
   return (float3)(a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x);
 }
 
-CLRT_INLINE float length3(float3 v) { return sqrt(dot3(v, v)); }
+/* Whether v's squared length s = dot3(v, v) is a normal float, as it is for every vector whose
+ * largest component lies between about 1e-19 and 1e19. Beyond that the squares overflow to
+ * infinity (a triangle's normal at coordinates of 1e10 is 1e20 long) or lose their digits in
+ * the subnormals, and the length is taken from v over its largest component instead. */
+CLRT_INLINE bool squares_in_range(float s) { return s >= 1.17549435e-38f && s <= 3.40282347e38f; }
 
-/* v / |v|; a zero vector gives NaNs, as no direction. */
-CLRT_INLINE float3 normalize3(float3 v) { return v / length3(v); }
+CLRT_INLINE float largest_magnitude(float3 v) { return fmax(fabs(v.x), fmax(fabs(v.y), fabs(v.z))); }
+
+/* |v|: sqrt(dot3(v, v)) where the squares stay in range, and |v / m| m for v's largest component
+ * m elsewhere (within 2 ulp; infinity only where |v| itself exceeds the floats). */
+CLRT_INLINE float length3(float3 v) {
+  const float s = dot3(v, v);
+  if (squares_in_range(s)) return sqrt(s);
+  const float m = largest_magnitude(v);
+  if (!(m > 0.0f)) return m; /* 0, or NaN */
+  const float3 w = v / m;
+  return sqrt(dot3(w, w)) * m;
+}
+
+/* v / |v|, the squares kept in range as in length3; a zero vector gives NaNs, as no direction. */
+CLRT_INLINE float3 normalize3(float3 v) {
+  const float s = dot3(v, v);
+  if (squares_in_range(s)) return v / sqrt(s);
+  const float3 w = v / largest_magnitude(v);
+  return w / sqrt(dot3(w, w));
+}
 
 /* log2((1 + s) / (1 - s)) = 2 atanh(s) / ln 2 for |s| < 0.172, as its odd series in s, exact
  * to float in 6 terms there. */

@@ -132,3 +132,33 @@ TEST_CASE("exact.h's vector functions give IEEE 754's bits, in their stated orde
   CHECK(worst_exp <= 2.0);
   CHECK(worst_atan <= 2.0);
 }
+
+TEST_CASE("length3 and normalize3 keep vectors whose squares leave the float range",
+          "[kernels][exact-math]") {
+  // A triangle's normal at corners of 1e10 is 1e20 long, its square 1e40 beyond the floats; the
+  // squares of components under 1e-19 lose their digits or vanish. Largest component 2^k, k
+  // over both ends of the range, the others smaller.
+  std::vector<dev::f4> a;
+  for (int k = -140; k <= 127; k += 3)
+    for (const dev::f4 shape : {dev::f4{1, 0, 0, 0}, dev::f4{-0.3f, 1, 0.7f, 0}, dev::f4{0.5f, -0.25f, -1, 0},
+                                dev::f4{1, 1, 1, 0}})
+      a.push_back({std::ldexp(shape.x, k), std::ldexp(shape.y, k), std::ldexp(shape.z, k), 1});
+  const std::size_t count = a.size();
+  const Global<dev::f4> out = allocate<dev::f4>(4 * count);
+  run(test_program(kKernels), VectorMathArgs{upload(a), upload(a), static_cast<cl_uint>(count), out}, count);
+  const std::vector<dev::f4> got = download(out, 4 * count);
+  for (std::size_t i = 0; i < count; ++i) {
+    const double x = a[i].x, y = a[i].y, z = a[i].z;
+    const double length = std::sqrt(x * x + y * y + z * z);
+    INFO("(" << x << ", " << y << ", " << z << ")");
+    if (length > std::numeric_limits<float>::max()) {
+      CHECK(std::isinf(got[4 * i].y));  // the length itself exceeds the floats
+    } else {
+      CHECK(ulps(got[4 * i].y, length) <= 2.0);
+    }
+    const dev::f4 n = got[4 * i + 2];
+    CHECK(ulps(n.x, x / length) <= 2.0);
+    CHECK(ulps(n.y, y / length) <= 2.0);
+    CHECK(ulps(n.z, z / length) <= 2.0);
+  }
+}

@@ -165,9 +165,9 @@ struct GlowTable {
   cl_uint glow = 0;
 };
 
-GlowTable glow_table(const Scene& scene) {
+GlowTable glow_table(const Scene& scene, std::size_t rows = 3) {  // the sphere and the two triangles
   const GeometryData geometry = build_geometry(scene);
-  REQUIRE(geometry.emitters.size() == 3);  // the sphere and the two triangles
+  REQUIRE(geometry.emitters.size() == rows);
   RenderOptions options = RenderOptions::from_scene(scene);
   options.mode = RenderMode::Path;
   const FrameData frame = make_frame(scene, geometry, options);
@@ -296,5 +296,57 @@ TEST_CASE("the glow light brings nothing from a surface's back or from inside a 
     CHECK(expected > 0.05);
     CHECK(expected < 0.99);
     CHECK(std::fabs(static_cast<double>(dark) - expected * count) <= 5 * std::sqrt(count * expected * (1 - expected)));
+  }
+}
+
+TEST_CASE("the glow light draws finite samples from a sphere of radius 1e-8 and a triangle at 1e10",
+          "[kernels][path][lights]") {
+  // The sphere is far smaller than the floats' spacing around the shading point, so the sampled
+  // point is rounded by more than the radius; the triangle's normal (1e20 long) has a square
+  // beyond the floats. Both used to give NaN or a zero-length normal.
+  struct Case {
+    const char* what;
+    V3 p, centre;  // the shading point, and the surface's centre
+    double radius;
+    GlowTriangle triangle;
+  };
+  const GlowTriangle none{};
+  const GlowTriangle far{{-1e10, -1e10, 3e10}, {0, 1e10, 3e10}, {1e10, -1e10, 3e10}, {1, 1, 1}};
+  for (const Case& c : {Case{"a sphere of radius 1e-8", {0.1, 0.2, 0}, {0.2, -0.1, 1.5}, 1e-8, none},
+                        Case{"a triangle at 1e10", {1e9, 0, 0}, (1.0 / 3) * (far.a + far.b + far.c), 0, far}}) {
+    INFO(c.what);
+    Scene scene;
+    scene.materials.resize(2);
+    scene.materials[1].emission = {1, 1, 1};
+    if (c.radius > 0)
+      scene.instances.push_back(place_instance(
+          ShapeKind::Sphere, Mat4::translate(vec(c.centre)) * Mat4::scale({c.radius, c.radius, c.radius}), 1));
+    else
+      scene.triangles.push_back({vec(c.triangle.a), vec(c.triangle.b), vec(c.triangle.c), 1});
+    const GlowTable table = glow_table(scene, 1);
+    const std::size_t count = 4000;
+    const Draws d = draw(table, c.p, count);
+    const V3 towards = c.centre - c.p;
+    const double dist = norm(towards);
+    for (std::size_t i = 0; i < count; ++i) {
+      const V3 w = of(d.directions[i]);
+      INFO("sample " << i);
+      REQUIRE(std::isfinite(d.densities[i].x));
+      REQUIRE(std::isfinite(d.densities[i].y));
+      REQUIRE(d.densities[i].z > 0);
+      if (c.radius > 0) {
+        // Every sample is the sphere's point, seen in the cone of the sphere's (1e-8) radius.
+        CHECK(dot(w, unit(towards)) == Approx(1).epsilon(1e-6));
+        CHECK(d.directions[i].w == Approx(dist).margin(2e-4));  // aimed 1e-4 in front of it
+        // The only emitter: the sample's density is one over the cone's solid angle.
+        const double solid_angle = kPi * c.radius * c.radius / (dist * dist);
+        CHECK(d.densities[i].x == Approx(1 / solid_angle).epsilon(1e-3));
+      } else {
+        const std::optional<Meeting> m = meet_triangle(c.triangle, c.p, unit(w));
+        REQUIRE(m);
+        CHECK(d.densities[i].x == Approx(m->density).epsilon(1e-3));
+        CHECK(d.densities[i].y == Approx(1 / m->density).epsilon(1e-3));
+      }
+    }
   }
 }

@@ -56,6 +56,16 @@ CLRT_INLINE LightSample glow_nothing(float3 p) {
   return s;
 }
 
+/* The unit normal at a sphere's sampled point, offset from the centre by `outward`, which
+ * the direction w from the shading point reached. A sphere smaller than the floats' spacing
+ * around the point (a radius of 1e-8 seen from 1 unit away) has its point rounded by more than
+ * its radius, and `outward` (zero, or a few radii in any direction) names no side of it: there
+ * the side that faces the shading point, -w, stands in. */
+CLRT_INLINE float3 glow_sphere_normal(float3 outward, float r, float3 w) {
+  const float off = length3(outward);
+  return off > 0.5f * r && off < 2.0f * r ? outward / off : -w;
+}
+
 CLRT_INLINE LightSample glow_sphere_sample(__global const Light* light, __global const Emitter* e,
                                            float3 p, float2 u) {
   const float3 c = xyz(e->origin);
@@ -70,7 +80,7 @@ CLRT_INLINE LightSample glow_sphere_sample(__global const Light* light, __global
   /* The near one of the two points where the direction meets the sphere. */
   const float along = dist * cos_theta - sqrt(fmax(0.0f, r * r - dist * dist * (sin_theta * sin_theta)));
   const float3 x = p + along * w;
-  LightSample s = sample_at_point(glow_shadow_target(x, normalize3(x - c)), xyz(e->radiance), p);
+  LightSample s = sample_at_point(glow_shadow_target(x, glow_sphere_normal(x - c, r, w)), xyz(e->radiance), p);
   s.density = glow_sphere_density(glow_area_share(light, xyz(e->radiance)), r, dist);
   s.geometry = 1.0f / s.density;
   return s;
