@@ -120,7 +120,17 @@ int main(int argc, char** argv) {
   CLI::App app{"Show the images clrt writes (FSF animations, PNG, PPM, PFM, OpenEXR), compare two, "
                "or watch a render fill in (clrt --preview).",
                "clrt-view"};
-  clrt::identify_tool(app, {"docs/viewer.md", {}});
+  clrt::identify_tool(
+      app, {"docs/viewer.md",
+            {},
+            {{"0", "the window was closed (or q), or --help or --version"},
+             {"1", "an image that cannot be read, two images of different sizes, images the memory "
+                   "cannot hold, or no window (no display)"},
+             {"2", "a usage error"}},
+            {{"clrt-view c.exr", "a render's radiance through sRGB, as clrt's PNG of it shows it"},
+             {"clrt-view turn.fsf --fps 12", "play an animation"},
+             {"clrt-view a.pfm b.pfm --difference", "compare two images: Tab flips, d shows the difference"},
+             {"clrt scenes/reflect.ray --preview", "watch a render fill in"}}});
   ViewOptions options;
   add_options(app, options);
   if (const auto status = clrt::parse_tool_arguments(app, argc, argv)) return *status;
