@@ -30,10 +30,11 @@ std::string documentation_folder() {
   std::error_code error;
   const fs::path self = fs::canonical("/proc/self/exe", error);
   if (!error) {
-    if (lies_in(self, CLRT_BUILD_TREE) && holds_docs(CLRT_SOURCE_TREE))
-      return fs::canonical(CLRT_SOURCE_TREE, error).string();
+    // Installed documentation first: an install may lie inside the build tree (its own check's).
     const fs::path beside = (self.parent_path() / CLRT_DOC_DIR_FROM_BIN_DIR).lexically_normal();
     if (holds_docs(beside)) return beside.string();
+    if (lies_in(self, CLRT_BUILD_TREE) && holds_docs(CLRT_SOURCE_TREE))
+      return fs::canonical(CLRT_SOURCE_TREE, error).string();
   }
   return installed_documentation_folder();
 }

@@ -8,9 +8,9 @@
 namespace clrt::cli_docs {
 
 // The folder holding README.md and docs/ for the running executable, decided from its own
-// location (/proc/self/exe): the source tree when the executable lies in the build tree; else
-// the documentation folder at the same place relative to it as the install's (bin/ ->
-// share/doc/clrt), when it holds README.md; else the configured one (CMAKE_INSTALL_FULL_DOCDIR).
+// location (/proc/self/exe): the documentation folder at the same place relative to it as the
+// install's (bin/ -> share/doc/clrt), when it holds README.md and docs/; else the source tree when
+// the executable lies in the build tree; else the configured one (CMAKE_INSTALL_FULL_DOCDIR).
 std::string documentation_folder();
 
 // The configured install's documentation folder: what an installed man page names.
