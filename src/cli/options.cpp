@@ -145,6 +145,24 @@ void add_device_options(CLI::App& app, CliOptions& o) {
 
 }  // namespace
 
+ToolManual clrt_manual() {
+  return {"docs/cli.md",
+          {},
+          {{"0", "the image was written (or, with --no-write, rendered), or --help or --version"},
+           {"1", "a failure at run time: no OpenCL device, a kernel that does not build, memory the "
+                 "device or the machine does not have, a write that fails"},
+           {"2", "a usage or scene error (FILE:LINE:COLUMN: error: ...), or an output that cannot be "
+                 "written where it is named, found before any work"},
+           {"128 + N", "ended by signal N: 130 for SIGINT (Ctrl-C), 143 for SIGTERM; no temporary or "
+                       "partial output is left"}},
+          {{"clrt scenes/reflect.ray -o reflect.png", "render one image; the extension chooses the "
+                                                      "format (.png .ppm .fsf .pfm .exr)"},
+           {"clrt scenes/cornell.ray --mode path --spp 256 -o c.png", "path tracing: indirect light"},
+           {"clrt --frames 24 --orbit 90 scenes/reflect.ray -o turn.fsf", "a turntable animation"},
+           {"clrt scenes/reflect.ray --preview", "watch the render fill in, in clrt-view"},
+           {"clrt --list-devices", "the OpenCL devices, as P:D for --device"}}};
+}
+
 ParseResult parse_command_line(int argc, char** argv) {
   return parse_arguments({argv + 1, argv + argc}, true);
 }
@@ -153,7 +171,9 @@ std::unique_ptr<CLI::App> clrt_command_line(CliOptions& o, StatsRequest& stats,
                                             const ProgramOptions& program) {
   auto app = std::make_unique<CLI::App>(
       program.name + ": a wavefront OpenCL ray tracer for .ray and .nff scenes", program.name);
-  identify_tool(*app, {program.manual, {"ray", "RAY", "nff", "NFF"}});
+  ToolManual manual = program.manual;
+  manual.positional_extensions = {"ray", "RAY", "nff", "NFF"};
+  identify_tool(*app, manual);
   app->add_option("scene", o.scene, "the .ray or .nff scene to render");
   // --help lists the options in groups, in the order a render is set up.
   using AddOptions = void (*)(CLI::App&, CliOptions&);

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "cli/animation_options.hpp"
+#include "cli/docs/tool_manual.hpp"
 #include "cli/region_options.hpp"
 #include "image/image.hpp"
 #include "render/render_options.hpp"
@@ -57,6 +58,9 @@ struct ParseResult {
   std::optional<int> exit_code;
 };
 
+// clrt's: docs/cli.md, its exit statuses and examples.
+ToolManual clrt_manual();
+
 // A program that takes clrt's options, and what it changes of them, so that its --help lists
 // exactly what it accepts.
 struct ProgramOptions {
@@ -66,7 +70,7 @@ struct ProgramOptions {
   bool resume = true;     // --resume
   bool dump_scene = true; // --dump-scene
   std::function<void(CLI::App&)> add_own_options;  // e.g. clrt-mpi's --tile
-  std::string manual = "docs/cli.md";  // the page --help and the man page point at
+  ToolManual manual = clrt_manual();  // the page --help points at, and the man page's sections
 };
 
 // --stats and --stats-format as given, before they are read into CliOptions::stats.

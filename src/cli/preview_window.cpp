@@ -91,7 +91,7 @@ std::unique_ptr<PreviewWindow> PreviewWindow::open(std::uint32_t width, std::uin
   std::snprintf(exposure, sizeof exposure, "--exposure=%.17g", display.exposure);
   std::vector<std::string> args = {viewer, "--preview", exposure, "--tonemap",
                                    tone_curve_name(display.curve)};
-  if (display.srgb) args.emplace_back("--srgb");
+  args.emplace_back(display.srgb ? "--srgb" : "--linear");
   std::vector<char*> argv;
   for (std::string& arg : args) argv.push_back(arg.data());
   argv.push_back(nullptr);

@@ -2,6 +2,7 @@
 
 #include <sstream>
 
+#include "cli/docs/doc_location.hpp"
 #include "cli/unknown_words.hpp"
 #include "version.hpp"
 
@@ -32,8 +33,8 @@ void identify_tool(CLI::App& app, const ToolManual& manual) {
   const std::string name = app.get_name();
   add_cli_docs_option(app, manual);
   if (!manual.page.empty())
-    app.footer("The whole manual: man " + name + ", and " + manual.page + " (installed as " +
-               CLRT_INSTALLED_DOC_DIR + "/" + manual.page + ")");
+    app.footer("The whole manual: man " + name + ", and " + cli_docs::documentation_folder() + "/" +
+               manual.page);
   app.set_version_flag("--version", name == "clrt" ? std::string(clrt_version_string())
                                                    : name + ", from " + clrt_version_string());
   app.failure_message([name](const CLI::App*, const CLI::Error& error) {

@@ -13,7 +13,16 @@ ProgramOptions mpi_program_options(TileSize& tile) {
   program.preview = false;
   program.resume = false;
   program.dump_scene = false;
-  program.manual = "docs/scale-out.md";
+  program.manual = {
+      "docs/scale-out.md",
+      {},
+      {{"0", "rank 0 wrote the image, or --help or --version"},
+       {"1", "a failure at run time on any rank (a rank without a device, a render or a write that "
+             "fails): every rank exits 1 and no file is written"},
+       {"2", "a usage or scene error, on every rank"}},
+      {{"mpirun -np 4 clrt-mpi scenes/reflect.ray -o reflect.png", "one frame across 4 ranks"},
+       {"mpirun -np 8 clrt-mpi scenes/cornell.ray --mode path --spp 256 --tile 64x64 -o c.png",
+        "smaller tiles, dealt to the ranks as they finish"}}};
   program.add_own_options = [&tile](CLI::App& app) {
     app.add_option_function<std::string>(
         "--tile",

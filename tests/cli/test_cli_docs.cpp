@@ -3,6 +3,7 @@
 // completions offer option names, commands and the fixed words of values.
 #include <catch2/catch.hpp>
 
+#include <filesystem>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -93,15 +94,59 @@ TEST_CASE("each program's man page lists every option its --help lists", "[cli][
         CHECK(page.find("\\fB" + roff_escaped(name) + "\\fR") != std::string::npos);
       }
     }
+    // The page is installed: it names the installed documentation.
     CHECK(page.find(".SH SEE ALSO\nThe full description of " + roff_escaped(program.name) + ": " +
-                    roff_escaped(program.manual)) != std::string::npos);
+                    roff_escaped(program.manual) + " in clrt's documentation, " +
+                    roff_escaped(std::string(CLRT_INSTALLED_DOC_DIR) + "/" + program.manual)) !=
+          std::string::npos);
     CHECK(page.find("\\-\\-write\\-") == std::string::npos);
-    // --help points at the same manual, which is in the documentation.
-    CHECK(run_program(program.executable, "--help").output.find("man " + program.name + ", and " +
-                                                                program.manual + " (installed as ") !=
+    // --help, run from the build tree, points at the same manual in the source tree.
+    CHECK(run_program(program.executable, "--help").output.find(
+              "man " + program.name + ", and " + std::string(CLRT_SOURCE_DIR) + "/" + program.manual + "\n") !=
           std::string::npos);
     CHECK(!file_bytes(std::string(CLRT_SOURCE_DIR) + "/" + program.manual).empty());
   }
+}
+
+TEST_CASE("each man page has EXIT STATUS, EXAMPLES and SEE ALSO, with the statuses the program "
+          "gives", "[cli][docs]") {
+  for (const Program& program : programs()) {
+    INFO(program.name);
+    const std::string page = man_page(program.name);
+    const std::size_t status = page.find(".SH EXIT STATUS\n"), examples = page.find(".SH EXAMPLES\n"),
+                      see_also = page.find(".SH SEE ALSO\n");
+    REQUIRE(status != std::string::npos);
+    REQUIRE(examples != std::string::npos);
+    REQUIRE(see_also != std::string::npos);
+    CHECK((status < examples && examples < see_also));
+    const std::string statuses = page.substr(status, examples - status);
+    for (const char* code : {"0", "1", "2"}) CHECK(statuses.find(".TP\n\\fB" + std::string(code) + "\\fR\n") != std::string::npos);
+    // The examples run the program (clrt-mpi's under mpirun).
+    const std::string listed = page.substr(examples, see_also - examples);
+    CHECK(listed.find(roff_escaped(program.name) + " ") != std::string::npos);
+    // What the page says of 0 and 2 is what the program returns.
+    CHECK(run_program(program.executable, "--version").exit_code == 0);
+    CHECK(run_program(program.executable, "--no-such-option").exit_code == 2);
+  }
+  CHECK(man_page("clrt").find(".TP\n\\fB128 + N\\fR\n") != std::string::npos);
+  CHECK(run_program(CLRT_EXE, "no-such-scene.ray").exit_code == 2);
+  CHECK(run_program(CLRT_IMG_EXE, "info no-such-image.png").exit_code == 1);
+}
+
+TEST_CASE("--help names the documentation where it is for the executable that runs", "[cli][docs]") {
+  namespace fs = std::filesystem;
+  const ScratchDir scratch;
+  // A copy outside the build tree, as an install puts it: without documentation beside it, the
+  // configured install's; with share/doc/clrt beside bin/, that one.
+  fs::create_directories(scratch.file("bin"));
+  const std::string copy = scratch.file("bin/clrt-img");
+  fs::copy_file(CLRT_IMG_EXE, copy);
+  CHECK(run_program(copy, "--help").output.find(
+            "and " + std::string(CLRT_INSTALLED_DOC_DIR) + "/docs/images.md\n") != std::string::npos);
+  scratch.write("share/doc/clrt/README.md", "");
+  fs::create_directories(scratch.file("share/doc/clrt/docs"));
+  const std::string beside = fs::canonical(scratch.file("share/doc/clrt")).string();
+  CHECK(run_program(copy, "--help").output.find("and " + beside + "/docs/images.md\n") != std::string::npos);
 }
 
 TEST_CASE("docs/cli.md lists every option clrt's --help lists", "[cli][docs]") {

@@ -3,6 +3,8 @@
 #include <catch2/catch.hpp>
 
 #include <cstdint>
+#include <filesystem>
+#include <fstream>
 #include <string>
 #include <vector>
 
@@ -62,6 +64,29 @@ TEST_CASE("an image named by several textures is read once", "[scene][texture]")
   const Scene s = load_scene(dir.write("scene.ray", "texture color image a.png\nsphere\ntexture ks image ./a.png scale 4 4\nsphere\n"));
   CHECK(s.textures.size() == 2);
   CHECK(s.texture_images.size() == 1);
+}
+
+// The example of docs/scene-format.md#textures, in a scene of scenes/: every file it names is one
+// clrt ships.
+TEST_CASE("the docs' texture example loads as written beside the shipped scenes", "[scene][texture][docs]") {
+  std::ifstream in(std::string(CLRT_SOURCE_DIR) + "/docs/scene-format.md");
+  REQUIRE(in);
+  std::string example, line;
+  bool inside = false;
+  while (std::getline(in, line) && example.find("texture color image") == std::string::npos) {
+    if (line.rfind("```", 0) == 0) {
+      if (!inside) example.clear();
+      inside = !inside;
+    } else if (inside) {
+      example += line + "\n";
+    }
+  }
+  REQUIRE(example.find("texture color image") != std::string::npos);
+  ScratchDir dir;
+  std::filesystem::create_directory_symlink(std::string(CLRT_SOURCE_DIR) + "/scenes/meshes", dir.file("meshes"));
+  const Scene s = load_scene(dir.write("scene.ray", example));
+  REQUIRE(s.texture_images.size() == 1);
+  CHECK(s.texture_images[0].width > 0);
 }
 
 TEST_CASE("a triangle takes (u, v) at its corners", "[scene][texture]") {

@@ -148,6 +148,7 @@ TEST_CASE("clrt-view reduces an image wider than the screen until it fits, and -
     command.insert(command.end(), zoom.begin(), zoom.end());
     screen.start(command, log);
     ViewState state;
+    state.tone.srgb = true;  // a PFM holds linear values: shown through sRGB unless --linear
     state.zoom = zoom.empty() ? fitting_zoom(width, height, 1, kXvfbArea) : 0.3;
     const Canvas expected = compose(layout_view(state, sources), state, sources);
     const WindowPixels window = shown(screen, expected);
@@ -192,7 +193,7 @@ TEST_CASE("clrt-view compares two images side by side with their difference",
   write_image(b, other);
   XScreen screen;
   const std::string log = dir.file("view.log");
-  screen.start({CLRT_VIEW, a, b, "--side-by-side", "--difference", "--zoom", "3"}, log);
+  screen.start({CLRT_VIEW, a, b, "--side-by-side", "--difference", "--linear", "--zoom", "3"}, log);
 
   ViewState state;
   state.side_by_side = state.show_difference = true;
@@ -223,7 +224,7 @@ TEST_CASE("clrt-view's keys, sent through the X server, flip, show the differenc
   write_image(b, other);
   XScreen screen;
   const std::string log = dir.file("view.log");
-  screen.start({CLRT_VIEW, a, b, "--zoom", "2"}, log);
+  screen.start({CLRT_VIEW, a, b, "--linear", "--zoom", "2"}, log);
   const AnyImage any_b = other;
   const ViewSources sources = make_sources(hdr_ramp(), &any_b);
   ViewState state;

@@ -165,6 +165,11 @@ TEST_CASE("showing more pictures side by side lowers the zoom until they fit the
   CHECK(state.zoom == 1);
 }
 
+TEST_CASE("a float image holds linear values, an 8-bit one display bytes", "[view][tone]") {
+  CHECK(make_sources(kTwoByOne, nullptr).linear);
+  CHECK_FALSE(make_sources(Rgba8Image(1, 1, {{1, 2, 3, 255}}), nullptr).linear);
+}
+
 TEST_CASE("images of different sizes cannot be compared", "[view][layout]") {
   const AnyImage b = FloatImage{1, 1, {0, 0, 0}};
   CHECK_THROWS_AS(make_sources(kTwoByOne, &b), ImageError);

@@ -340,7 +340,18 @@ nlohmann::json run_plan(const Plan& plan, const Earlier& earlier, const nlohmann
 int main(int argc, char** argv) {
   CLI::App app{"clrt-experiment: scenes x devices x variants x repeats, one clrt process each",
                "clrt-experiment"};
-  clrt::identify_tool(app, {"docs/experiments.md", {"ray", "RAY", "nff", "NFF"}});
+  clrt::identify_tool(
+      app, {"docs/experiments.md",
+            {"ray", "RAY", "nff", "NFF"},
+            {{"0", "every run succeeded and every image equals its scene's first"},
+             {"1", "a run failed, an image differs from its scene's first, or the experiment could "
+                   "not run or write its results"},
+             {"2", "a usage error, a scene that is missing, or --resume against other settings"}},
+            {{"clrt-experiment scenes/cornell.ray scenes/reflect.ray --repeats 3",
+              "each scene three times on the default device: results.json, runs.csv, report.md "
+              "and plots in experiment/"},
+             {"clrt-experiment scenes/reflect.ray --device all --integrator wavefront,megakernel",
+              "both integrators on every device"}}});
   std::vector<std::string> scene_paths, device_specs = {"cpu"}, extras;
   std::string integrators = "wavefront", wavefronts, local_sizes, python = CLRT_PYTHON3;
   const std::string plot_script =

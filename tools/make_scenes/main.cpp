@@ -13,7 +13,14 @@
 int main(int argc, char** argv) {
   CLI::App app{"Writes clrt's large procedural benchmark scenes and their meshes, or the material knob.",
                "clrt-make-scenes"};
-  clrt::identify_tool(app, {"docs/performance.md", {}});
+  clrt::identify_tool(
+      app, {"docs/performance.md",
+            {},
+            {{"0", "the scenes were written (their paths are printed)"},
+             {"1", "a file could not be written"},
+             {"2", "a usage error"}},
+            {{"clrt-make-scenes", "the large benchmark scenes, into build/scenes-large"},
+             {"clrt-make-scenes knobs --family knob", "the material knob's scenes, into knobs/"}}});
   std::string folder = "build/scenes-large";
   double scale = 1;
   app.add_option("OUTDIR", folder, "folder to write into (created if missing)")

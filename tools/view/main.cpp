@@ -22,7 +22,7 @@ struct ViewOptions {
   std::string a, b;
   double exposure = 0, gamma = 1, fps = 25;
   std::string tonemap = "clamp";
-  bool srgb = false;
+  bool srgb = false, linear = false, gamma_given = false;
   int frame = 1;
   std::optional<double> zoom;
   bool pause = false, side_by_side = false, difference = false, show_b = false, preview = false;
@@ -34,13 +34,18 @@ void add_options(CLI::App& app, ViewOptions& options) {
   app.add_option("--exposure", options.exposure, "stops to scale the values by (default 0)");
   app.add_option("--gamma", options.gamma,
                  "show value^(1/gamma) (default 1: the bytes clrt's PNG holds)")
-      ->check(clrt::decimal_number(0.1, 10.0));
+      ->check(clrt::decimal_number(0.1, 10.0))
+      ->each([&options](const std::string&) { options.gamma_given = true; });
   app.add_option("--tonemap", options.tonemap,
                  "the tone curve: clamp (default: values above 1 are white) or filmic")
       ->transform(clrt::word_choice(clrt::tone_curve_names()));
-  app.add_flag("--srgb", options.srgb,
-               "encode with sRGB's curve instead of the gamma, as clrt --mode path writes its "
-               "8-bit images");
+  CLI::Option* const srgb = app.add_flag(
+      "--srgb", options.srgb,
+      "encode with sRGB's curve instead of the gamma, as clrt --mode path writes its 8-bit "
+      "images (the default for PFM, EXR and --preview, unless --gamma or --linear)");
+  app.add_flag("--linear", options.linear,
+               "show a PFM's or EXR's values as they are, without sRGB's curve (a Whitted render's)")
+      ->excludes(srgb);
   app.add_option("--frame", options.frame, "the frame to start at, from 1")
       ->transform(clrt::whole_number(1, std::numeric_limits<int>::max()));
   app.add_option("--fps", options.fps, "frames per second of an animation (default 25)")
@@ -88,6 +93,7 @@ int view(const ViewOptions& options) {
     feed.emplace(0);
     sources.width = feed->width();
     sources.height = feed->height();
+    sources.linear = true;
     sources.a.emplace_back(sources.width, sources.height,
                            std::vector<float>(3 * std::size_t(sources.width) * sources.height));
   } else {
@@ -102,7 +108,7 @@ int view(const ViewOptions& options) {
   }
   ViewState state;
   state.tone = {options.exposure, options.gamma, *clrt::tone_curve_from_name(options.tonemap),
-                options.srgb};
+                options.srgb || (sources.linear && !options.linear && !options.gamma_given)};
   state.side_by_side = options.side_by_side;
   state.show_difference = options.difference;
   state.flipped = options.show_b ? Picture::B : Picture::A;
@@ -120,7 +126,17 @@ int main(int argc, char** argv) {
   CLI::App app{"Show the images clrt writes (FSF animations, PNG, PPM, PFM, OpenEXR), compare two, "
                "or watch a render fill in (clrt --preview).",
                "clrt-view"};
-  clrt::identify_tool(app, {"docs/viewer.md", {}});
+  clrt::identify_tool(
+      app, {"docs/viewer.md",
+            {},
+            {{"0", "the window was closed (or q), or --help or --version"},
+             {"1", "an image that cannot be read, two images of different sizes, images the memory "
+                   "cannot hold, or no window (no display)"},
+             {"2", "a usage error"}},
+            {{"clrt-view c.exr", "a render's radiance through sRGB, as clrt's PNG of it shows it"},
+             {"clrt-view turn.fsf --fps 12", "play an animation"},
+             {"clrt-view a.pfm b.pfm --difference", "compare two images: Tab flips, d shows the difference"},
+             {"clrt scenes/reflect.ray --preview", "watch a render fill in"}}});
   ViewOptions options;
   add_options(app, options);
   if (const auto status = clrt::parse_tool_arguments(app, argc, argv)) return *status;

@@ -1,3 +1,5 @@
+#include <variant>
+
 #include "view_sources.hpp"
 
 #include <algorithm>
@@ -37,6 +39,7 @@ AnyImage one_frame(const AnyImage& image, int frame) {
 ViewSources make_sources(const AnyImage& a, const AnyImage* b) {
   ViewSources sources;
   sources.a = float_frames(a);
+  sources.linear = std::holds_alternative<FloatImage>(a);
   sources.width = sources.a.front().width;
   sources.height = sources.a.front().height;
   if (!b) return sources;

@@ -12,6 +12,9 @@ namespace clrt::view {
 struct ViewSources {
   std::vector<FloatImage> a, b, difference;  // b and difference are empty without a second image
   int width = 0, height = 0;
+  // Whether A holds linear values (a PFM, an EXR, the render of --preview) rather than 8-bit
+  // display bytes: such an image opens through sRGB, as other HDR viewers show it.
+  bool linear = false;
   bool comparing() const { return !b.empty(); }
   int frame_count() const;
   // Frame `frame` of a list, or its last when it has fewer (a still against an animation).

@@ -7,16 +7,12 @@
 
 #include <CLI/CLI.hpp>
 
+#include "cli/docs/tool_manual.hpp"
+
 #include <string>
 #include <vector>
 
 namespace clrt {
-
-// What a program's pages say beyond its parser.
-struct ToolManual {
-  std::string page;  // the documentation page that covers the program fully ("docs/images.md")
-  std::vector<std::string> positional_extensions;  // the files its completion offers ({}: any)
-};
 
 // The hidden options, each answered as soon as it is parsed (before any other option's check): the
 // page is written and parsing ends as --version ends it (exit status 0, or 1 if FILE cannot be

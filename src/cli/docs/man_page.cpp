@@ -67,9 +67,17 @@ void write_option_groups(std::ostream& out, const CLI::App& app, const std::stri
   }
 }
 
+// A section of tagged paragraphs, each term in bold (a status or a command line, as it is typed).
+void write_list(std::ostream& out, const std::string& title, const std::vector<ManualLine>& lines) {
+  if (lines.empty()) return;
+  out << ".SH " << title << "\n";
+  for (const ManualLine& line : lines)
+    out << ".TP\n\\fB" << roff(line.term) << "\\fR\n" << roff(line.text) << "\n";
+}
+
 }  // namespace
 
-std::string man_page(const CLI::App& app, const std::string& version, const std::string& see_also) {
+std::string man_page(const CLI::App& app, const std::string& version, const ManPageSections& sections) {
   std::ostringstream out;
   const std::string name = app.get_name();
   const std::vector<const CLI::App*> commands = app.get_subcommands({});
@@ -98,7 +106,9 @@ std::string man_page(const CLI::App& app, const std::string& version, const std:
       write_option_groups(out, *command, "");
     }
   }
-  out << ".SH SEE ALSO\n" << roff(see_also) << "\n";
+  write_list(out, "EXIT STATUS", sections.exit_status);
+  write_list(out, "EXAMPLES", sections.examples);
+  out << ".SH SEE ALSO\n" << roff(sections.see_also) << "\n";
   return out.str();
 }
 
