@@ -133,7 +133,7 @@ TEST_CASE("each man page has EXIT STATUS, EXAMPLES and SEE ALSO, with the status
   CHECK(run_program(CLRT_IMG_EXE, "info no-such-image.png").exit_code == 1);
 }
 
-TEST_CASE("--help names the documentation where it is for the executable that runs", "[cli][docs]") {
+TEST_CASE("help output names the documentation where it is for the executable that runs", "[cli][docs]") {
   namespace fs = std::filesystem;
   const ScratchDir scratch;
   // A copy outside the build tree, as an install puts it: without documentation beside it, the
