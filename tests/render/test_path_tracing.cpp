@@ -178,6 +178,15 @@ void check_mean_at_depths(const std::string& path, std::initializer_list<int> de
   }
 }
 
+// A Lambertian floor of albedo 0.5 seen from straight below a black sphere centred 2 above it,
+// glowing with `radiance` (one word, for every channel).
+std::string floor_under_glowing_sphere(const std::string& radiance, const std::string& radius) {
+  return "eye 0 0.25 0\nlookat 0 0 0\nup 0 0 -1\nfov 2\nresolution 4 4\n"
+         "background 0 0 0\nmaterial 1 1 1 0 0.5 0 1 0 0\nplane\n"
+         "material 0 0 0 0 0 0 1 0 0\nemission " + radiance + " " + radiance + " " + radiance +
+         "\nsphere 0 2 0 " + radius + "\n";
+}
+
 }  // namespace
 
 TEST_CASE("a plane under a near area light with one shadow ray matches its closed form at every depth",
@@ -205,9 +214,7 @@ TEST_CASE("a floor under a glowing sphere receives pi L sin^2(alpha) at every de
   // bounce into it, weighed by MIS.
   const ScratchDir dir;
   const std::string path = dir.file("glow.ray");
-  std::ofstream(path) << "eye 0 0.25 0\nlookat 0 0 0\nup 0 0 -1\nfov 2\nresolution 4 4\n"
-                         "background 0 0 0\nmaterial 1 1 1 0 0.5 0 1 0 0\nplane\n"
-                         "material 0 0 0 0 0 0 1 0 0\nemission 4 4 4\nsphere 0 2 0 1\n";
+  std::ofstream(path) << floor_under_glowing_sphere("4", "1");
   check_mean_at_depths(path, {0, 1, 5}, 0.5, 0.003);
 }
 
@@ -217,9 +224,7 @@ TEST_CASE("a glowing sphere of radius 1e-8 lights the floor by its closed form, 
   // with radiance 1e12: sin^2(alpha) = (1e-8 / 2)^2, so the floor sends back 0.5 L sin^2(alpha).
   const ScratchDir dir;
   const std::string path = dir.file("speck.ray");
-  std::ofstream(path) << "eye 0 0.25 0\nlookat 0 0 0\nup 0 0 -1\nfov 2\nresolution 4 4\n"
-                         "background 0 0 0\nmaterial 1 1 1 0 0.5 0 1 0 0\nplane\n"
-                         "material 0 0 0 0 0 0 1 0 0\nemission 1e12 1e12 1e12\nsphere 0 2 0 1e-8\n";
+  std::ofstream(path) << floor_under_glowing_sphere("1e12", "1e-8");
   check_mean_at_depths(path, {0, 1}, 0.5 * 1e12 * 0.25e-16, 0.003);
 }
 
