@@ -1,3 +1,4 @@
+#include "image/byte_span.hpp"
 #include "image/exr_header_check.hpp"
 
 #include <algorithm>
@@ -22,7 +23,7 @@ const char* const kRequired[] = {"channels",           "compression",      "data
                                  "displayWindow",      "lineOrder",        "pixelAspectRatio",
                                  "screenWindowCenter", "screenWindowWidth"};
 
-std::int32_t i32_at(const std::vector<std::uint8_t>& bytes, std::size_t at) {
+std::int32_t i32_at(ByteSpan bytes, std::size_t at) {
   std::uint32_t v = 0;
   for (int k = 3; k >= 0; --k) v = v << 8 | bytes[at + static_cast<std::size_t>(k)];
   std::int32_t out;
@@ -41,7 +42,7 @@ struct Part {
 // attribute) or what would make it allocate more than the file could hold.
 class HeaderWalk {
  public:
-  HeaderWalk(const std::vector<std::uint8_t>& bytes, const std::string& path)
+  HeaderWalk(ByteSpan bytes, const std::string& path)
       : bytes_(bytes), path_(path) {}
 
   std::vector<Part> parts() {
@@ -151,7 +152,7 @@ class HeaderWalk {
     at_ = outer;
   }
 
-  const std::vector<std::uint8_t>& bytes_;
+  ByteSpan bytes_;
   const std::string& path_;
   std::size_t at_ = 0;
   std::size_t longest_name_ = 31;
@@ -180,7 +181,7 @@ void check_part(const Part& part, std::size_t file_bytes, const std::string& pat
 
 }  // namespace
 
-void check_exr_window(const std::vector<std::uint8_t>& bytes, const std::string& path) {
+void check_exr_window(ByteSpan bytes, const std::string& path) {
   if (bytes.size() < 4 || i32_at(bytes, 0) != 20000630) return;  // OpenEXR names it itself
   for (const Part& part : HeaderWalk(bytes, path).parts()) check_part(part, bytes.size(), path);
 }

@@ -11,10 +11,12 @@
 #include <string>
 #include <vector>
 
+#include "image/byte_span.hpp"
+
 namespace clrt::image_detail {
 
 // Throws ImageError naming `path` and the reason for any of the above; a file that does not
 // start with OpenEXR's magic number is left to OpenEXR, whose own error names it.
-void check_exr_window(const std::vector<std::uint8_t>& bytes, const std::string& path);
+void check_exr_window(ByteSpan bytes, const std::string& path);
 
 }  // namespace clrt::image_detail

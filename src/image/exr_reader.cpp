@@ -15,7 +15,6 @@
 #include "image/checked_size.hpp"
 #include "image/decoders.hpp"
 #include "image/exr_streams.hpp"
-#include "image/input_file.hpp"
 
 namespace clrt {
 namespace {
@@ -75,11 +74,11 @@ ExrLayout layout_of(const Imf::Header& header, const std::string& path) {
 
 // OpenEXR reports errors as exceptions derived from std::exception.
 template <typename Read>
-auto read_exr_file(const std::string& path, const Read& read) {
-  const std::vector<std::uint8_t> bytes = image_detail::read_file_bytes(path);
-  image_detail::check_exr_window(bytes, path);
+auto read_exr_file(const ImageBytes& encoded, const Read& read) {
+  const std::string& path = encoded.name;
+  image_detail::check_exr_window(encoded.bytes, path);
   try {
-    image_detail::MemoryIStream stream(bytes, path.c_str());
+    image_detail::MemoryIStream stream(encoded.bytes, path.c_str());
     Imf::InputFile file(stream);
     return read(file, layout_of(file.header(), path));
   } catch (const ImageError&) {
@@ -93,8 +92,8 @@ auto read_exr_file(const std::string& path, const Read& read) {
 
 }  // namespace
 
-FloatImage read_exr(const std::string& path) {
-  return read_exr_file(path, [](Imf::InputFile& file, const ExrLayout& layout) {
+FloatImage image_detail::exr_pixels(const ImageBytes& encoded) {
+  return read_exr_file(encoded, [](Imf::InputFile& file, const ExrLayout& layout) {
     const Imath::Box2i& window = file.header().dataWindow();
     std::vector<float> rgb(3 * static_cast<std::size_t>(layout.width) *
                            static_cast<std::size_t>(layout.height));
@@ -113,8 +112,8 @@ FloatImage read_exr(const std::string& path) {
   });
 }
 
-ImageInfo image_detail::exr_info(const std::string& path) {
-  return read_exr_file(path, [](Imf::InputFile& file, const ExrLayout& layout) {
+ImageInfo image_detail::exr_info(const ImageBytes& encoded) {
+  return read_exr_file(encoded, [](Imf::InputFile& file, const ExrLayout& layout) {
     const Imf::Header& header = file.header();
     std::string names;
     std::vector<Imf::PixelType> read_types;

@@ -8,6 +8,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "image/byte_span.hpp"
+
 namespace clrt::image_detail {
 
 class MemoryOStream final : public Imf::OStream {
@@ -29,7 +31,7 @@ class MemoryOStream final : public Imf::OStream {
 
 class MemoryIStream final : public Imf::IStream {
  public:
-  MemoryIStream(const std::vector<std::uint8_t>& bytes, const char* name)
+  MemoryIStream(ByteSpan bytes, const char* name)
       : Imf::IStream(name), bytes_(bytes) {}
   // Throws Iex::InputExc past the end, as OpenEXR's own streams do.
   bool read(char c[], int n) override;
@@ -37,7 +39,7 @@ class MemoryIStream final : public Imf::IStream {
   void seekg(std::uint64_t position) override { position_ = position; }
 
  private:
-  const std::vector<std::uint8_t>& bytes_;
+  ByteSpan bytes_;
   std::uint64_t position_ = 0;
 };
 

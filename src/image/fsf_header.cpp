@@ -3,6 +3,7 @@
 
 #include "image/byte_order.hpp"
 #include "image/checked_size.hpp"
+#include "image/content_kind.hpp"
 #include "image/decoders.hpp"
 #include "image/fsf_layout.hpp"
 #include "image/image_checks.hpp"
@@ -31,6 +32,7 @@ std::string describe_size(const FsfHeader& header) {
 FsfHeader parse_header(const std::uint8_t* raw, const std::string& path) {
   FsfHeader header;
   if (image_detail::load_u32_le(raw) != kFsfMagic) {
+    image_detail::check_content(ByteSpan(raw, kFsfHeaderBytes), ImageFormat::Fsf, path);
     if (image_detail::load_u32_be(raw) != kFsfMagic)
       throw ImageError(path + ": not an FSF file: it starts with " + hex_bytes(raw, 4) +
                        ", not the magic number 575 in either byte order");
@@ -82,15 +84,23 @@ std::uint64_t fsf_file_size(const FsfHeader& header) {
   return *bytes;
 }
 
-FsfHeader image_detail::read_checked_fsf_header(InputFile& file) {
-  if (file.size() < kFsfHeaderBytes)
-    throw ImageError(file.path() + ": not an FSF file: " + std::to_string(file.size()) +
+FsfHeader image_detail::checked_fsf_header(ByteSpan head, std::uint64_t file_bytes,
+                                           const std::string& name) {
+  if (head.size() < kFsfHeaderBytes) {
+    check_content(head, ImageFormat::Fsf, name);
+    throw ImageError(name + ": not an FSF file: " + std::to_string(file_bytes) +
                      " bytes, shorter than the 16-byte header");
-  std::uint8_t raw[kFsfHeaderBytes];
-  file.read_exact(raw, sizeof raw);
-  const FsfHeader header = parse_header(raw, file.path());
-  check_sizes(header, file.size(), file.path());
+  }
+  const FsfHeader header = parse_header(head.data(), name);
+  check_sizes(header, file_bytes, name);
   return header;
+}
+
+FsfHeader image_detail::read_checked_fsf_header(InputFile& file) {
+  std::uint8_t raw[kFsfHeaderBytes];
+  const std::size_t got = file.size() < kFsfHeaderBytes ? static_cast<std::size_t>(file.size()) : kFsfHeaderBytes;
+  file.read_exact(raw, got);
+  return checked_fsf_header(ByteSpan(raw, got), file.size(), file.path());
 }
 
 FsfHeader read_fsf_header(const std::string& path) {
@@ -98,8 +108,7 @@ FsfHeader read_fsf_header(const std::string& path) {
   return image_detail::read_checked_fsf_header(file);
 }
 
-ImageInfo image_detail::fsf_info(const std::string& path) {
-  const FsfHeader header = read_fsf_header(path);
+ImageInfo image_detail::fsf_header_info(const FsfHeader& header) {
   ImageInfo info = basic_info(ImageFormat::Fsf, static_cast<int>(header.width),
                               static_cast<int>(header.height), "RGBA", "8-bit");
   info.frames = header.frames;

@@ -4,7 +4,9 @@
 
 #include <cstdint>
 
+#include "image/byte_span.hpp"
 #include "image/image.hpp"
+#include "image/image_info.hpp"
 #include "image/input_file.hpp"
 
 namespace clrt::image_detail {
@@ -12,8 +14,13 @@ namespace clrt::image_detail {
 constexpr std::uint32_t kFsfMagic = 575;
 constexpr std::uint32_t kFsfHeaderBytes = 16;
 
-// Reads and checks the header of an FSF file just opened: the magic (choosing the byte order),
-// non-zero sizes that fit an Rgba8Image, and a file size equal to what the header describes.
+// The header at the start of `head` (a file of `file_bytes` bytes named `name`), checked: the
+// magic (choosing the byte order; another format's signature is named), non-zero sizes that fit
+// an Rgba8Image, and a file size equal to what the header describes.
+FsfHeader checked_fsf_header(ByteSpan head, std::uint64_t file_bytes, const std::string& name);
+// The same for a file just opened, reading only its header.
 FsfHeader read_checked_fsf_header(InputFile& file);
+
+ImageInfo fsf_header_info(const FsfHeader& header);
 
 }  // namespace clrt::image_detail

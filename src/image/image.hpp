@@ -9,6 +9,7 @@
 #include <variant>
 #include <vector>
 
+#include "image/byte_span.hpp"
 #include "image/display_transform.hpp"
 #include "image/png_encoding.hpp"
 
@@ -175,6 +176,13 @@ Rgba8Image read_image(const std::string& path);
 // An image as its file stores it: 8-bit frames (FSF, PNG, PPM) or floats (PFM, EXR).
 using AnyImage = std::variant<Rgba8Image, FloatImage>;
 AnyImage read_any_image(const std::string& path);
+
+// Which frames of an animated file (FSF) to decode: a texture or an environment shows the first,
+// and the others then cost neither time nor memory.
+enum class Frames { All, First };
+// An image from its file's bytes in memory, decoded in place, in `format`; a file whose content is
+// another known format is refused naming that format. Messages name `file.name`.
+AnyImage decode_image(const ImageBytes& file, ImageFormat format, Frames frames = Frames::All);
 
 // A one-frame image holding frame `frame` of `image`, counted from 1 as clrt numbers the files
 // of an animation; ImageError if out of range.

@@ -24,6 +24,8 @@ struct ImageInfo {
 
 // By the path's extension; ImageError if it cannot be read.
 ImageInfo read_image_info(const std::string& path);
+// The same from the file's bytes in memory, in `format`.
+ImageInfo decode_image_info(const ImageBytes& file, ImageFormat format);
 
 // One "key: value" line each: format, width, height, frames, channels, samples, placement, then
 // the details.

@@ -8,12 +8,14 @@
 #include <string>
 #include <vector>
 
+#include "image/byte_span.hpp"
+
 namespace clrt::image_detail {
 
 class NetpbmCursor {
  public:
   // `kind` ("PPM", "PFM") goes into every error: "<path>: not a readable <kind>: ...".
-  NetpbmCursor(const std::vector<std::uint8_t>& bytes, const char* kind, const std::string& path)
+  NetpbmCursor(ByteSpan bytes, const char* kind, const std::string& path)
       : bytes_(bytes), kind_(kind), path_(path) {}
 
   [[noreturn]] void fail(const std::string& what) const;
@@ -38,7 +40,7 @@ class NetpbmCursor {
   std::size_t remaining() const { return bytes_.size() - pos_; }
 
  private:
-  const std::vector<std::uint8_t>& bytes_;
+  ByteSpan bytes_;
   const char* kind_;
   const std::string& path_;
   std::size_t pos_ = 0;

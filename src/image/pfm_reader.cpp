@@ -9,7 +9,6 @@
 #include "image/byte_order.hpp"
 #include "image/checked_size.hpp"
 #include "image/decoders.hpp"
-#include "image/input_file.hpp"
 #include "image/netpbm_cursor.hpp"
 
 namespace clrt {
@@ -47,9 +46,8 @@ PfmHeader read_pfm_header(NetpbmCursor& cursor) {
 
 }  // namespace
 
-FloatImage read_pfm(const std::string& path) {
-  const std::vector<std::uint8_t> bytes = image_detail::read_file_bytes(path);
-  NetpbmCursor cursor(bytes, "PFM", path);
+FloatImage image_detail::pfm_pixels(const ImageBytes& file) {
+  NetpbmCursor cursor(file.bytes, "PFM", file.name);
   const PfmHeader header = read_pfm_header(cursor);
   const bool little_endian = header.scale < 0.0f;
   const float magnitude = std::fabs(header.scale);
@@ -73,9 +71,8 @@ FloatImage read_pfm(const std::string& path) {
   return FloatImage(header.width, header.height, std::move(rgb));
 }
 
-ImageInfo image_detail::pfm_info(const std::string& path) {
-  const std::vector<std::uint8_t> bytes = read_file_bytes(path);
-  NetpbmCursor cursor(bytes, "PFM", path);
+ImageInfo image_detail::pfm_info(const ImageBytes& file) {
+  NetpbmCursor cursor(file.bytes, "PFM", file.name);
   const PfmHeader header = read_pfm_header(cursor);
   ImageInfo info = basic_info(ImageFormat::Pfm, header.width, header.height,
                               header.channels == 3 ? "RGB" : "grey", "32-bit float");

@@ -12,7 +12,6 @@
 #include "image/decoders.hpp"
 #include "image/image_checks.hpp"
 #include "image/image_limits.hpp"
-#include "image/input_file.hpp"
 #include "image/placement.hpp"
 #include "image/png_errors.hpp"
 
@@ -24,20 +23,20 @@ using image_detail::png_guarded;
 
 struct PngInput {
   PngErrors errors;
-  const std::vector<std::uint8_t>* bytes;
+  ByteSpan bytes;
   std::size_t position = 0;
 };
 
 void read_from_memory(png_structp png, png_bytep out, std::size_t size) {
   auto* input = static_cast<PngInput*>(png_get_io_ptr(png));
-  if (size > input->bytes->size() - input->position) png_error(png, "the file ended early");
-  std::memcpy(out, input->bytes->data() + input->position, size);
+  if (size > input->bytes.size() - input->position) png_error(png, "the file ended early");
+  std::memcpy(out, input->bytes.data() + input->position, size);
   input->position += size;
 }
 
 // libpng allocates a chunk's declared length before reading it, so a forged length (a 45-byte
 // file declaring 1.3 GB) would cost that much memory: every chunk must fit in the file first.
-void check_chunk_lengths(const std::vector<std::uint8_t>& bytes) {
+void check_chunk_lengths(ByteSpan bytes) {
   constexpr std::size_t kSignature = 8, kFraming = 12;  // length, type, CRC
   for (std::size_t at = kSignature; at + kFraming <= bytes.size();) {
     const std::uint64_t length = std::uint64_t{bytes[at]} << 24 | std::uint64_t{bytes[at + 1]} << 16 |
@@ -45,7 +44,7 @@ void check_chunk_lengths(const std::vector<std::uint8_t>& bytes) {
     if (length > bytes.size() - at - kFraming)
       throw ImageError("a chunk declares " + std::to_string(length) +
                        " bytes, more than the file has left");
-    if (std::memcmp(&bytes[at + 4], "IEND", 4) == 0) return;
+    if (std::memcmp(bytes.data() + at + 4, "IEND", 4) == 0) return;
     at += kFraming + length;
   }
 }
@@ -89,11 +88,10 @@ std::string colour_type_name(int colour_type, bool transparency) {
 // A PNG opened up to its image data: the header and the text chunks before it.
 class PngDecoder {
  public:
-  explicit PngDecoder(const std::string& path)
-      : path_(path), bytes_(image_detail::read_file_bytes(path)), input_{{}, &bytes_},
-        structs_(input_.errors) {
+  explicit PngDecoder(const ImageBytes& file)
+      : path_(file.name), input_{{}, file.bytes}, structs_(input_.errors) {
     try {
-      check_chunk_lengths(bytes_);
+      check_chunk_lengths(file.bytes);
     } catch (const ImageError& e) {
       throw ImageError(path_ + ": not a readable PNG: " + e.what());
     }
@@ -191,7 +189,6 @@ class PngDecoder {
   }
 
   std::string path_;
-  std::vector<std::uint8_t> bytes_;
   PngInput input_;
   PngReadStructs structs_;
   png_uint_32 width_ = 0, height_ = 0, valid_ = 0;
@@ -201,8 +198,8 @@ class PngDecoder {
 
 }  // namespace
 
-Rgba8Image read_png(const std::string& path) { return PngDecoder(path).pixels(); }
+Rgba8Image image_detail::png_pixels(const ImageBytes& file) { return PngDecoder(file).pixels(); }
 
-ImageInfo image_detail::png_info(const std::string& path) { return PngDecoder(path).info(); }
+ImageInfo image_detail::png_info(const ImageBytes& file) { return PngDecoder(file).info(); }
 
 }  // namespace clrt

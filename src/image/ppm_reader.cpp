@@ -6,7 +6,6 @@
 
 #include "image/checked_size.hpp"
 #include "image/decoders.hpp"
-#include "image/input_file.hpp"
 #include "image/netpbm_cursor.hpp"
 
 namespace clrt {
@@ -64,9 +63,8 @@ void read_plain_samples(NetpbmCursor& cursor, std::uint32_t maxval,
 
 }  // namespace
 
-Rgba8Image read_ppm(const std::string& path) {
-  const std::vector<std::uint8_t> bytes = image_detail::read_file_bytes(path);
-  NetpbmCursor cursor(bytes, "PPM", path);
+Rgba8Image image_detail::ppm_pixels(const ImageBytes& file) {
+  NetpbmCursor cursor(file.bytes, "PPM", file.name);
   const PpmHeader header = read_ppm_header(cursor);
   std::vector<std::uint8_t> rgba(4 * std::size_t(header.width) * std::size_t(header.height), 255);
   header.binary ? read_binary_samples(cursor, header.maxval, rgba)
@@ -74,9 +72,8 @@ Rgba8Image read_ppm(const std::string& path) {
   return Rgba8Image(header.width, header.height, {std::move(rgba)});
 }
 
-ImageInfo image_detail::ppm_info(const std::string& path) {
-  const std::vector<std::uint8_t> bytes = read_file_bytes(path);
-  NetpbmCursor cursor(bytes, "PPM", path);
+ImageInfo image_detail::ppm_info(const ImageBytes& file) {
+  NetpbmCursor cursor(file.bytes, "PPM", file.name);
   const PpmHeader header = read_ppm_header(cursor);
   ImageInfo info = basic_info(ImageFormat::Ppm, header.width, header.height, "RGB",
                               header.maxval > 255 ? "16-bit" : "8-bit");

@@ -1,25 +1,78 @@
 #include <algorithm>
 #include <cctype>
 
+#include "image/content_kind.hpp"
 #include "image/decoders.hpp"
+#include "image/fsf_layout.hpp"
+#include "image/input_file.hpp"
 #include "image/placement.hpp"
 
 namespace clrt {
 
-AnyImage read_any_image(const std::string& path) {
-  switch (format_from_path(path)) {
+AnyImage decode_image(const ImageBytes& file, ImageFormat format, Frames frames) {
+  image_detail::check_content(file.bytes.head(image_detail::kContentHeadBytes), format, file.name);
+  switch (format) {
     case ImageFormat::Fsf:
-      return read_fsf(path);
+      return image_detail::fsf_pixels(file, frames);
     case ImageFormat::Png:
-      return read_png(path);
+      return image_detail::png_pixels(file);
     case ImageFormat::Ppm:
-      return read_ppm(path);
+      return image_detail::ppm_pixels(file);
     case ImageFormat::Pfm:
-      return read_pfm(path);
+      return image_detail::pfm_pixels(file);
     case ImageFormat::Exr:
       break;
   }
-  return read_exr(path);
+  return image_detail::exr_pixels(file);
+}
+
+ImageInfo decode_image_info(const ImageBytes& file, ImageFormat format) {
+  image_detail::check_content(file.bytes.head(image_detail::kContentHeadBytes), format, file.name);
+  switch (format) {
+    case ImageFormat::Fsf:
+      return image_detail::fsf_info(file);
+    case ImageFormat::Png:
+      return image_detail::png_info(file);
+    case ImageFormat::Ppm:
+      return image_detail::ppm_info(file);
+    case ImageFormat::Pfm:
+      return image_detail::pfm_info(file);
+    case ImageFormat::Exr:
+      break;
+  }
+  return image_detail::exr_info(file);
+}
+
+namespace {
+
+// The file at `path` read whole, then decoded in place as `format`.
+AnyImage decode_file(const std::string& path, ImageFormat format) {
+  const std::vector<std::uint8_t> bytes = image_detail::read_file_bytes(path);
+  return decode_image({bytes, path}, format);
+}
+
+}  // namespace
+
+AnyImage read_any_image(const std::string& path) {
+  const ImageFormat format = format_from_path(path);
+  if (format == ImageFormat::Fsf) return read_fsf(path);
+  return decode_file(path, format);
+}
+
+Rgba8Image read_png(const std::string& path) {
+  return std::get<Rgba8Image>(decode_file(path, ImageFormat::Png));
+}
+
+Rgba8Image read_ppm(const std::string& path) {
+  return std::get<Rgba8Image>(decode_file(path, ImageFormat::Ppm));
+}
+
+FloatImage read_pfm(const std::string& path) {
+  return std::get<FloatImage>(decode_file(path, ImageFormat::Pfm));
+}
+
+FloatImage read_exr(const std::string& path) {
+  return std::get<FloatImage>(decode_file(path, ImageFormat::Exr));
 }
 
 Rgba8Image read_image(const std::string& path) {
@@ -28,20 +81,13 @@ Rgba8Image read_image(const std::string& path) {
   return std::get<Rgba8Image>(std::move(image));
 }
 
+// An FSF animation's header alone is read; the other formats are read whole, as their decoders
+// need the file in memory anyway.
 ImageInfo read_image_info(const std::string& path) {
-  switch (format_from_path(path)) {
-    case ImageFormat::Fsf:
-      return image_detail::fsf_info(path);
-    case ImageFormat::Png:
-      return image_detail::png_info(path);
-    case ImageFormat::Ppm:
-      return image_detail::ppm_info(path);
-    case ImageFormat::Pfm:
-      return image_detail::pfm_info(path);
-    case ImageFormat::Exr:
-      break;
-  }
-  return image_detail::exr_info(path);
+  const ImageFormat format = format_from_path(path);
+  if (format == ImageFormat::Fsf) return image_detail::fsf_header_info(read_fsf_header(path));
+  const std::vector<std::uint8_t> bytes = image_detail::read_file_bytes(path);
+  return decode_image_info({bytes, path}, format);
 }
 
 ImageInfo image_detail::basic_info(ImageFormat format, int width, int height,

@@ -1,20 +1,15 @@
 // environment FILE [SCALE]: the image of the radiance arriving from every direction.
-#include <unistd.h>
-
-#include <cerrno>
+#include <algorithm>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
-#include <cstring>
 #include <filesystem>
-#include <memory>
-#include <string_view>
 #include <variant>
 
 #include "image/image.hpp"
 #include "scene/command_table.hpp"
-#include "scene/scene_image.hpp"
 #include "scene/limits.hpp"
+#include "scene/scene_image.hpp"
+#include "scene/scene_memory.hpp"
+#include "scene/texture_images.hpp"
 
 namespace clrt {
 namespace {
@@ -42,9 +37,21 @@ void environment(LoaderState& s, const CommandArgs& a) {
                         "be a rotation (no scale or shear); put `environment` before them or after "
                         "`reset`");
   env.rotation = s.transform;
+  // As a texture's: the header decides what is allocated, so it is checked first. While the map
+  // decodes, the file, the decoded pixels (4 bytes each for 8-bit images, 12 for floats) and, for
+  // 8-bit ones, their linear values are held together.
+  const std::uint64_t used = loader_bytes(s);
+  const auto check_header = [&](const ImageInfo& info, std::uint64_t file_bytes) {
+    check_image_side(info, "an environment");
+    const auto pixels = static_cast<std::uint64_t>(info.width) * static_cast<std::uint64_t>(info.height);
+    const std::uint64_t decoding = file_bytes + pixels * (holds_floats(info.format) ? 12 : 4 + 12);
+    const std::uint64_t held =
+        environment_host_bytes(info.width, info.height) + environment_table_bytes(info.width, info.height);
+    check_image_memory(used + std::max(decoding, held), s.memory);
+  };
   AnyImage image;
   try {
-    image = read_scene_image(*s.files, env.path, s.memory.bytes);
+    image = read_scene_image(*s.files, env.path, s.memory.bytes, check_header);
   } catch (const std::exception& e) {
     throw a.error_at(0, "cannot read the environment image " + excerpt(env.path) + ": " + e.what());
   }

@@ -12,11 +12,14 @@
 
 namespace clrt {
 
-// The image at `path`, its bytes taken from `files` as a mesh's are, so that an MPI rank gets
-// them from rank 0 rather than from a disk of its own. `check_header` sees what the header
-// declares before a pixel is decoded (and may throw to refuse it). Messages name `path`.
+// Sees what a header declares, and the file's size, before a pixel is decoded; throws to refuse.
+using HeaderCheck = std::function<void(const ImageInfo& info, std::uint64_t file_bytes)>;
+
+// The first frame of the image at `path`, its bytes taken from `files` as a mesh's are, so that
+// an MPI rank gets them from rank 0 rather than from a disk of its own, and decoded where they
+// lie: no copy is made, on a disk or elsewhere. Messages name `path`.
 AnyImage read_scene_image(const FileSource& files, const std::string& path, std::uint64_t max_bytes,
-                          const std::function<void(const ImageInfo&)>& check_header = {});
+                          const HeaderCheck& check_header = {});
 
 // The linear value of an 8-bit sRGB code (PNG and PPM hold sRGB; the renderer wants linear),
 // from a table worked out once: a 2048x2048 image's channels through std::pow took seconds.

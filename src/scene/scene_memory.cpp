@@ -13,12 +13,21 @@ std::uint64_t table_bytes(const Table& table) {
 
 }  // namespace
 
+std::uint64_t environment_table_bytes(std::int64_t width, std::int64_t height) {
+  const auto w = static_cast<std::uint64_t>(width), h = static_cast<std::uint64_t>(height);
+  return 16 * (w * h + (h + 3) / 4);
+}
+
+std::uint64_t environment_host_bytes(std::int64_t width, std::int64_t height) {
+  const auto pixels = static_cast<std::uint64_t>(width) * static_cast<std::uint64_t>(height);
+  return 12 * pixels + 2 * environment_table_bytes(width, height);
+}
+
 std::uint64_t estimated_geometry_bytes(const Scene& scene) {
   std::uint64_t primitives = scene.instances.size() + scene.triangles.size() + 1;
   for (const MeshData& mesh : scene.meshes) primitives += mesh.corners.size() / 3;
-  // The environment's table: 16 bytes a pixel (its radiance and a cumulative share).
   const std::uint64_t environment =
-      scene.environment ? 16 * std::uint64_t(scene.environment->rgb.size() / 3 + scene.environment->height) : 0;
+      scene.environment ? environment_table_bytes(scene.environment->width, scene.environment->height) : 0;
   return primitives * kGeometryBytesPerPrimitive + environment;
 }
 
@@ -28,7 +37,8 @@ std::uint64_t estimated_scene_bytes(const Scene& scene) {
     growing += table_bytes(mesh.positions) + table_bytes(mesh.normals) + table_bytes(mesh.corners) +
                table_bytes(mesh.corner_normals) + table_bytes(mesh.texcoords) + table_bytes(mesh.corner_texcoords) +
                table_bytes(mesh.triangle_names);
-  const std::uint64_t environment = scene.environment ? table_bytes(scene.environment->rgb) : 0;
+  const std::uint64_t environment =
+      scene.environment ? environment_host_bytes(scene.environment->width, scene.environment->height) : 0;
   std::uint64_t textures = 0;
   for (const TextureImage& image : scene.texture_images) textures += texture_image_bytes(image);
   return 2 * growing + table_bytes(scene.instances) + table_bytes(scene.end_transforms) + environment +

@@ -16,9 +16,16 @@ namespace clrt {
 // instance (docs/performance.md, BVH scaling); 256 are assumed. With the environment's table.
 std::uint64_t estimated_geometry_bytes(const Scene& scene);
 
+// The environment's table on a device: its radiance and a cumulative share, 16 bytes a pixel,
+// and the rows' shares, four to 16 bytes.
+std::uint64_t environment_table_bytes(std::int64_t width, std::int64_t height);
+// What an environment map takes on the host from its load to its render: its radiance (12 bytes a
+// pixel), and its table twice, as it is built and then packed with the lights for the device.
+std::uint64_t environment_host_bytes(std::int64_t width, std::int64_t height);
+
 // Estimated bytes the scene needs from its load to its render: its tables (the vectors counted
-// twice, as a growing vector is copied into one twice its size; the instances' deque once), and
-// its geometry tables.
+// twice, as a growing vector is copied into one twice its size; the instances' deque once), its
+// environment and texture images, and its geometry tables.
 std::uint64_t estimated_scene_bytes(const Scene& scene);
 
 // Throws SceneError at `where`, loading stopped there, when `needed` bytes exceed `limit`.

@@ -22,26 +22,46 @@ std::uint64_t texture_device_bytes(std::int64_t width, std::int64_t height, bool
   return texels * (linear ? 12 : 4);
 }
 
+std::uint64_t texture_source_bytes(std::int64_t width, std::int64_t height, bool linear) {
+  return static_cast<std::uint64_t>(width) * static_cast<std::uint64_t>(height) * (linear ? 12 : 4);
+}
+
 std::uint64_t texture_image_bytes(std::int64_t width, std::int64_t height, bool linear) {
-  const auto texels = static_cast<std::uint64_t>(width) * static_cast<std::uint64_t>(height);
-  return texels * (linear ? 12 : 3) + texture_device_bytes(width, height, linear);
+  return texture_source_bytes(width, height, linear) + 2 * texture_device_bytes(width, height, linear);
 }
 
 std::uint64_t texture_image_bytes(const TextureImage& image) {
   return texture_image_bytes(image.width, image.height, image.linear);
 }
 
+void check_image_side(const ImageInfo& info, const std::string& what) {
+  if (info.width > kMaxTextureSide || info.height > kMaxTextureSide)
+    throw std::runtime_error("it is " + std::to_string(info.width) + "x" + std::to_string(info.height) +
+                             " pixels; " + what + " may have at most " + std::to_string(kMaxTextureSide) +
+                             " on a side");
+}
+
+void check_image_memory(std::uint64_t needed, const MemoryLimit& memory) {
+  if (needed > memory.bytes)
+    throw std::runtime_error("the scene with it would need " + mebibytes(needed) + ", " +
+                             mebibytes(memory.bytes) + " available (" + memory.source + ")");
+}
+
 namespace {
 
+// The 8-bit RGBA frame's RGB moved to its front in place: a second buffer would double the peak
+// of the largest textures.
 TextureImage decoded(AnyImage image, const std::string& path) {
   TextureImage t;
   t.path = path;
   if (auto* bytes = std::get_if<Rgba8Image>(&image)) {
     t.width = bytes->width;
     t.height = bytes->height;
-    const std::vector<std::uint8_t>& rgba = bytes->frames.at(0);
-    t.srgb.resize(rgba.size() / 4 * 3);
-    for (std::size_t i = 0; i < t.srgb.size(); ++i) t.srgb[i] = rgba[i + i / 3];
+    t.srgb = std::move(bytes->frames.at(0));
+    const std::size_t texels = t.srgb.size() / 4;
+    for (std::size_t i = 0; i < texels; ++i)
+      for (std::size_t c = 0; c < 3; ++c) t.srgb[3 * i + c] = t.srgb[4 * i + c];
+    t.srgb.resize(3 * texels);
   } else {
     FloatImage& floats = std::get<FloatImage>(image);
     t.width = floats.width;
@@ -59,16 +79,14 @@ int texture_image(LoaderState& s, const std::string& path, const SourceLocation&
     if (s.scene.texture_images[i].path == path) return static_cast<int>(i);
   const std::string named = "the texture image " + excerpt(path);
   const std::uint64_t used = loader_bytes(s);
-  // What the header declares decides what is allocated: it is checked first.
-  const auto check_header = [&](const ImageInfo& info) {
-    if (info.width > kMaxTextureSide || info.height > kMaxTextureSide)
-      throw std::runtime_error("it is " + std::to_string(info.width) + "x" + std::to_string(info.height) +
-                               " texels; a texture may have at most " + std::to_string(kMaxTextureSide) +
-                               " on a side");
-    const std::uint64_t needed = used + texture_image_bytes(info.width, info.height, holds_floats(info.format));
-    if (needed > s.memory.bytes)
-      throw std::runtime_error("the scene with it would need " + mebibytes(needed) + ", " +
-                               mebibytes(s.memory.bytes) + " available (" + s.memory.source + ")");
+  // What the header declares decides what is allocated: it is checked first. While it decodes,
+  // the file and the decoded texels are held together.
+  const auto check_header = [&](const ImageInfo& info, std::uint64_t file_bytes) {
+    check_image_side(info, "a texture");
+    const bool linear = holds_floats(info.format);
+    check_image_memory(used + std::max(file_bytes + texture_source_bytes(info.width, info.height, linear),
+                                       texture_image_bytes(info.width, info.height, linear)),
+                       s.memory);
   };
   TextureImage image;
   try {

@@ -161,6 +161,8 @@ TEST_CASE("EXR reader rejects what is not a whole OpenEXR file, naming it", "[im
   ScratchDir dir;
   const std::string path = dir.file("bad.exr");
   write_bytes(path, bytes_of("P6\n1 1\n255\nabc"));
+  CHECK_THROWS_WITH(clrt::read_exr(path), Contains(path) && Contains("the file holds a PPM image"));
+  write_bytes(path, bytes_of("no image at all"));
   CHECK_THROWS_WITH(clrt::read_exr(path), Contains(path) && Contains("not a readable OpenEXR"));
   clrt::write_image(path, FloatImage{4, 4, std::vector<float>(48, 0.5f)});
   const Bytes whole = read_bytes(path);

@@ -81,7 +81,8 @@ TEST_CASE("PFM reader rejects malformed files, naming them", "[image][pfm]") {
   rejects(concat({bytes_of("PF\n1 1\nabc\n"), pixel}), "\"abc\" is not a finite non-zero");
   rejects(concat({bytes_of("PF\n1 1\n0.0\n"), pixel}), "non-zero");
   rejects(concat({bytes_of("PF\n1 1\ninf\n"), pixel}), "finite");
-  rejects(concat({bytes_of("P6\n1 1\n-1.0\n"), pixel}), "PF or Pf");
+  rejects(concat({bytes_of("P6\n1 1\n-1.0\n"), pixel}), "the file holds a PPM image; name it .ppm");
+  rejects(concat({bytes_of("PX\n1 1\n-1.0\n"), pixel}), "PF or Pf");
   rejects(bytes_of("PF\n2147483647 2147483647\n-1\n"),
           "the PFM's 2147483647x2147483647 pixels are more than clrt reads");
   rejects(bytes_of("PF\n65536 4096\n-1\n"), "truncated");  // 2^28 pixels: within the limits

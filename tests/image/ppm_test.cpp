@@ -76,7 +76,8 @@ TEST_CASE("PPM reader rejects malformed files, naming them", "[image][ppm]") {
   rejects(bytes_of("P3\n1 1\n255\n1 2\n"), "expected the sample");
   rejects(bytes_of("P3\n1 1\n9\n1 2 10\n"), "exceeds 9");
   rejects(with_raster("P6\n1 1\n300\n", {0x01, 0x2d, 0, 0, 0, 0}), "exceeds maxval");
-  rejects(bytes_of("P5\n1 1\n255\n\x01"), "P6 or P3");
+  rejects(bytes_of("P5\n1 1\n255\n\x01"), "the file holds a PGM image; clrt reads FSF, PNG, PPM");
+  rejects(bytes_of("P9\n1 1\n255\n\x01"), "P6 or P3");
   rejects(bytes_of("P6\n0 1\n255\n"), "width is below 1");
   rejects(bytes_of("P6\n1 1\n70000\n"), "maxval exceeds 65535");
   // A header asking for 2^62 samples must fail on the size check, before any allocation.
