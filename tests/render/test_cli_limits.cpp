@@ -147,3 +147,75 @@ TEST_CASE("a texture image larger than the memory clrt may take is refused from 
                            Catch::Contains(" MiB available (RLIMIT_AS, ulimit -v)"));
   CHECK(dir.entries() == std::set<std::string>{"big.png", "big.ray"});
 }
+
+TEST_CASE("an environment image larger than the memory clrt may take is refused from its header, exit 2",
+          "[cli][limits][memory][environment]") {
+#if defined(__SANITIZE_ADDRESS__)
+  CLRT_SKIP_TEST("AddressSanitizer cannot run under ulimit -v");
+#endif
+  // 16384 x 16384 pixels declared, about 15 GiB with the map's sampling table, in a file of a
+  // header alone: refused at its line before a pixel is decoded.
+  ScratchDir dir;
+  dir.write("sky.png", png_header(16384, 16384));
+  const std::string path = dir.write("sky.ray", "resolution 8 8\nenvironment sky.png\nsphere\n");
+  const std::string clrt = std::string("\"") + CLRT_EXE + "\" -q -o \"" + dir.file("out.png") + "\" \"" + path + "\"";
+  const CommandResult r = run_program("sh", "-c " + quoted("ulimit -v 2097152 && exec " + clrt));
+  INFO(r.output);
+  CHECK(r.exit_code == 2);
+  CHECK_THAT(r.output, Catch::Contains(path + ":2:13: error: cannot read the environment image") &&
+                           Catch::Contains("the scene with it would need ") &&
+                           Catch::Contains(" MiB available (RLIMIT_AS, ulimit -v)"));
+  CHECK(dir.entries() == std::set<std::string>{"sky.png", "sky.ray"});
+}
+
+TEST_CASE("an animated FSF as a texture costs its first frame alone", "[cli][limits][memory][texture]") {
+#if defined(__SANITIZE_ADDRESS__)
+  CLRT_SKIP_TEST("AddressSanitizer cannot run under ulimit -v");
+#endif
+  // 20 million 1x1 frames, 80 MB: every frame was decoded (1.26 GB, 19 s), and under this limit
+  // the run ended in std::bad_alloc.
+  ScratchDir dir;
+  constexpr std::uint32_t kFrames = 20000000;
+  std::string fsf;
+  for (std::uint32_t v : {575u, 1u, 1u, kFrames})
+    for (int s = 0; s < 32; s += 8) fsf.push_back(static_cast<char>((v >> s) & 0xff));
+  fsf.reserve(16 + 4 * std::size_t{kFrames});
+  for (std::uint32_t i = 0; i < kFrames; ++i) fsf += i == 0 ? std::string("\xc8\x64\x32\xff", 4) : std::string(4, '\0');
+  dir.write("frames.fsf", fsf);
+  fsf.resize(16 + 4);
+  fsf[12] = 1;  // the same first frame, alone
+  fsf[13] = fsf[14] = fsf[15] = 0;
+  dir.write("first.fsf", fsf);
+  const auto render = [&](const std::string& texture) {
+    const std::string path = dir.write("s.ray", "resolution 8 8\nlight 1 1 1 ambient\nmaterial 1 1 1 1 0 0 1 0 0\n"
+                                                 "texture color image " + texture + "\nsphere 0 0 -3 1\n");
+    const std::string clrt = std::string("\"") + CLRT_EXE + "\" -q -o \"" + dir.file("out.png") + "\" \"" + path + "\"";
+    const CommandResult r = run_program("sh", "-c " + quoted("ulimit -v 1572864 && exec " + clrt));
+    INFO(r.output);
+    CHECK(r.exit_code == 0);
+    return clrt::read_png(dir.file("out.png")).frames.at(0);
+  };
+  const std::vector<std::uint8_t> first = render("first.fsf");
+  CHECK(first[4 * (4 * 8 + 4)] > 0);  // the sphere's centre shows the frame's colour
+  CHECK(render("frames.fsf") == first);
+}
+
+TEST_CASE("a texture is read without a temporary file: TMPDIR is never touched", "[cli][limits][texture]") {
+  ScratchDir dir;
+  clrt::write_image(dir.file("t.png"), clrt::Rgba8Image(1, 1, {{255, 0, 0, 255}}));
+  const std::string path = dir.write("s.ray", "resolution 4 4\nsphere\ntexture color image t.png\n");
+  dir.write("not-a-folder", "");
+  fs::create_directory(dir.file("empty"));
+  // A missing folder and a file named as TMPDIR made a valid texture fail; a folder of its own is
+  // left as it was.
+  for (const std::string& tmpdir : {dir.file("missing"), dir.file("not-a-folder"), dir.file("empty")}) {
+    INFO(tmpdir);
+    const CommandResult r = run_program(
+        "sh", "-c " + quoted("TMPDIR=" + quoted(tmpdir) + " exec \"" + std::string(CLRT_EXE) + "\" -q -o " +
+                             quoted(dir.file("out.png")) + " " + quoted(path)));
+    INFO(r.output);
+    CHECK(r.exit_code == 0);
+  }
+  CHECK(fs::is_empty(dir.file("empty")));
+  CHECK(!fs::exists(dir.file("missing")));
+}

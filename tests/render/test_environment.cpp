@@ -11,6 +11,7 @@
 #include <string>
 
 #include "image/image.hpp"
+#include "png_header.hpp"
 #include "render/integrator_names.hpp"
 #include "render_support.hpp"
 #include "scene/scene.hpp"
@@ -148,6 +149,9 @@ TEST_CASE("environment: a bad file, scale or transform is an error at its place"
   const ScratchDir dir;
   write_image(dir.file("map.pfm"), texel_map());
   write_image(dir.file("negative.pfm"), FloatImage(1, 1, {0.5f, -1.0f, 0.5f}));
+  // A header alone, declaring 65536x4096: it was decoded (4.3 GB, 12 s) before being refused.
+  std::ofstream(dir.file("wide.png"), std::ios::binary) << png_header(65536, 4096);
+  std::ofstream(dir.file("photo.png"), std::ios::binary) << std::string("\xff\xd8\xff\xe0\x00\x10JFIF", 10);
   struct Case {
     const char* text;
     const char* message;
@@ -156,7 +160,10 @@ TEST_CASE("environment: a bad file, scale or transform is an error at its place"
                         Case{"environment map.pfm -1", "1:21: error: the environment's scale must be in [0, 1e12]"},
                         Case{"environment map.pfm 1 2", "1:23: error: wrong number of arguments: environment takes 1 or 2"},
                         Case{"scale 2 1 1\nenvironment map.pfm", "2:13: error: the environment turns with"},
-                        Case{"environment negative.pfm", "1:13: error: the environment image"}}) {
+                        Case{"environment negative.pfm", "1:13: error: the environment image"},
+                        Case{"environment wide.png", "wide.png: it is "
+                                                     "65536x4096 pixels; an environment may have at most 16384 on a side"},
+                        Case{"environment photo.png", "photo.png: the name says PNG, but the file holds a JPEG image"}}) {
     INFO(c.text);
     const std::string path = dir.file("bad.ray");
     std::ofstream(path) << c.text << "\n";

@@ -159,6 +159,7 @@ TEST_CASE("a missing, malformed or oversized image is an error at the word namin
   dir.write("broken.png", "not a png at all");
   dir.write("huge.png", png_header(65536, 65536));
   dir.write("wide.png", png_header(kMaxTextureSide + 1, 1));
+  dir.write("photo.png", std::string("\xff\xd8\xff\xe0\x00\x10JFIF", 10));
   const auto error_of = [&](const std::string& line) {
     const SceneError e = load_error_of_file(dir.write("scene.ray", "sphere\n" + line + "\n"));
     INFO(e.what());
@@ -170,6 +171,9 @@ TEST_CASE("a missing, malformed or oversized image is an error at the word namin
   CHECK_THAT(error_of("texture color image broken.png"), Catch::Contains("broken.png"));
   CHECK_THAT(error_of("texture color image huge.png"), Catch::Contains("65536x65536"));
   CHECK_THAT(error_of("texture color image wide.png"), Catch::Contains("at most 16384"));
+  // The chunk lengths of a JPEG read as a PNG's made "a chunk declares 1229324289 bytes".
+  CHECK_THAT(error_of("texture color image photo.png"),
+             Catch::Contains("photo.png: the name says PNG, but the file holds a JPEG image"));
 }
 
 TEST_CASE("an MTL map_Kd and map_Ks become textures of their material, and a bump map is a warning",
