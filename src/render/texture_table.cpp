@@ -40,18 +40,24 @@ struct Rows {
   std::vector<Rgb> texels;
 };
 
-Rows make_rows(std::size_t width, std::size_t first, std::size_t end) {
-  Rows rows;
+// Sizes `rows` for rows [first, end) of `width` texels, keeping its buffer: fresh pages for
+// every band cost more system time than the averaging itself.
+void size_rows(Rows& rows, std::size_t width, std::size_t first, std::size_t end) {
   rows.width = width;
   rows.first = first;
   rows.count = end > first ? end - first : 0;
   rows.texels.resize(rows.width * rows.count);
+}
+
+Rows make_rows(std::size_t width, std::size_t first, std::size_t end) {
+  Rows rows;
+  size_rows(rows, width, first, end);
   return rows;
 }
 
-// Level 0's rows [first, end), from the image.
-Rows source_rows(const TextureImage& image, std::size_t first, std::size_t end) {
-  Rows rows = make_rows(static_cast<std::size_t>(image.width), first, end);
+// Level 0's rows [first, end), from the image, into `rows`.
+void source_rows(const TextureImage& image, std::size_t first, std::size_t end, Rows& rows) {
+  size_rows(rows, static_cast<std::size_t>(image.width), first, end);
   const auto height = static_cast<std::size_t>(image.height);
   for (std::size_t y = first; y < end; ++y)
     for (std::size_t x = 0; x < rows.width; ++x) {
@@ -60,13 +66,13 @@ Rows source_rows(const TextureImage& image, std::size_t first, std::size_t end) 
       for (std::size_t c = 0; c < 3; ++c)
         t[c] = image.linear ? image.rgb[from + c] : srgb_to_linear(image.srgb[from + c]);
     }
-  return rows;
 }
 
 // The next level's rows [first, end), each texel the mean of a 2x2 block of `fine` (a level
-// `fine_height` rows high), which holds the rows they need.
-Rows coarser_rows(const Rows& fine, std::size_t fine_height, Size coarse, std::size_t first, std::size_t end) {
-  Rows rows = make_rows(coarse.width, first, end);
+// `fine_height` rows high), which holds the rows they need; into `rows`.
+void coarser_rows(const Rows& fine, std::size_t fine_height, Size coarse, std::size_t first, std::size_t end,
+                  Rows& rows) {
+  size_rows(rows, coarse.width, first, end);
   for (std::size_t y = first; y < end; ++y)
     for (std::size_t x = 0; x < rows.width; ++x) {
       const std::size_t xs[2] = {2 * x, std::min(2 * x + 1, fine.width - 1)};
@@ -77,7 +83,6 @@ Rows coarser_rows(const Rows& fine, std::size_t fine_height, Size coarse, std::s
           for (std::size_t c = 0; c < 3; ++c) sum[c] += fine.texels[(fy - fine.first) * fine.width + fx][c];
       for (std::size_t c = 0; c < 3; ++c) rows.texels[(y - first) * rows.width + x][c] = sum[c] / 4;
     }
-  return rows;
 }
 
 // The sRGB code whose linear value is nearest `value` (>= 0), the lower one on a tie. The search
@@ -139,30 +144,40 @@ void make_levels(const TextureImage& image, const std::vector<Size>& sizes, cons
                  dev::u32* words) {
   // Bands need every level up to kBandLevels halved without clamping: at least kBandRows rows.
   const std::size_t banded = sizes[0].height >= kBandRows ? kBandLevels : 0;
-  Rows level = banded ? make_rows(sizes[banded].width, 0, sizes[banded].height)
-                      : source_rows(image, 0, sizes[0].height);
-  if (!banded) put_source_rows(image, level, words + starts[0]);
+  Rows level;
+  if (banded) {
+    size_rows(level, sizes[banded].width, 0, sizes[banded].height);
+  } else {
+    source_rows(image, 0, sizes[0].height, level);
+    put_source_rows(image, level, words + starts[0]);
+  }
+  // Each worker takes every workers-th band, through two buffers of its own.
   const std::size_t bands = banded ? (sizes[0].height + kBandRows - 1) / kBandRows : 0;
-  parallel_for(bands, 1, [&](std::size_t band) {
-    const auto rows_of = [&](std::size_t k) {
-      const std::size_t first = band * kBandRows >> k;
-      return std::pair{first, std::min(sizes[k].height, (band + 1) * kBandRows >> k)};
-    };
-    Rows fine = source_rows(image, rows_of(0).first, rows_of(0).second);
-    put_source_rows(image, fine, words + starts[0]);
-    for (std::size_t k = 1; k <= banded; ++k) {
-      fine = coarser_rows(fine, sizes[k - 1].height, sizes[k], rows_of(k).first, rows_of(k).second);
-      put_rows(fine, image.linear, words + starts[k]);
+  const std::size_t workers = std::min<std::size_t>(parallel_threads(), bands);
+  parallel_for(workers, 1, [&](std::size_t worker) {
+    Rows fine, coarse;
+    for (std::size_t band = worker; band < bands; band += workers) {
+      const auto rows_of = [&](std::size_t k) {
+        return std::pair{band * kBandRows >> k, std::min(sizes[k].height, (band + 1) * kBandRows >> k)};
+      };
+      source_rows(image, rows_of(0).first, rows_of(0).second, fine);
+      put_source_rows(image, fine, words + starts[0]);
+      for (std::size_t k = 1; k <= banded; ++k) {
+        coarser_rows(fine, sizes[k - 1].height, sizes[k], rows_of(k).first, rows_of(k).second, coarse);
+        put_rows(coarse, image.linear, words + starts[k]);
+        std::swap(fine, coarse);
+      }
+      std::copy(fine.texels.begin(), fine.texels.end(), level.texels.begin() + fine.first * fine.width);
     }
-    std::copy(fine.texels.begin(), fine.texels.end(), level.texels.begin() + fine.first * fine.width);
   });
   for (std::size_t k = banded + 1; k < sizes.size(); ++k) {
-    Rows coarse = make_rows(sizes[k].width, 0, sizes[k].height);
+    Rows next = make_rows(sizes[k].width, 0, sizes[k].height);
     parallel_for(sizes[k].height, kRowsPerTask, [&](std::size_t y) {
-      Rows row = coarser_rows(level, sizes[k - 1].height, sizes[k], y, y + 1);
-      std::copy(row.texels.begin(), row.texels.end(), coarse.texels.begin() + y * coarse.width);
+      Rows row;
+      coarser_rows(level, sizes[k - 1].height, sizes[k], y, y + 1, row);
+      std::copy(row.texels.begin(), row.texels.end(), next.texels.begin() + y * next.width);
     });
-    level = std::move(coarse);
+    level = std::move(next);
     put_rows(level, image.linear, words + starts[k]);
   }
 }

@@ -8,6 +8,9 @@ It writes its scenes into a scratch folder, deterministic and no one's in partic
                rendered at 3840x2160;
   spheres:     3,000,000 spheres of one material over a 40x5x40 box, rendered at 32x24
                (the memory is the scene's; the picture is a stamp);
+  texture:     a sphere showing an 8192x8192 8-bit PPM texture (201 MB), and one showing a
+               4096x4096 PFM (201 MB), rendered at 64x64;
+  environment: a sphere under an 8192x4096 PFM environment (403 MB), rendered at 64x64;
 and, when build/scenes-large/tri-1m.ray exists (clrt-make-scenes), the 1M-triangle knot with
 vertex normals at 3840x2160. --scale multiplies the triangle and sphere counts (the tests use a
 small one). It prints each run's peak resident memory (wait4's ru_maxrss) in KiB and MB.
@@ -16,6 +19,7 @@ small one). It prints each run's peak resident memory (wait4's ru_maxrss) in KiB
 import math
 import pathlib
 import random
+import struct
 import sys
 import tempfile
 
@@ -57,6 +61,28 @@ def write_spheres(folder, count):
     return scene
 
 
+def write_image_scene(folder, name, width, height, floats, command):
+    """A `width` x `height` PPM or PFM of a repeating pattern, and a scene using it by `command`
+    ("texture color image" or "environment")."""
+    image = folder / f"{name}.{'pfm' if floats else 'ppm'}"
+    with open(image, "wb") as out:
+        if floats:
+            out.write(b"PF\n%d %d\n-1.0\n" % (width, height))
+            row = struct.pack(f"<{3 * width}f", *[(x * 13 % 97) / 97 for x in range(3 * width)])
+        else:
+            out.write(b"P6\n%d %d\n255\n" % (width, height))
+            row = bytes((x * 7 ^ x >> 3) & 255 for x in range(3 * width))
+        for _ in range(height):
+            out.write(row)
+    scene = folder / f"{name}.ray"
+    material = "light 1 1 1 ambient\nmaterial 1 1 1 1 0 0 1 0 0\n"
+    if command == "environment":
+        scene.write_text(f"eye 0 0 3\nlookat 0 0 0\nenvironment {image.name}\n{material}sphere\n")
+    else:
+        scene.write_text(f"eye 0 0 3\nlookat 0 0 0\n{material}texture color image {image.name}\nsphere\n")
+    return scene
+
+
 def main():
     parser = clrt_run.versions_parser(__doc__, 3, "runs of each binary on each scene (default 3)")
     parser.add_argument("--scale", type=float, default=1.0, help="multiplies the scenes' sizes")
@@ -70,6 +96,14 @@ def main():
                   write_heightfield(work, side), "3840x2160"),
                  (f"{round(3_000_000 * args.scale):,} spheres",
                   write_spheres(work, round(3_000_000 * args.scale)), "32x24")]
+        side = max(8, round(8192 * math.sqrt(args.scale)))
+        half = max(4, side // 2)
+        cases += [(f"texture, {side}x{side} 8-bit", write_image_scene(work, "texture8", side, side, False,
+                                                                       "texture"), "64x64"),
+                  (f"texture, {half}x{half} float", write_image_scene(work, "texturef", half, half, True,
+                                                                       "texture"), "64x64"),
+                  (f"environment, {side}x{half} float", write_image_scene(work, "sky", side, half, True,
+                                                                           "environment"), "64x64")]
         knot = clrt_run.BUILD / "scenes-large" / "tri-1m.ray"
         if knot.exists() and args.scale == 1.0:
             cases.append(("knot, 1M triangles with normals", knot, "3840x2160"))

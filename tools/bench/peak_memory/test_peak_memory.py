@@ -19,7 +19,8 @@ class PeakMemory(unittest.TestCase):
                              capture_output=True, text=True, check=True)
         rows = [line.split("|") for line in out.stdout.splitlines() if f"| {CLRT} |" in line]
         self.assertEqual([row[1].strip() for row in rows],
-                         ["height field, 968 triangles without normals", "3,000 spheres"])
+                         ["height field, 968 triangles without normals", "3,000 spheres",
+                          "texture, 259x259 8-bit", "texture, 129x129 float", "environment, 259x129 float"])
         for row in rows:
             kib = int(row[4].strip().replace(",", ""))
             # More than the process itself, less than anything these small scenes could need.
