@@ -45,7 +45,7 @@ struct TextureImage {
   std::string path;  // as resolved
   int width = 0, height = 0;
   bool linear = false;                  // PFM, EXR: `rgb` holds linear values
-  std::vector<std::uint8_t> srgb;       // PNG, PPM: 3 sRGB-encoded bytes per texel
+  std::vector<std::uint8_t> srgb;       // PNG, PPM, FSF: 3 sRGB-encoded bytes per texel (in the decoder's buffer of 4)
   std::vector<float> rgb;               // PFM, EXR: 3 floats per texel
 };
 

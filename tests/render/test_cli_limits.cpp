@@ -134,8 +134,8 @@ TEST_CASE("a texture image larger than the memory clrt may take is refused from 
 #if defined(__SANITIZE_ADDRESS__)
   CLRT_SKIP_TEST("AddressSanitizer cannot run under ulimit -v");
 #endif
-  // 16384 x 16384 texels declared: 0.75 GiB decoded and 1.3 GiB with its mip levels on the
-  // device, past the 2 GiB address space the run is capped at; the file is a header alone.
+  // 16384 x 16384 texels declared: 1 GiB decoded and 1.3 GiB of mip levels twice (host and
+  // device), past the 2 GiB address space the run is capped at; the file is a header alone.
   ScratchDir dir;
   dir.write("big.png", png_header(16384, 16384));
   const std::string path = dir.write("big.ray", "resolution 8 8\nsphere\ntexture color image big.png\n");
