@@ -1,5 +1,5 @@
-// Replays every input a fuzz target found (tests/fuzz/regressions/TARGET/, see its README)
-// through the path that target drives: each must now be rejected with its reader's own error
+// Replays every input a fuzz target found (tests/fuzz/regressions/TARGET/, see its README), and
+// for most targets its seeds too, through the path that target drives: each must now be rejected with its reader's own error
 // (scenes: every one found so far is a scene clrt must refuse) or read into a consistent
 // result, never crash or throw anything else.
 #include <catch2/catch.hpp>
@@ -47,16 +47,24 @@ TEST_CASE("scenes the fuzzer found are rejected with a scene error", "[fuzz]") {
   }
 }
 
-TEST_CASE("meshes and images the fuzzer found are rejected or read consistently", "[fuzz]") {
-  for (const char* target : {"fuzz_obj_mesh", "fuzz_image_fsf", "fuzz_image_ppm", "fuzz_image_png",
-                             "fuzz_image_pfm", "fuzz_image_exr"})
-    for (const fs::path& file : inputs_of(target)) {
+TEST_CASE("meshes and images, found or seeded, are rejected or read consistently", "[fuzz]") {
+  // With the seeds, every target replays some inputs, also those that have found nothing yet
+  // (FSF, PPM, PFM): a loop over an empty folder alone would check nothing.
+  const fs::path seeds = fs::path(CLRT_SOURCE_DIR) / "tests" / "fuzz" / "seeds";
+  for (const std::string target : {"fuzz_obj_mesh", "fuzz_image_fsf", "fuzz_image_ppm", "fuzz_image_png",
+                                   "fuzz_image_pfm", "fuzz_image_exr"}) {
+    INFO(target);
+    std::set<fs::path> files = inputs_of(target);
+    for (const auto& entry : fs::directory_iterator(seeds / target)) files.insert(entry.path());
+    REQUIRE_FALSE(files.empty());
+    for (const fs::path& file : files) {
       INFO(file);
-      if (std::string(target) == "fuzz_obj_mesh")
+      if (target == "fuzz_obj_mesh")
         CHECK_NOTHROW(clrt::fuzz::obj_mesh(file.string()));
       else
         CHECK_NOTHROW(clrt::fuzz::image(file.string()));
     }
+  }
 }
 
 TEST_CASE("cache entries, tiles and polygons, found or seeded, keep every promise", "[fuzz]") {
