@@ -9,7 +9,7 @@
 
 #include "geometry/instance_bounds.hpp"
 #include "math/cumulative_shares.hpp"
-#include "math/device_vector.hpp"
+#include "scene/device_vector.hpp"
 
 namespace clrt {
 namespace {

@@ -5,7 +5,7 @@
 #include <cstring>
 
 #include "math/cumulative_shares.hpp"
-#include "math/device_vector.hpp"
+#include "scene/device_vector.hpp"
 #include "scene/light_kinds.hpp"
 #include "scene/limits.hpp"
 

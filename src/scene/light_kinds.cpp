@@ -6,8 +6,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "math/device_vector.hpp"
 #include "math/stratification_grid.hpp"
+#include "scene/device_vector.hpp"
 #include "scene/limits.hpp"
 #include "scene/number.hpp"
 #include "scene/scene_json.hpp"

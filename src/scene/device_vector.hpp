@@ -1,4 +1,5 @@
-// A double-precision vector as the f4 the shared device records hold (w = 0).
+// A double-precision vector as the f4 the shared device records hold (w = 0): here, where the
+// set-up starts filling device records, so that math/ needs no kernel header.
 #pragma once
 
 #include "math/vec3.hpp"
