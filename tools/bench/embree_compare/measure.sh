@@ -1,12 +1,12 @@
 #!/bin/sh
-# Re-runs the measurement of README.md: the SPD scenes, then the large scenes of
+# Re-runs the measurement of docs/races.md: the SPD scenes, then the large scenes of
 # clrt-make-scenes (written first if missing). Extra arguments go to clrt-embree-compare,
 # e.g. --robust or --runs 9. Run from the repository's root.
 #   tools/bench/embree_compare/measure.sh BUILD_DIR [OPTIONS...]
 set -eu
 build=$1
 shift
-spd=${SPD_DIR:-/work/shared/scenes/spd-ray}
+spd=${SPD_DIR:-../shared/scenes/spd-ray}
 large=${LARGE_DIR:-build/scenes-large}
 [ -f "$large/inst-100k.ray" ] || "$build/tools/make_scenes/clrt-make-scenes" "$large" >/dev/null
 exec "$build/tools/bench/embree_compare/clrt-embree-compare" \
