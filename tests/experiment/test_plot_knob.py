@@ -1,6 +1,6 @@
 """Tests of plot_knob.py on a made-up runs.csv whose medians and crossings are known.
 
-    python3 tools/experiment/test_plot_knob.py      (CTest: plot_knob)
+    python3 tests/experiment/test_plot_knob.py      (CTest: plot_knob)
 """
 import contextlib
 import io
@@ -9,7 +9,7 @@ import sys
 import tempfile
 import unittest
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools", "experiment"))
 import plot_knob  # noqa: E402
 
 HEADER = "scene,device_spec,device,variant,repeat,exit_code,mrays_per_s,msamples_per_s,flagged\n"

@@ -1,7 +1,7 @@
 """Tests of plot_experiment.py on made-up summaries: a sweep is drawn only for what an experiment
 varied, never for devices whose defaults merely differ.
 
-    python3 tools/experiment/test_plot_experiment.py      (CTest: plot_experiment)
+    python3 tests/experiment/test_plot_experiment.py      (CTest: plot_experiment)
 """
 import json
 import os
@@ -10,7 +10,8 @@ import sys
 import tempfile
 import unittest
 
-HERE = os.path.dirname(os.path.abspath(__file__))
+# The scripts under test, in the tool's folder.
+HERE = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools", "experiment")
 
 
 def entry(device, variant, local_size, wavefront, mrays):
