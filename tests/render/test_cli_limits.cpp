@@ -33,6 +33,14 @@ void refuses(const std::string& scene, const std::string& options, int code,
   CHECK(dir.entries() == std::set<std::string>{"s.ray"});
 }
 
+// Runs clrt on the scene at `path`, writing DIR/out.png, with its address space capped at `kib`
+// KiB (ulimit -v).
+CommandResult run_clrt_with_address_space(const ScratchDir& dir, const std::string& path, long kib) {
+  // Double quotes inside: the whole command is single-quoted for sh -c.
+  const std::string clrt = std::string("\"") + CLRT_EXE + "\" -q -o \"" + dir.file("out.png") + "\" \"" + path + "\"";
+  return run_program("sh", "-c " + quoted("ulimit -v " + std::to_string(kib) + " && exec " + clrt));
+}
+
 }  // namespace
 
 TEST_CASE("the six-line scene whose light samples wrapped in 32 bits exits 2", "[cli][limits]") {
@@ -119,8 +127,7 @@ TEST_CASE("a scene larger than the memory clrt may take stops loading early, at 
   std::string text = "resolution 8 8\n";
   for (int i = 0; i < 6000000; ++i) text += "sphere " + std::to_string(i % 1000) + " 0 0 0.5\n";
   const std::string path = dir.write("big.ray", text);
-  const std::string clrt = std::string("\"") + CLRT_EXE + "\" -q -o \"" + dir.file("out.png") + "\" \"" + path + "\"";
-  const CommandResult r = run_program("sh", "-c " + quoted("ulimit -v 2097152 && exec " + clrt));
+  const CommandResult r = run_clrt_with_address_space(dir, path, 2097152);
   INFO(r.output);
   CHECK(r.exit_code == 2);
   CHECK_THAT(r.output, Catch::Contains(path + ":") &&
@@ -139,8 +146,7 @@ TEST_CASE("a texture image larger than the memory clrt may take is refused from 
   ScratchDir dir;
   dir.write("big.png", png_header(16384, 16384));
   const std::string path = dir.write("big.ray", "resolution 8 8\nsphere\ntexture color image big.png\n");
-  const std::string clrt = std::string("\"") + CLRT_EXE + "\" -q -o \"" + dir.file("out.png") + "\" \"" + path + "\"";
-  const CommandResult r = run_program("sh", "-c " + quoted("ulimit -v 2097152 && exec " + clrt));
+  const CommandResult r = run_clrt_with_address_space(dir, path, 2097152);
   INFO(r.output);
   CHECK(r.exit_code == 2);
   CHECK_THAT(r.output, Catch::Contains(path + ":3:21: error: cannot use the texture image") &&
@@ -158,8 +164,7 @@ TEST_CASE("an environment image larger than the memory clrt may take is refused 
   ScratchDir dir;
   dir.write("sky.png", png_header(16384, 16384));
   const std::string path = dir.write("sky.ray", "resolution 8 8\nenvironment sky.png\nsphere\n");
-  const std::string clrt = std::string("\"") + CLRT_EXE + "\" -q -o \"" + dir.file("out.png") + "\" \"" + path + "\"";
-  const CommandResult r = run_program("sh", "-c " + quoted("ulimit -v 2097152 && exec " + clrt));
+  const CommandResult r = run_clrt_with_address_space(dir, path, 2097152);
   INFO(r.output);
   CHECK(r.exit_code == 2);
   CHECK_THAT(r.output, Catch::Contains(path + ":2:13: error: cannot read the environment image") &&
@@ -189,8 +194,7 @@ TEST_CASE("an animated FSF as a texture costs its first frame alone", "[cli][lim
   const auto render = [&](const std::string& texture) {
     const std::string path = dir.write("s.ray", "resolution 8 8\nlight 1 1 1 ambient\nmaterial 1 1 1 1 0 0 1 0 0\n"
                                                  "texture color image " + texture + "\nsphere 0 0 -3 1\n");
-    const std::string clrt = std::string("\"") + CLRT_EXE + "\" -q -o \"" + dir.file("out.png") + "\" \"" + path + "\"";
-    const CommandResult r = run_program("sh", "-c " + quoted("ulimit -v 1572864 && exec " + clrt));
+    const CommandResult r = run_clrt_with_address_space(dir, path, 1572864);
     INFO(r.output);
     CHECK(r.exit_code == 0);
     return clrt::read_png(dir.file("out.png")).frames.at(0);
@@ -210,9 +214,8 @@ TEST_CASE("a texture is read without a temporary file: TMPDIR is never touched",
   // left as it was.
   for (const std::string& tmpdir : {dir.file("missing"), dir.file("not-a-folder"), dir.file("empty")}) {
     INFO(tmpdir);
-    const CommandResult r = run_program(
-        "sh", "-c " + quoted("TMPDIR=" + quoted(tmpdir) + " exec \"" + std::string(CLRT_EXE) + "\" -q -o " +
-                             quoted(dir.file("out.png")) + " " + quoted(path)));
+    const CommandResult r =
+        run_clrt("-q -o " + quoted(dir.file("out.png")) + " " + quoted(path), "TMPDIR=" + quoted(tmpdir));
     INFO(r.output);
     CHECK(r.exit_code == 0);
   }
